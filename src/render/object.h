@@ -1,0 +1,83 @@
+// Scene objects: the contract between ray traversal (render/tracer) and the object
+// implementations (render/shapes, csg, mesh, bvh, local objects).
+//
+// Ray traversal integrates the null geodesic backwards; every accepted step becomes a Segment in
+// pseudo-Cartesian coordinates (paper §2.3). Objects test the straight segment and report the
+// closest hit as the fraction `s` along it; the tracer refines the hit to integration precision.
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "spacetime/geodesic.h"
+#include "spacetime/vec.h"
+
+namespace geovis {
+
+class Shader;
+class Metric;
+
+struct Bounds3 {
+  Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+          std::numeric_limits<double>::infinity()};
+  Vec3 hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+          -std::numeric_limits<double>::infinity()};
+  void expand(const Vec3& p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  void expand(const Bounds3& b) {
+    expand(b.lo);
+    expand(b.hi);
+  }
+  bool empty() const { return lo.x > hi.x; }
+  static Bounds3 infinite() {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {Vec3{-inf, -inf, -inf}, Vec3{inf, inf, inf}};
+  }
+};
+
+/// One step of the ray, as a straight 4D segment. `x0`/`x1` are the metric coordinates of the
+/// ends, `p0`/`p1` the pseudo-Cartesian positions (chart0/chart1 the charts), the coordinate time
+/// is x[0]. Ray direction: from p0 (closer to the observer in the backward trace) towards p1.
+struct Segment {
+  Vec4 x0, x1;
+  Vec3 p0, p1;
+  int chart0 = 0, chart1 = 0;
+  const StepView* step = nullptr;  ///< the integration step (for refinement); may be null
+  const Metric* metric = nullptr;
+};
+
+/// The closest intersection found so far. An object updates it only when it finds a hit with
+/// 0 <= s < hit.s.
+struct Hit {
+  double s = std::numeric_limits<double>::infinity();  ///< fraction along the segment
+  Vec3 point;          ///< hit point, pseudo-Cartesian (or object-local for local objects)
+  Vec3 normal;         ///< unit outward surface normal, same frame as `point`
+  Vec3 ray_dir;        ///< unit ray direction (p1 - p0) in the same frame as `normal`
+  double u = 0, v = 0; ///< surface texture coordinates in [0,1]
+  const Shader* shader = nullptr;
+  int object_id = 0;   ///< GeoViS objID: primitive counter, 1 = first primitive created; 0 = none
+  double time = 0;     ///< coordinate time of the hit (x^0)
+  /// Four-velocity of the emitting surface (coordinates), zero when the object is at rest in the
+  /// natural static frame; used for the frequency shift.
+  Vec4 emitter_u{{0, 0, 0, 0}};
+  bool valid() const { return s < std::numeric_limits<double>::infinity(); }
+};
+
+class SceneObject {
+ public:
+  virtual ~SceneObject() = default;
+  /// Tests the segment; on a closer hit (0 <= s < hit.s) fills `hit` and returns true.
+  virtual bool intersect(const Segment& seg, Hit& hit) const = 0;
+  /// Bounds in pseudo-Cartesian coordinates (infinite when unknown/unbounded).
+  virtual Bounds3 bounds() const = 0;
+  /// Chart in which the object lives (paper §2.3; e.g. Morris-Thorne 0: l>0, 1: l<=0).
+  int chart = 0;
+  std::string id;
+};
+
+using SceneObjectPtr = std::shared_ptr<SceneObject>;
+
+}  // namespace geovis

@@ -1,0 +1,132 @@
+// Forward-mode automatic differentiation with four infinitesimal parts, one per coordinate.
+// Dual<double> carries ∂_μ f; Dual<Dual<double>> carries ∂_μ∂_ν f (needed for ∂Γ and the
+// Riemann tensor). Used as the fallback Christoffel source for any metric and as the oracle in
+// tests (issue 2, item 4).
+#pragma once
+
+#include <cmath>
+
+#include "spacetime/vec.h"
+
+namespace geovis {
+
+template <class T>
+struct Dual {
+  T v{};      ///< value
+  T d[4]{};   ///< partial derivatives with respect to x^0..x^3
+
+  constexpr Dual() = default;
+  constexpr Dual(double x) : v(x) {}  // NOLINT: implicit from constants, as for double
+  template <class U = T, class = std::enable_if_t<!std::is_same_v<U, double>>>
+  constexpr Dual(const T& x) : v(x) {}  // NOLINT
+
+  Dual& operator+=(const Dual& o) { return *this = *this + o; }
+  Dual& operator-=(const Dual& o) { return *this = *this - o; }
+  Dual& operator*=(const Dual& o) { return *this = *this * o; }
+  Dual& operator/=(const Dual& o) { return *this = *this / o; }
+
+  friend Dual operator+(const Dual& a, const Dual& b) {
+    Dual r;
+    r.v = a.v + b.v;
+    for (int i = 0; i < 4; ++i) r.d[i] = a.d[i] + b.d[i];
+    return r;
+  }
+  friend Dual operator-(const Dual& a, const Dual& b) {
+    Dual r;
+    r.v = a.v - b.v;
+    for (int i = 0; i < 4; ++i) r.d[i] = a.d[i] - b.d[i];
+    return r;
+  }
+  friend Dual operator-(const Dual& a) {
+    Dual r;
+    r.v = -a.v;
+    for (int i = 0; i < 4; ++i) r.d[i] = -a.d[i];
+    return r;
+  }
+  friend Dual operator*(const Dual& a, const Dual& b) {
+    Dual r;
+    r.v = a.v * b.v;
+    for (int i = 0; i < 4; ++i) r.d[i] = a.d[i] * b.v + a.v * b.d[i];
+    return r;
+  }
+  friend Dual operator/(const Dual& a, const Dual& b) {
+    Dual r;
+    const T inv = T(1.0) / b.v;
+    r.v = a.v * inv;
+    for (int i = 0; i < 4; ++i) r.d[i] = (a.d[i] - r.v * b.d[i]) * inv;
+    return r;
+  }
+  friend Dual operator+(const Dual& a, double b) { return a + Dual(b); }
+  friend Dual operator+(double a, const Dual& b) { return Dual(a) + b; }
+  friend Dual operator-(const Dual& a, double b) { return a - Dual(b); }
+  friend Dual operator-(double a, const Dual& b) { return Dual(a) - b; }
+  friend Dual operator*(const Dual& a, double b) {
+    Dual r;
+    r.v = a.v * b;
+    for (int i = 0; i < 4; ++i) r.d[i] = a.d[i] * b;
+    return r;
+  }
+  friend Dual operator*(double a, const Dual& b) { return b * a; }
+  friend Dual operator/(const Dual& a, double b) { return a * (1.0 / b); }
+  friend Dual operator/(double a, const Dual& b) { return Dual(a) / b; }
+
+  friend bool operator<(const Dual& a, const Dual& b) { return a.v < b.v; }
+  friend bool operator>(const Dual& a, const Dual& b) { return a.v > b.v; }
+  friend bool operator<=(const Dual& a, const Dual& b) { return a.v <= b.v; }
+  friend bool operator>=(const Dual& a, const Dual& b) { return a.v >= b.v; }
+  friend bool operator<(const Dual& a, double b) { return a.v < b; }
+  friend bool operator>(const Dual& a, double b) { return a.v > b; }
+  friend bool operator<=(const Dual& a, double b) { return a.v <= b; }
+  friend bool operator>=(const Dual& a, double b) { return a.v >= b; }
+};
+
+/// Chain rule helper: f(a) with f(a.v) = fv and f'(a.v) = dfv.
+template <class T>
+inline Dual<T> chain(const Dual<T>& a, const T& fv, const T& dfv) {
+  Dual<T> r;
+  r.v = fv;
+  for (int i = 0; i < 4; ++i) r.d[i] = dfv * a.d[i];
+  return r;
+}
+
+// Plain-double overloads so generic metric code can call value_of etc. on any scalar.
+inline double value_of(double x) { return x; }
+template <class T>
+inline double value_of(const Dual<T>& x) { return value_of(x.v); }
+
+template <class T> inline Dual<T> sqrt(const Dual<T>& a) { using std::sqrt; T s = sqrt(a.v); return chain(a, s, T(0.5) / s); }
+template <class T> inline Dual<T> sin(const Dual<T>& a) { using std::sin; using std::cos; return chain(a, sin(a.v), cos(a.v)); }
+template <class T> inline Dual<T> cos(const Dual<T>& a) { using std::sin; using std::cos; return chain(a, cos(a.v), -sin(a.v)); }
+template <class T> inline Dual<T> tan(const Dual<T>& a) { using std::tan; T t = tan(a.v); return chain(a, t, T(1.0) + t * t); }
+template <class T> inline Dual<T> exp(const Dual<T>& a) { using std::exp; T e = exp(a.v); return chain(a, e, e); }
+template <class T> inline Dual<T> log(const Dual<T>& a) { using std::log; return chain(a, log(a.v), T(1.0) / a.v); }
+template <class T> inline Dual<T> sinh(const Dual<T>& a) { using std::sinh; using std::cosh; return chain(a, sinh(a.v), cosh(a.v)); }
+template <class T> inline Dual<T> cosh(const Dual<T>& a) { using std::sinh; using std::cosh; return chain(a, cosh(a.v), sinh(a.v)); }
+template <class T> inline Dual<T> tanh(const Dual<T>& a) { using std::tanh; T t = tanh(a.v); return chain(a, t, T(1.0) - t * t); }
+template <class T> inline Dual<T> atan(const Dual<T>& a) { using std::atan; return chain(a, atan(a.v), T(1.0) / (T(1.0) + a.v * a.v)); }
+template <class T> inline Dual<T> asin(const Dual<T>& a) { using std::asin; using std::sqrt; return chain(a, asin(a.v), T(1.0) / sqrt(T(1.0) - a.v * a.v)); }
+template <class T> inline Dual<T> acos(const Dual<T>& a) { using std::acos; using std::sqrt; return chain(a, acos(a.v), T(-1.0) / sqrt(T(1.0) - a.v * a.v)); }
+template <class T> inline Dual<T> pow(const Dual<T>& a, double p) { using std::pow; return chain(a, pow(a.v, p), T(p) * pow(a.v, p - 1.0)); }
+template <class T> inline Dual<T> abs(const Dual<T>& a) { return a.v < 0 ? -a : a; }
+template <class T> inline Dual<T> fabs(const Dual<T>& a) { return a.v < 0 ? -a : a; }
+template <class T> inline Dual<T> atan2(const Dual<T>& y, const Dual<T>& x) {
+  using std::atan2;
+  Dual<T> r;
+  r.v = atan2(y.v, x.v);
+  const T den = x.v * x.v + y.v * y.v;
+  for (int i = 0; i < 4; ++i) r.d[i] = (x.v * y.d[i] - y.v * x.d[i]) / den;
+  return r;
+}
+
+/// Seeds x as the independent variables: x[μ] has ∂_μ = 1.
+template <class T>
+inline Vec4T<Dual<T>> seed(const Vec4T<T>& x) {
+  Vec4T<Dual<T>> r;
+  for (int i = 0; i < 4; ++i) {
+    r[i] = Dual<T>(x[i]);
+    r[i].d[i] = T(1.0);
+  }
+  return r;
+}
+
+}  // namespace geovis

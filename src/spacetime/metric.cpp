@@ -1,0 +1,262 @@
+#include "spacetime/metric.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace geovis {
+
+const char* coord_type_name(CoordType t) {
+  switch (t) {
+    case CoordType::Cartesian: return "cartesian";
+    case CoordType::Spherical: return "spherical";
+    case CoordType::Cylindrical: return "cylinder";
+    case CoordType::ProlateSpheroidal: return "prolatespheroidal";
+    case CoordType::Custom: return "custom";
+  }
+  return "custom";
+}
+
+const char* tetrad_kind_name(TetradKind k) {
+  switch (k) {
+    case TetradKind::Default: return "default";
+    case TetradKind::Static: return "static";
+    case TetradKind::LNRF: return "lnrf";
+    case TetradKind::Freefall: return "freefall";
+    case TetradKind::Comoving: return "comoving";
+    case TetradKind::Cylinder: return "cylinder";
+    case TetradKind::Cartesian: return "cartesian";
+  }
+  return "default";
+}
+
+Metric::Metric(MetricInfo info) : info_(std::move(info)) {
+  values_.reserve(info_.params.size());
+  for (const auto& p : info_.params) values_.push_back(p.def);
+}
+
+double Metric::param(std::string_view name) const {
+  const std::string n = to_lower(name);
+  for (size_t i = 0; i < info_.params.size(); ++i)
+    if (info_.params[i].name == n) return values_[i];
+  std::vector<std::string> names;
+  for (const auto& p : info_.params) names.push_back(p.name);
+  throw Error("metric " + info_.name + " has no parameter \"" + std::string(name) + "\"" +
+              did_you_mean(name, names) + " (parameters: " + (names.empty() ? "none" : join(names)) + ")");
+}
+
+void Metric::set_param(std::string_view name, double value) {
+  const std::string n = to_lower(name);
+  for (size_t i = 0; i < info_.params.size(); ++i) {
+    const MetricParam& spec = info_.params[i];
+    if (spec.name != n) continue;
+    const bool lo_ok = spec.min_open ? value > spec.min : value >= spec.min;
+    const bool hi_ok = spec.max_open ? value < spec.max : value <= spec.max;
+    if (!std::isfinite(value) || !lo_ok || !hi_ok) {
+      std::ostringstream os;
+      os << "metric " << info_.name << ": parameter " << spec.name << " = " << value
+         << " is out of range; expected a value in " << (spec.min_open ? "(" : "[") << spec.min << ", "
+         << spec.max << (spec.max_open ? ")" : "]") << " (" << spec.doc << ")";
+      throw Error(os.str());
+    }
+    const double old = values_[i];
+    values_[i] = value;
+    try {
+      on_params_changed();
+    } catch (...) {
+      values_[i] = old;
+      on_params_changed();
+      throw;
+    }
+    return;
+  }
+  param(name);  // throws the unknown-name error
+}
+
+bool Metric::supports_tetrad(TetradKind kind) const {
+  return std::find(info_.tetrads.begin(), info_.tetrads.end(), kind) != info_.tetrads.end();
+}
+
+void Metric::require_tetrad_kind(TetradKind kind) const {
+  if (supports_tetrad(kind)) return;
+  std::vector<std::string> names;
+  for (TetradKind k : info_.tetrads) names.push_back(tetrad_kind_name(k));
+  throw Error("metric " + info_.name + " has no " + tetrad_kind_name(kind) +
+              " natural tetrad (available: " + join(names) + ")");
+}
+
+bool Metric::is_valid(const Vec4& x) const {
+  for (int i = 0; i < 4; ++i)
+    if (!std::isfinite(x[i])) return false;
+  return true;
+}
+
+namespace {
+
+/// Gauss-Jordan inversion with partial pivoting, generic in the scalar (double or dual).
+template <class T>
+bool invert_generic(const Mat4T<T>& a, Mat4T<T>& inv) {
+  T m[4][8];
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      m[i][j] = a[i][j];
+      m[i][j + 4] = T(i == j ? 1.0 : 0.0);
+    }
+  for (int c = 0; c < 4; ++c) {
+    int p = c;
+    for (int r = c + 1; r < 4; ++r)
+      if (std::fabs(value_of(m[r][c])) > std::fabs(value_of(m[p][c]))) p = r;
+    if (std::fabs(value_of(m[p][c])) < 1e-300) return false;
+    if (p != c)
+      for (int j = 0; j < 8; ++j) std::swap(m[p][j], m[c][j]);
+    const T piv = T(1.0) / m[c][c];
+    for (int j = 0; j < 8; ++j) m[c][j] = m[c][j] * piv;
+    for (int r = 0; r < 4; ++r) {
+      if (r == c) continue;
+      const T f = m[r][c];
+      for (int j = 0; j < 8; ++j) m[r][j] = m[r][j] - f * m[c][j];
+    }
+  }
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) inv[i][j] = m[i][j + 4];
+  return true;
+}
+
+/// Γ^μ_{ab} = ½ g^{μν} (∂_a g_{νb} + ∂_b g_{νa} − ∂_ν g_{ab}), generic in the scalar.
+/// dg[c][a][b] = ∂_c g_{ab}.
+template <class T>
+void christoffel_from(const Mat4T<T>& ginv, const T dg[4][4][4], T G[4][4][4]) {
+  for (int mu = 0; mu < 4; ++mu)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a; b < 4; ++b) {
+        T s(0.0);
+        for (int nu = 0; nu < 4; ++nu) {
+          if (value_of(ginv[mu][nu]) == 0.0 && std::is_same_v<T, double>) continue;
+          s = s + ginv[mu][nu] * (dg[a][nu][b] + dg[b][nu][a] - dg[nu][a][b]);
+        }
+        G[mu][a][b] = s * 0.5;
+        G[mu][b][a] = G[mu][a][b];
+      }
+}
+
+}  // namespace
+
+Mat4 invert(const Mat4& a) {
+  Mat4 inv{};
+  if (!invert_generic(a, inv)) throw Error("metric tensor is singular here");
+  return inv;
+}
+
+void Metric::christoffel_ad(const Vec4& x, Christoffel& out) const {
+  const Vec4T<DualD> xd = seed(x);
+  Mat4T<DualD> gd;
+  metric_tensor(xd, gd);
+  Mat4 g, ginv;
+  double dg[4][4][4];
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      g[a][b] = gd[a][b].v;
+      for (int c = 0; c < 4; ++c) dg[c][a][b] = gd[a][b].d[c];
+    }
+  if (!invert_generic(g, ginv)) throw Error("metric " + name() + ": metric tensor is singular here");
+  christoffel_from(ginv, dg, out.G);
+}
+
+void Metric::christoffel_derivs_ad(const Vec4& x, Christoffel& out, double dG[4][4][4][4]) const {
+  const Vec4T<Dual2> x2 = seed(seed(x));
+  Mat4T<Dual2> g2;
+  metric_tensor(x2, g2);
+  // g as a first-order dual (value + ∂_e), and ∂_c g as first-order duals (∂_c g + ∂_e∂_c g).
+  Mat4T<DualD> g1, ginv1;
+  DualD dg1[4][4][4];
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      g1[a][b] = g2[a][b].v;
+      for (int c = 0; c < 4; ++c) dg1[c][a][b] = g2[a][b].d[c];
+    }
+  if (!invert_generic(g1, ginv1)) throw Error("metric " + name() + ": metric tensor is singular here");
+  DualD G1[4][4][4];
+  christoffel_from(ginv1, dg1, G1);
+  for (int mu = 0; mu < 4; ++mu)
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        out.G[mu][a][b] = G1[mu][a][b].v;
+        for (int c = 0; c < 4; ++c) dG[c][mu][a][b] = G1[mu][a][b].d[c];
+      }
+}
+
+void Metric::riemann(const Vec4& x, Riemann& out) const {
+  Christoffel G;
+  double dG[4][4][4][4];
+  christoffel_derivs_ad(x, G, dG);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      for (int c = 0; c < 4; ++c)
+        for (int d = 0; d < 4; ++d) {
+          double r = dG[c][a][d][b] - dG[d][a][c][b];
+          for (int e = 0; e < 4; ++e) r += G.G[a][c][e] * G.G[e][d][b] - G.G[a][d][e] * G.G[e][c][b];
+          out.R[a][b][c][d] = r;
+        }
+}
+
+int Metric::to_pseudo_cartesian(const Vec4& x, Vec3& p) const {
+  switch (info_.coord_type) {
+    case CoordType::Spherical: {
+      const double st = std::sin(x[2]);
+      p = {x[1] * st * std::cos(x[3]), x[1] * st * std::sin(x[3]), x[1] * std::cos(x[2])};
+      return 0;
+    }
+    case CoordType::Cylindrical:
+      p = {x[1] * std::cos(x[2]), x[1] * std::sin(x[2]), x[3]};
+      return 0;
+    default:
+      p = {x[1], x[2], x[3]};
+      return 0;
+  }
+}
+
+Vec4 Metric::from_pseudo_cartesian(double t, const Vec3& p, int /*chart*/) const {
+  switch (info_.coord_type) {
+    case CoordType::Spherical: {
+      const double r = norm(p);
+      const double th = r > 0 ? std::acos(std::clamp(p.z / r, -1.0, 1.0)) : 0.0;
+      return {{t, r, th, std::atan2(p.y, p.x)}};
+    }
+    case CoordType::Cylindrical:
+      return {{t, std::hypot(p.x, p.y), std::atan2(p.y, p.x), p.z}};
+    default:
+      return {{t, p.x, p.y, p.z}};
+  }
+}
+
+Vec4 local_to_coord(const Tetrad& e, const Vec4& v) {
+  Vec4 r{{0, 0, 0, 0}};
+  for (int a = 0; a < 4; ++a)
+    for (int mu = 0; mu < 4; ++mu) r[mu] += v[a] * e[a][mu];
+  return r;
+}
+
+Vec4 coord_to_local(const Metric& m, const Vec4& x, const Tetrad& e, const Vec4& v) {
+  Mat4 g;
+  m.metric_tensor(x, g);
+  Vec4 r;
+  for (int a = 0; a < 4; ++a) r[a] = (a == 0 ? -1.0 : 1.0) * dot(g, e[a], v);
+  return r;
+}
+
+Vec4 local_null_direction(const Tetrad& e, const Vec3& d, bool past_directed) {
+  const Vec3 n = normalize(d);
+  const double s = past_directed ? -1.0 : 1.0;
+  return local_to_coord(e, Vec4{{s, n.x, n.y, n.z}});
+}
+
+Vec4 local_four_velocity(const Tetrad& e, const Vec3& beta) {
+  const double b2 = dot(beta, beta);
+  if (!(b2 < 1.0)) throw Error("local velocity |v| must be smaller than the speed of light (|v| < 1)");
+  const double gamma = 1.0 / std::sqrt(1.0 - b2);
+  return local_to_coord(e, Vec4{{gamma, gamma * beta.x, gamma * beta.y, gamma * beta.z}});
+}
+
+}  // namespace geovis

@@ -1,0 +1,140 @@
+// The metric interface (paper §2.1; Motion4D's m4dMetric). A metric gives its coordinates, g_{μν},
+// the Christoffel symbols (closed form, or by automatic differentiation of g_{μν}), the coordinate
+// validity test, natural local tetrads, the transformation to pseudo-Cartesian coordinates
+// (paper §2.3) and named parameters with defaults, ranges and descriptions.
+//
+// Concrete metrics derive from MetricCRTP<Derived> (spacetime/metric_crtp.h), which turns one
+// templated g_{μν} into the double and dual-number versions and instantiates the integrators with
+// the metric's Christoffel symbols inlined. Adding a metric = one file in spacetime/metrics/ plus
+// one line in spacetime/metric_registry.cpp.
+#pragma once
+
+#include <array>
+#include <limits>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "spacetime/dual.h"
+#include "spacetime/geodesic.h"
+#include "spacetime/vec.h"
+
+namespace geovis {
+
+enum class CoordType { Cartesian, Spherical, Cylindrical, ProlateSpheroidal, Custom };
+const char* coord_type_name(CoordType t);
+
+/// GeoViS/Motion4D natural tetrad kinds; the integer value is GeoViS's `localframe`
+/// (gpTetradDefault = 0 ... gpTetradCartesian = 6).
+enum class TetradKind { Default = 0, Static = 1, LNRF = 2, Freefall = 3, Comoving = 4, Cylinder = 5, Cartesian = 6 };
+const char* tetrad_kind_name(TetradKind k);
+
+struct MetricParam {
+  std::string name;  ///< lower case, as GeoViS scene keys
+  double def = 0;
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool min_open = false;  ///< value must be > min (not >=)
+  bool max_open = false;
+  std::string doc;  ///< one line
+};
+
+struct MetricInfo {
+  std::string name;                 ///< Motion4D database name, e.g. "KerrBL"
+  std::array<std::string, 4> coords;
+  CoordType coord_type = CoordType::Custom;
+  std::vector<MetricParam> params;  ///< alphabetical, as Motion4D lists them
+  std::vector<TetradKind> tetrads;  ///< supported natural tetrads (catalogue §12)
+  std::string doc;                  ///< one line, with the reference for the line element
+};
+
+using DualD = Dual<double>;
+using Dual2 = Dual<Dual<double>>;
+
+/// R[a][b][c][d] = R^a_{bcd} (MTW convention: R^a_{bcd} = ∂_c Γ^a_{db} - ∂_d Γ^a_{cb} + ...).
+struct Riemann {
+  double R[4][4][4][4];
+};
+
+class Metric {
+ public:
+  explicit Metric(MetricInfo info);
+  virtual ~Metric() = default;
+  Metric(const Metric&) = default;
+  Metric& operator=(const Metric&) = delete;
+
+  const MetricInfo& info() const { return info_; }
+  const std::string& name() const { return info_.name; }
+  virtual std::unique_ptr<Metric> clone() const = 0;
+
+  // ---- parameters ----
+  double param(std::string_view name) const;  ///< throws Error for an unknown name
+  /// Sets one parameter; throws Error (listing valid names / the allowed range) on a bad name or
+  /// value, and re-checks cross-parameter conditions (e.g. |a| <= M).
+  void set_param(std::string_view name, double value);
+  const std::vector<double>& param_values() const { return values_; }
+
+  // ---- geometry ----
+  virtual void metric_tensor(const Vec4& x, Mat4& g) const = 0;
+  virtual void metric_tensor(const Vec4T<DualD>& x, Mat4T<DualD>& g) const = 0;
+  virtual void metric_tensor(const Vec4T<Dual2>& x, Mat4T<Dual2>& g) const = 0;
+  /// Γ^μ_{ab}: closed form where the metric provides it, automatic differentiation otherwise.
+  virtual void christoffel(const Vec4& x, Christoffel& G) const = 0;
+  virtual bool has_closed_form_christoffel() const = 0;
+  /// Γ from g_{μν} by forward-mode automatic differentiation (fallback and test oracle).
+  void christoffel_ad(const Vec4& x, Christoffel& G) const;
+  /// Γ and its partial derivatives dG[c][μ][a][b] = ∂_c Γ^μ_{ab} (second-order AD).
+  void christoffel_derivs_ad(const Vec4& x, Christoffel& G, double dG[4][4][4][4]) const;
+  /// Riemann tensor R^a_{bcd} from the AD Christoffel symbols and their derivatives.
+  void riemann(const Vec4& x, Riemann& R) const;
+
+  /// Coordinate validity (Motion4D's breakCondition negated): false inside a horizon, at a
+  /// singularity or outside the chart. The integrator stops there instead of producing NaN.
+  virtual bool is_valid(const Vec4& x) const;
+
+  /// Natural local tetrad of the given kind at x (paper eq. 2). Throws Error when the kind is not
+  /// supported by this metric or not defined at x (e.g. a static observer inside the ergosphere).
+  virtual Tetrad natural_tetrad(const Vec4& x, TetradKind kind = TetradKind::Default) const = 0;
+  bool supports_tetrad(TetradKind kind) const;
+
+  /// Pseudo-Cartesian coordinates (paper §2.3) of the spatial point of x; returns the chart index
+  /// (e.g. Morris-Thorne: 0 for l > 0, 1 for l <= 0). Default: by coordinate type.
+  virtual int to_pseudo_cartesian(const Vec4& x, Vec3& p) const;
+  /// Inverse of to_pseudo_cartesian for the given chart (time component t kept).
+  virtual Vec4 from_pseudo_cartesian(double t, const Vec3& p, int chart = 0) const;
+
+  // ---- hot path (dispatch once per geodesic) ----
+  /// Integrates system `sys` from y (dim = system_dim(sys), updated in place) starting at
+  /// affine parameter lambda0, calling `cb` after every accepted step.
+  virtual GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y,
+                                   double lambda0, StepCallback cb) const = 0;
+
+ protected:
+  /// Called after a parameter changed: read values into members and check cross-parameter
+  /// conditions (throw Error on violation).
+  virtual void on_params_changed() {}
+  double p(size_t i) const { return values_[i]; }
+  /// Throws Error naming the available kinds when `kind` is not supported by this metric.
+  void require_tetrad_kind(TetradKind kind) const;
+
+ private:
+  MetricInfo info_;
+  std::vector<double> values_;
+};
+
+// ---- generic tetrad/vector helpers (spacetime/metric.cpp) ---------------------------------------
+
+/// Coordinate components of local vector v = v^a e_(a).
+Vec4 local_to_coord(const Tetrad& e, const Vec4& v_local);
+/// Local components v^a = η^{aa} g(e_(a), v) of a coordinate vector.
+Vec4 coord_to_local(const Metric& m, const Vec4& x, const Tetrad& e, const Vec4& v);
+/// Inverse of a 4x4 matrix (the metric); throws Error when singular.
+Mat4 invert(const Mat4& a);
+/// Initial coordinate direction of a light ray for local spatial direction d (need not be unit):
+/// k = ∓e_(0) + d̂^i e_(i) — past-directed (-e0) for backward ray tracing (paper eq. 7).
+Vec4 local_null_direction(const Tetrad& e, const Vec3& d, bool past_directed = true);
+/// Four-velocity for a local 3-velocity β (|β| < 1): u = γ(e_(0) + β^i e_(i)).
+Vec4 local_four_velocity(const Tetrad& e, const Vec3& beta);
+
+}  // namespace geovis

@@ -1,0 +1,92 @@
+// CRTP base for concrete metrics. A metric class `M : public MetricCRTP<M>` provides
+//
+//   template <class T> void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const;   // required: g_{μν}
+//   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override;  // required
+//   void christoffel_closed(const Vec4& x, Christoffel& G) const;          // closed form Γ
+//   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const;       // optional fast −Γkk
+//   bool is_valid(const Vec4& x) const override;                          // optional
+//   int to_pseudo_cartesian(...) const override;                          // optional
+//
+// and gets the double/dual g_{μν}, christoffel(), and integrate() with the integrators
+// instantiated for M, so the hot loop calls M's inline functions directly.
+#pragma once
+
+#include <memory>
+
+#include "core/error.h"
+#include "spacetime/integrators.h"
+#include "spacetime/jacobi.h"
+#include "spacetime/metric.h"
+
+namespace geovis {
+
+template <class M>
+class MetricCRTP : public Metric {
+ public:
+  using Metric::Metric;
+
+  std::unique_ptr<Metric> clone() const override { return std::make_unique<M>(self()); }
+
+  void metric_tensor(const Vec4& x, Mat4& g) const override { self().g_tmpl(x, g); }
+  void metric_tensor(const Vec4T<DualD>& x, Mat4T<DualD>& g) const override { self().g_tmpl(x, g); }
+  void metric_tensor(const Vec4T<Dual2>& x, Mat4T<Dual2>& g) const override { self().g_tmpl(x, g); }
+
+  static constexpr bool kHasClosedChristoffel =
+      requires(const M& m, const Vec4& x, Christoffel& G) { m.christoffel_closed(x, G); };
+  static constexpr bool kHasClosedAccel =
+      requires(const M& m, const Vec4& x, const Vec4& k, Vec4& a) { m.accel_closed(x, k, a); };
+
+  void christoffel(const Vec4& x, Christoffel& G) const override { christoffel_inline(x, G); }
+  bool has_closed_form_christoffel() const override { return kHasClosedChristoffel; }
+
+  // ---- non-virtual, inlinable versions used inside the integrators ----
+  void metric_tensor_inline(const Vec4& x, Mat4& g) const { self().g_tmpl(x, g); }
+  void christoffel_inline(const Vec4& x, Christoffel& G) const {
+    if constexpr (kHasClosedChristoffel)
+      self().christoffel_closed(x, G);
+    else
+      christoffel_ad(x, G);
+  }
+  /// a^μ = −Γ^μ_{ab} k^a k^b
+  void geodesic_acceleration(const Vec4& x, const Vec4& k, Vec4& a) const {
+    if constexpr (kHasClosedAccel) {
+      self().accel_closed(x, k, a);
+    } else {
+      Christoffel G;
+      christoffel_inline(x, G);
+      for (int mu = 0; mu < 4; ++mu) {
+        double s = 0;
+        for (int i = 0; i < 4; ++i) {
+          s += G.G[mu][i][i] * k[i] * k[i];
+          for (int j = i + 1; j < 4; ++j) s += 2.0 * G.G[mu][i][j] * k[i] * k[j];
+        }
+        a[mu] = -s;
+      }
+    }
+  }
+  bool is_valid_inline(const Vec4& x) const { return self().M::is_valid(x); }
+
+  GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y, double lambda0,
+                           StepCallback cb) const override {
+    switch (sys) {
+      case GeodesicSystem::Transport: {
+        TransportRHS<M> f{self()};
+        return integrate_system(self(), f, cfg, y, lambda0, cb);
+      }
+      case GeodesicSystem::Jacobi: {
+        JacobiRHS<M> f{self()};
+        return integrate_system(self(), f, cfg, y, lambda0, cb);
+      }
+      case GeodesicSystem::Geodesic:
+      default: {
+        GeodesicRHS<M> f{self()};
+        return integrate_system(self(), f, cfg, y, lambda0, cb);
+      }
+    }
+  }
+
+ protected:
+  const M& self() const { return static_cast<const M&>(*this); }
+};
+
+}  // namespace geovis

@@ -1,0 +1,31 @@
+// Minkowski spacetime in Cartesian coordinates (t, x, y, z): ds² = −dt² + dx² + dy² + dz².
+#include "spacetime/metric_crtp.h"
+
+namespace geovis {
+
+class Minkowski final : public MetricCRTP<Minkowski> {
+ public:
+  Minkowski()
+      : MetricCRTP({"Minkowski", {"t", "x", "y", "z"}, CoordType::Cartesian, {}, {TetradKind::Default},
+                    "flat spacetime in Cartesian coordinates"}) {}
+
+  template <class T>
+  void g_tmpl(const Vec4T<T>&, Mat4T<T>& g) const {
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) g[i][j] = T(i == j ? (i == 0 ? -1.0 : 1.0) : 0.0);
+  }
+  void christoffel_closed(const Vec4&, Christoffel& G) const { G = Christoffel{}; }
+  void accel_closed(const Vec4&, const Vec4&, Vec4& a) const { a = Vec4{{0, 0, 0, 0}}; }
+
+  Tetrad natural_tetrad(const Vec4&, TetradKind kind) const override {
+    require_tetrad_kind(kind);
+    Tetrad e;
+    for (int a = 0; a < 4; ++a)
+      for (int mu = 0; mu < 4; ++mu) e[a][mu] = a == mu ? 1.0 : 0.0;
+    return e;
+  }
+};
+
+std::unique_ptr<Metric> make_metric_Minkowski() { return std::make_unique<Minkowski>(); }
+
+}  // namespace geovis

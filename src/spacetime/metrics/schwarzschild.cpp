@@ -1,0 +1,90 @@
+// Schwarzschild spacetime in Schwarzschild coordinates (t, r, θ, φ), paper eq. (1):
+//   ds² = −(1 − r_s/r) dt² + dr²/(1 − r_s/r) + r² (dθ² + sin²θ dφ²),  r_s = 2M  (G = c = 1).
+// Christoffel symbols and natural tetrad: Müller & Grave, Catalogue of Spacetimes
+// (arXiv:0904.4184) §2.2.1; tetrad = paper eq. (2).
+#include "spacetime/metric_crtp.h"
+
+namespace geovis {
+
+class Schwarzschild final : public MetricCRTP<Schwarzschild> {
+ public:
+  Schwarzschild()
+      : MetricCRTP({"Schwarzschild",
+                    {"t", "r", "theta", "phi"},
+                    CoordType::Spherical,
+                    {{"mass", 1.0, 0.0, 1e300, false, false, "mass M of the black hole (r_s = 2M)"}},
+                    {TetradKind::Default, TetradKind::Static},
+                    "Schwarzschild black hole in Schwarzschild coordinates"}) {
+    on_params_changed();
+  }
+
+  template <class T>
+  void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
+    using std::sin;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+    const T& r = x[1];
+    const T f = 1.0 - rs_ / r;
+    const T st = sin(x[2]);
+    g[0][0] = -f;
+    g[1][1] = 1.0 / f;
+    g[2][2] = r * r;
+    g[3][3] = r * r * st * st;
+  }
+
+  void christoffel_closed(const Vec4& x, Christoffel& G) const {
+    G = Christoffel{};
+    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double rmrs = r - rs_;
+    G.G[0][0][1] = G.G[0][1][0] = rs_ / (2.0 * r * rmrs);
+    G.G[1][0][0] = rs_ * rmrs / (2.0 * r * r * r);
+    G.G[1][1][1] = -rs_ / (2.0 * r * rmrs);
+    G.G[1][2][2] = -rmrs;
+    G.G[1][3][3] = -rmrs * st * st;
+    G.G[2][1][2] = G.G[2][2][1] = 1.0 / r;
+    G.G[2][3][3] = -st * ct;
+    G.G[3][1][3] = G.G[3][3][1] = 1.0 / r;
+    G.G[3][2][3] = G.G[3][3][2] = ct / st;
+  }
+
+  /// −Γ^μ_{ab} k^a k^b written out (the hot path of every Schwarzschild ray).
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
+    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double rmrs = r - rs_;
+    const double c_ttr = rs_ / (2.0 * r * rmrs);
+    a[0] = -2.0 * c_ttr * k[0] * k[1];
+    a[1] = -(rs_ * rmrs / (2.0 * r * r * r)) * k[0] * k[0] + c_ttr * k[1] * k[1] +
+           rmrs * (k[2] * k[2] + st * st * k[3] * k[3]);
+    a[2] = -2.0 / r * k[1] * k[2] + st * ct * k[3] * k[3];
+    a[3] = -2.0 / r * k[1] * k[3] - 2.0 * ct / st * k[2] * k[3];
+  }
+
+  /// Outside the horizon and off the polar axis (where the coordinates are singular).
+  bool is_valid(const Vec4& x) const override {
+    return x[1] > rs_ * (1.0 + 1e-8) && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
+           std::sin(x[2]) != 0.0;
+  }
+
+  Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
+    require_tetrad_kind(kind);
+    const double r = x[1];
+    if (!(r > rs_)) throw Error("Schwarzschild: no static observer at r <= r_s = " + std::to_string(rs_));
+    const double f = std::sqrt(1.0 - rs_ / r);
+    Tetrad e{};
+    e[0][0] = 1.0 / f;
+    e[1][1] = f;
+    e[2][2] = 1.0 / r;
+    e[3][3] = 1.0 / (r * std::sin(x[2]));
+    return e;
+  }
+
+ protected:
+  void on_params_changed() override { rs_ = 2.0 * p(0); }
+
+ private:
+  double rs_ = 2.0;
+};
+
+std::unique_ptr<Metric> make_metric_Schwarzschild() { return std::make_unique<Schwarzschild>(); }
+
+}  // namespace geovis

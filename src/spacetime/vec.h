@@ -1,0 +1,89 @@
+// Small fixed-size vectors and matrices for the hot path: no heap, trivially copyable, templated
+// on the scalar so the same metric code runs on doubles and on dual numbers (spacetime/dual.h).
+#pragma once
+
+#include <array>
+#include <cmath>
+
+namespace geovis {
+
+template <class T>
+struct Vec4T {
+  T c[4];
+  constexpr T& operator[](int i) { return c[i]; }
+  constexpr const T& operator[](int i) const { return c[i]; }
+};
+using Vec4 = Vec4T<double>;
+
+template <class T>
+struct Mat4T {
+  T m[4][4];
+  constexpr T* operator[](int i) { return m[i]; }
+  constexpr const T* operator[](int i) const { return m[i]; }
+};
+using Mat4 = Mat4T<double>;
+
+/// Christoffel symbols of the second kind, G[mu][a][b] = Γ^μ_{ab} (symmetric in a, b).
+struct Christoffel {
+  double G[4][4][4];
+};
+
+/// A local tetrad: e[a] holds the coordinate components e_(a)^μ of base vector a
+/// (a = 0 timelike). Paper §2.1, eq. (2).
+struct Tetrad {
+  Vec4 e[4];
+  Vec4& operator[](int a) { return e[a]; }
+  const Vec4& operator[](int a) const { return e[a]; }
+};
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+  constexpr double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+  constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+};
+
+// ---- Vec4 arithmetic ----------------------------------------------------------------------------
+template <class T>
+constexpr Vec4T<T> operator+(const Vec4T<T>& a, const Vec4T<T>& b) {
+  return {{a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3]}};
+}
+template <class T>
+constexpr Vec4T<T> operator-(const Vec4T<T>& a, const Vec4T<T>& b) {
+  return {{a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] - b[3]}};
+}
+template <class T>
+constexpr Vec4T<T> operator-(const Vec4T<T>& a) {
+  return {{-a[0], -a[1], -a[2], -a[3]}};
+}
+template <class T>
+constexpr Vec4T<T> operator*(double s, const Vec4T<T>& a) {
+  return {{s * a[0], s * a[1], s * a[2], s * a[3]}};
+}
+template <class T>
+constexpr Vec4T<T> operator*(const Vec4T<T>& a, double s) {
+  return s * a;
+}
+
+/// g(a, b) = g_{μν} a^μ b^ν
+inline double dot(const Mat4& g, const Vec4& a, const Vec4& b) {
+  double s = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) s += g[i][j] * a[i] * b[j];
+  return s;
+}
+
+// ---- Vec3 arithmetic ----------------------------------------------------------------------------
+constexpr Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+constexpr Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+constexpr Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
+constexpr Vec3 operator*(double s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
+constexpr Vec3 operator*(const Vec3& a, double s) { return s * a; }
+constexpr Vec3 operator/(const Vec3& a, double s) { return {a.x / s, a.y / s, a.z / s}; }
+constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+inline Vec3 normalize(const Vec3& a) { return a / norm(a); }
+
+}  // namespace geovis
