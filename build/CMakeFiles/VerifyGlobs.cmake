@@ -14,6 +14,8 @@ endif()
 # GEOVIS_CLI_SRC at CMakeLists.txt:63 (file)
 file(GLOB NEW_GLOB LIST_DIRECTORIES true "/work/main/src/cli/*.cpp")
 set(OLD_GLOB
+  "/work/main/src/cli/app.cpp"
+  "/work/main/src/cli/main.cpp"
   )
 if(NOT "${NEW_GLOB}" STREQUAL "${OLD_GLOB}")
   message("-- GLOB mismatch!")

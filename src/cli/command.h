@@ -1,0 +1,23 @@
+// Subcommands of the `geovis` program register themselves (one file per subcommand in src/cli/).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace geovis::cli {
+
+struct GlobalOptions {
+  bool quiet = false;
+  bool verbose = false;
+  int exit_code = 0;  ///< set by the subcommand's callback
+};
+
+/// Adds the subcommand to `app`; its callback runs the command and sets opts.exit_code.
+using CommandSetup = void (*)(CLI::App& app, GlobalOptions& opts);
+
+/// Registers a subcommand (call from a namespace-scope initializer in the command's file).
+bool register_command(const char* name, CommandSetup setup);
+
+/// Runs the program (also used by tests). No arguments = `geovis render` of the built-in scene.
+int run(int argc, const char* const* argv);
+
+}  // namespace geovis::cli
