@@ -1,0 +1,135 @@
+// Kastor-Traschen spacetime: two extremely charged black holes in a de Sitter universe,
+// coordinates (t, x, y, z) (Kastor & Traschen, Phys. Rev. D 47 (1993) 5370, eq. (2.1); Motion4D
+// m4dMetricKastorTraschen):
+//   ds² = −dt²/Ω² + a² Ω² (dx² + dy² + dz²),  a = e^{Ht},  Ω = 1 + m1/(a r1) + m2/(a r2),
+//   r_i = √(x² + y² + (z − z_i)²).
+// With H = 0 it is the Majumdar-Papapetrou two-black-hole solution; with one mass it reduces to
+// extreme Reissner-Nordström in isotropic coordinates, ds² = −dt²/(1+M/ρ)² + (1+M/ρ)² dx².
+//
+// Christoffel symbols (derived from the line element; i, j spatial, i != j, ∂_t Ω = −H(Ω − 1)):
+//   Γ^t_tt = −Ω_t/Ω,  Γ^t_ti = −Ω_i/Ω,  Γ^t_ii = Ω³a²(Ω_t + HΩ),
+//   Γ^i_tt = −Ω_i/(Ω⁵a²),  Γ^i_ti = Ω_t/Ω + H,  Γ^i_ii = Ω_i/Ω,  Γ^i_ij = Ω_j/Ω,  Γ^i_jj = −Ω_i/Ω
+// (the same as Motion4D's MetricKastorTraschen::calculateChristoffels).
+// Natural tetrad (default = static): e_(0) = Ω ∂_t, e_(i) = ∂_i/(aΩ).
+#include <cmath>
+#include <sstream>
+
+#include "spacetime/metric_crtp.h"
+
+namespace geovis {
+
+class KastorTraschen final : public MetricCRTP<KastorTraschen> {
+ public:
+  KastorTraschen()
+      : MetricCRTP({"KastorTraschen",
+                    {"t", "x", "y", "z"},
+                    CoordType::Cartesian,
+                    {{"h", 0.0, -1e300, 1e300, false, false, "Hubble constant H of the de Sitter background (a = exp(H t))"},
+                     {"m1", 1.0, 0.0, 1e300, false, false, "mass (= charge) of black hole 1, >= 0"},
+                     {"m2", 1.0, 0.0, 1e300, false, false, "mass (= charge) of black hole 2, >= 0"},
+                     {"z1", 1.0, -1e300, 1e300, false, false, "z position of black hole 1 (on the z axis)"},
+                     {"z2", -1.0, -1e300, 1e300, false, false, "z position of black hole 2 (on the z axis)"}},
+                    {TetradKind::Default, TetradKind::Static},
+                    "Kastor-Traschen: two extreme Reissner-Nordstrom black holes in de Sitter (PRD 47 (1993) 5370)"}) {
+    on_params_changed();
+  }
+
+  template <class T>
+  void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
+    using std::exp;
+    using std::sqrt;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+    const T a = exp(h_ * x[0]);
+    const T d1 = x[3] - z1_, d2 = x[3] - z2_;
+    const T rho2 = x[1] * x[1] + x[2] * x[2];
+    const T r1 = sqrt(rho2 + d1 * d1), r2 = sqrt(rho2 + d2 * d2);
+    const T Om = 1.0 + (m1_ / r1 + m2_ / r2) / a;
+    g[0][0] = -1.0 / (Om * Om);
+    const T s = a * a * Om * Om;
+    g[1][1] = s;
+    g[2][2] = s;
+    g[3][3] = s;
+  }
+
+  void christoffel_closed(const Vec4& x, Christoffel& G) const {
+    G = Christoffel{};
+    const double a = std::exp(h_ * x[0]);
+    const double d1 = x[3] - z1_, d2 = x[3] - z2_;
+    const double rho2 = x[1] * x[1] + x[2] * x[2];
+    const double r1 = std::sqrt(rho2 + d1 * d1), r2 = std::sqrt(rho2 + d2 * d2);
+    const double q1 = m1_ / (a * r1 * r1 * r1), q2 = m2_ / (a * r2 * r2 * r2);
+    const double Om = 1.0 + (m1_ / r1 + m2_ / r2) / a;
+    // ∂_μ Ω: Ω_i = −Σ m_k (x − x_k)_i / (a r_k³), Ω_t = −H (Ω − 1).
+    const double dO[4] = {-h_ * (Om - 1.0), -(q1 + q2) * x[1], -(q1 + q2) * x[2], -(q1 * d1 + q2 * d2)};
+    const double iO = 1.0 / Om;
+    const double Om2 = Om * Om;
+    const double a2 = a * a;
+    const double t_ii = Om2 * Om * a2 * (dO[0] + h_ * Om);
+    const double i_ti = dO[0] * iO + h_;
+    const double i_tt = iO / (Om2 * Om2 * a2);
+    G.G[0][0][0] = -dO[0] * iO;
+    for (int i = 1; i < 4; ++i) {
+      G.G[0][0][i] = G.G[0][i][0] = -dO[i] * iO;
+      G.G[0][i][i] = t_ii;
+      G.G[i][0][0] = -dO[i] * i_tt;
+      G.G[i][0][i] = G.G[i][i][0] = i_ti;
+      for (int j = 1; j < 4; ++j) {
+        if (j == i) {
+          G.G[i][i][i] = dO[i] * iO;
+        } else {
+          G.G[i][i][j] = G.G[i][j][i] = dO[j] * iO;
+          G.G[i][j][j] = -dO[i] * iO;
+        }
+      }
+    }
+  }
+
+  /// Stops at the black holes (r_i → 0 is the degenerate horizon in these coordinates, where Ω
+  /// diverges), with Motion4D's relative margin 1e-6.
+  bool is_valid(const Vec4& x) const override {
+    for (int i = 0; i < 4; ++i)
+      if (!std::isfinite(x[i])) return false;
+    const double rho2 = x[1] * x[1] + x[2] * x[2];
+    const double d1 = x[3] - z1_, d2 = x[3] - z2_;
+    if (m1_ > 0 && !(rho2 + d1 * d1 > r_break1_ * r_break1_)) return false;
+    if (m2_ > 0 && !(rho2 + d2 * d2 > r_break2_ * r_break2_)) return false;
+    return true;
+  }
+
+  Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
+    require_tetrad_kind(kind);
+    if (!is_valid(x)) {
+      std::ostringstream os;
+      os << "KastorTraschen: no static observer at (" << x[0] << ", " << x[1] << ", " << x[2] << ", " << x[3]
+         << "): on a black hole (r1 or r2 = 0)";
+      throw Error(os.str());
+    }
+    const double a = std::exp(h_ * x[0]);
+    const double d1 = x[3] - z1_, d2 = x[3] - z2_;
+    const double rho2 = x[1] * x[1] + x[2] * x[2];
+    const double Om = 1.0 + (m1_ / std::sqrt(rho2 + d1 * d1) + m2_ / std::sqrt(rho2 + d2 * d2)) / a;
+    Tetrad e{};
+    e[0][0] = Om;
+    for (int i = 1; i < 4; ++i) e[i][i] = 1.0 / (a * Om);
+    return e;
+  }
+
+ protected:
+  void on_params_changed() override {
+    h_ = p(0);
+    m1_ = p(1);
+    m2_ = p(2);
+    z1_ = p(3);
+    z2_ = p(4);
+    r_break1_ = 1e-6 * m1_;
+    r_break2_ = 1e-6 * m2_;
+  }
+
+ private:
+  double h_ = 0, m1_ = 1, m2_ = 1, z1_ = 1, z2_ = -1, r_break1_ = 0, r_break2_ = 0;
+};
+
+std::unique_ptr<Metric> make_metric_KastorTraschen() { return std::make_unique<KastorTraschen>(); }
+
+}  // namespace geovis

@@ -1,0 +1,214 @@
+// Kerr black hole in Boyer-Lindquist coordinates (t, r, θ, φ), G = c = 1, r_s = 2M:
+//   ds² = −(1 − r_s r/Σ) dt² − (2 r_s a r sin²θ/Σ) dt dφ + (Σ/Δ) dr² + Σ dθ² + (A/Σ) sin²θ dφ²,
+//   Σ = r² + a² cos²θ,  Δ = r² − r_s r + a²,  A = (r² + a²) Σ + r_s a² r sin²θ
+//   (Boyer & Lindquist, J. Math. Phys. 8 (1967) 265; Müller & Grave, Catalogue of Spacetimes,
+//   arXiv:0904.4184, section "Kerr"). A·sin²θ/Σ is the usual g_φφ = (r² + a² + r_s a² r sin²θ/Σ) sin²θ.
+//
+// Natural tetrads (Motion4D m4dMetricKerrBL::localToCoord; Catalogue "Kerr", local tetrads):
+//   default = lnrf: locally non-rotating frame (Bardeen, Press & Teukolsky, ApJ 178 (1972) 347),
+//     e_(0) = √(A/(ΣΔ)) (∂_t + ω ∂_φ), ω = r_s a r / A,  e_(1) = √(Δ/Σ) ∂_r,  e_(2) = ∂_θ/√Σ,
+//     e_(3) = √(Σ/A) ∂_φ / sinθ.
+//   static: e_(0) = ∂_t/w, w = √(1 − r_s r/Σ) (only outside the ergosphere),
+//     e_(3) = r_s a r sinθ/(w √Δ Σ) ∂_t − w/(√Δ sinθ) ∂_φ. NOTE: Motion4D's static e_(3) points
+//     along −∂_φ (its e33 = −w/(√Δ sinθ)); we keep that convention so that GeoViS scenes with
+//     `localframe 1` see the same picture.
+// Pseudo-Cartesian coordinates: plain spherical-to-Cartesian of (r, θ, φ) (Motion4D's KerrBL does
+// not override transToPseudoCart), i.e. the default for CoordType::Spherical.
+#include <cmath>
+#include <sstream>
+
+#include "spacetime/metric_crtp.h"
+
+namespace geovis {
+
+namespace {
+
+/// The twenty independent non-zero Christoffel symbols of Kerr in BL coordinates, named
+/// <upper>_<lower><lower> (e.g. r_tt = Γ^r_{tt}). Formulas: Catalogue of Spacetimes, "Kerr"
+/// (the same expressions as Motion4D's hand-written MetricKerrBL::calcDerivs).
+struct KerrGamma {
+  double t_tr, t_tth, t_rph, t_thph;                  // Γ^t
+  double r_tt, r_tph, r_rr, r_rth, r_thth, r_phph;    // Γ^r
+  double th_tt, th_tph, th_rr, th_rth, th_thth, th_phph;  // Γ^θ
+  double ph_tr, ph_tth, ph_rph, ph_thph;              // Γ^φ
+};
+
+inline KerrGamma kerr_gamma(double rs, double a, double r, double theta) {
+  const double st = std::sin(theta), ct = std::cos(theta);
+  const double st2 = st * st, ct2 = ct * ct, stct = st * ct;
+  const double r2 = r * r, a2 = a * a;
+  const double sigma = r2 + a2 * ct2;         // Σ
+  const double delta = r2 - rs * r + a2;      // Δ
+  const double r2a2 = r2 + a2;
+  const double A = r2a2 * sigma + rs * r * a2 * st2;
+  const double w = r2 - a2 * ct2;             // r² − a² cos²θ, a recurring factor
+  const double is = 1.0 / sigma, is2 = is * is, is3 = is2 * is;
+  const double id = 1.0 / delta;
+  const double cot = ct / st;
+  KerrGamma g;
+  g.r_tt = 0.5 * rs * delta * w * is3;
+  g.t_tr = 0.5 * rs * r2a2 * w * is2 * id;
+  g.t_tth = -rs * r * a2 * stct * is2;
+  g.r_tph = -0.5 * delta * rs * a * st2 * w * is3;
+  g.r_rr = 0.5 * (2.0 * r * a2 * st2 - rs * w) * is * id;
+  g.r_rth = -a2 * stct * is;
+  g.t_rph = 0.5 * rs * a * st2 * (a2 * ct2 * (a2 - r2) - r2 * (a2 + 3.0 * r2)) * is2 * id;
+  g.ph_rph = 0.5 * (2.0 * r * sigma * sigma + rs * (a2 * a2 * st2 * ct2 - r2 * (sigma + r2a2))) * is2 * id;
+  g.ph_thph = cot * (1.0 + rs * a2 * r * st2 * is2);
+  g.r_phph = 0.5 * delta * st2 * (-2.0 * r * sigma * sigma + rs * a2 * st2 * w) * is3;
+  g.th_phph = -stct * (A * sigma + r2a2 * rs * a2 * r * st2) * is3;
+  g.th_tt = -rs * r * a2 * stct * is3;
+  g.ph_tr = 0.5 * rs * a * w * is2 * id;
+  g.ph_tth = -rs * r * a * cot * is2;
+  g.th_tph = rs * r * a * r2a2 * stct * is3;
+  g.th_rr = a2 * stct * is * id;
+  g.th_rth = r * is;
+  g.r_thth = -r * delta * is;
+  g.th_thth = -a2 * stct * is;
+  g.t_thph = rs * r * a2 * a * st2 * stct * is2;
+  return g;
+}
+
+}  // namespace
+
+class KerrBL final : public MetricCRTP<KerrBL> {
+ public:
+  KerrBL()
+      : MetricCRTP({"KerrBL",
+                    {"t", "r", "theta", "phi"},
+                    CoordType::Spherical,
+                    {{"angmom", 0.5, -1e300, 1e300, false, false,
+                      "specific angular momentum a = J/M of the black hole, |a| <= mass"},
+                     {"mass", 1.0, 0.0, 1e300, false, false, "mass M of the black hole (r_s = 2M)"}},
+                    {TetradKind::Default, TetradKind::Static, TetradKind::LNRF},
+                    "Kerr black hole in Boyer-Lindquist coordinates (Catalogue of Spacetimes, Kerr)"}) {
+    on_params_changed();
+  }
+
+  template <class T>
+  void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
+    using std::cos;
+    using std::sin;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+    const T& r = x[1];
+    const T st = sin(x[2]), ct = cos(x[2]);
+    const T st2 = st * st;
+    const T sigma = r * r + a2_ * (ct * ct);
+    const T delta = r * r - rs_ * r + a2_;
+    g[0][0] = -(1.0 - rs_ * r / sigma);
+    g[0][3] = g[3][0] = -rs_ * a_ * r * st2 / sigma;
+    g[1][1] = sigma / delta;
+    g[2][2] = sigma;
+    g[3][3] = (r * r + a2_ + rs_ * a2_ * r * st2 / sigma) * st2;
+  }
+
+  void christoffel_closed(const Vec4& x, Christoffel& G) const {
+    G = Christoffel{};
+    const KerrGamma k = kerr_gamma(rs_, a_, x[1], x[2]);
+    auto set = [&G](int mu, int a, int b, double v) { G.G[mu][a][b] = G.G[mu][b][a] = v; };
+    set(0, 0, 1, k.t_tr);
+    set(0, 0, 2, k.t_tth);
+    set(0, 1, 3, k.t_rph);
+    set(0, 2, 3, k.t_thph);
+    set(1, 0, 0, k.r_tt);
+    set(1, 0, 3, k.r_tph);
+    set(1, 1, 1, k.r_rr);
+    set(1, 1, 2, k.r_rth);
+    set(1, 2, 2, k.r_thth);
+    set(1, 3, 3, k.r_phph);
+    set(2, 0, 0, k.th_tt);
+    set(2, 0, 3, k.th_tph);
+    set(2, 1, 1, k.th_rr);
+    set(2, 1, 2, k.th_rth);
+    set(2, 2, 2, k.th_thth);
+    set(2, 3, 3, k.th_phph);
+    set(3, 0, 1, k.ph_tr);
+    set(3, 0, 2, k.ph_tth);
+    set(3, 1, 3, k.ph_rph);
+    set(3, 2, 3, k.ph_thph);
+  }
+
+  /// a^μ = −Γ^μ_{ab} k^a k^b written out over the twenty non-zero symbols (hot path of every
+  /// Kerr ray; no 4x4x4 contraction).
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& acc) const {
+    const KerrGamma g = kerr_gamma(rs_, a_, x[1], x[2]);
+    const double kt = k[0], kr = k[1], kth = k[2], kph = k[3];
+    acc[0] = -2.0 * (g.t_tr * kt * kr + g.t_tth * kt * kth + g.t_rph * kr * kph + g.t_thph * kth * kph);
+    acc[1] = -(g.r_tt * kt * kt + 2.0 * g.r_tph * kt * kph + g.r_rr * kr * kr + 2.0 * g.r_rth * kr * kth +
+               g.r_thth * kth * kth + g.r_phph * kph * kph);
+    acc[2] = -(g.th_tt * kt * kt + 2.0 * g.th_tph * kt * kph + g.th_rr * kr * kr + 2.0 * g.th_rth * kr * kth +
+               g.th_thth * kth * kth + g.th_phph * kph * kph);
+    acc[3] = -2.0 * (g.ph_tr * kt * kr + g.ph_tth * kt * kth + g.ph_rph * kr * kph + g.ph_thph * kth * kph);
+  }
+
+  /// Outside the outer horizon r_+ = M + √(M² − a²) (with Motion4D's margin 1e-6 r_+) and off the
+  /// polar axis, where BL coordinates are singular.
+  bool is_valid(const Vec4& x) const override {
+    return x[1] > r_break_ && std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) &&
+           std::isfinite(x[3]) && std::sin(x[2]) != 0.0;
+  }
+
+  Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
+    require_tetrad_kind(kind);
+    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double sigma = r * r + a2_ * ct * ct;
+    const double delta = r * r - rs_ * r + a2_;
+    if (!(r > r_plus_) || !(delta > 0.0)) {
+      std::ostringstream os;
+      os << "KerrBL: no " << tetrad_kind_name(kind) << " observer at r = " << r
+         << " (inside the outer horizon r+ = " << r_plus_ << ")";
+      throw Error(os.str());
+    }
+    if (st == 0.0) throw Error("KerrBL: natural tetrads are singular on the polar axis (sin(theta) = 0)");
+    Tetrad e{};
+    e[1][1] = std::sqrt(delta / sigma);
+    e[2][2] = 1.0 / std::sqrt(sigma);
+    if (kind == TetradKind::Static) {
+      const double w2 = 1.0 - rs_ * r / sigma;  // −g_tt
+      if (!(w2 > 0.0)) {
+        std::ostringstream os;
+        os << "KerrBL: no static observer at r = " << r << ", theta = " << x[2]
+           << ": inside the ergosphere (r_ergo = " << mass_ + std::sqrt(mass_ * mass_ - a2_ * ct * ct)
+           << "); use the lnrf (default) frame";
+        throw Error(os.str());
+      }
+      const double w = std::sqrt(w2), sd = std::sqrt(delta);
+      e[0][0] = 1.0 / w;
+      e[3][0] = rs_ * a_ * r * st / (w * sd * sigma);
+      e[3][3] = -w / (sd * st);  // Motion4D convention: e_(3) along −∂_φ (see file comment)
+      return e;
+    }
+    // Default and LNRF.
+    const double A = (r * r + a2_) * sigma + rs_ * a2_ * r * st * st;
+    const double omega = rs_ * a_ * r / A;
+    const double gamma = std::sqrt(A / (sigma * delta));
+    e[0][0] = gamma;
+    e[0][3] = gamma * omega;
+    e[3][3] = std::sqrt(sigma / A) / st;
+    return e;
+  }
+
+ protected:
+  void on_params_changed() override {
+    a_ = p(0);
+    mass_ = p(1);
+    if (std::fabs(a_) > mass_) {
+      std::ostringstream os;
+      os << "metric KerrBL: |angmom| = " << std::fabs(a_) << " must not exceed mass = " << mass_
+         << " (|a| <= M, otherwise there is no horizon: naked singularity)";
+      throw Error(os.str());
+    }
+    rs_ = 2.0 * mass_;
+    a2_ = a_ * a_;
+    r_plus_ = mass_ + std::sqrt(mass_ * mass_ - a2_);
+    r_break_ = (1.0 + 1e-6) * r_plus_;
+  }
+
+ private:
+  double a_ = 0.5, mass_ = 1.0, rs_ = 2.0, a2_ = 0.25, r_plus_ = 0, r_break_ = 0;
+};
+
+std::unique_ptr<Metric> make_metric_KerrBL() { return std::make_unique<KerrBL>(); }
+
+}  // namespace geovis

@@ -1,0 +1,111 @@
+// Morris-Thorne (Ellis) wormhole in proper radial length l, coordinates (t, l, θ, φ):
+//   ds² = −dt² + dl² + (b0² + l²)(dθ² + sin²θ dφ²)
+// (Morris & Thorne, Am. J. Phys. 56 (1988) 395, eq. (55) with the shape b(r) = b0²/r; Müller &
+// Grave, Catalogue of Spacetimes, arXiv:0904.4184, section "Morris-Thorne"). The throat of radius
+// b0 is at l = 0; l > 0 and l < 0 are the two asymptotically flat universes.
+//
+// Natural tetrad (default = static, Catalogue "Morris-Thorne"): e_(0) = ∂_t, e_(1) = ∂_l,
+// e_(2) = ∂_θ/r, e_(3) = ∂_φ/(r sinθ) with r = √(b0² + l²).
+// Pseudo-Cartesian coordinates (Motion4D MetricMorrisThorne::transToPseudoCart): the plain
+// spherical-to-Cartesian map applied to the *signed* l, i.e. (l sinθ cosφ, l sinθ sinφ, l cosθ);
+// chart 0 for l > 0 and chart 1 for l <= 0 (the second universe appears point-reflected, which
+// GeoViS scenes compensate in their texture transforms, e.g. morristhorne.scm).
+#include <algorithm>
+#include <cmath>
+
+#include "spacetime/metric_crtp.h"
+
+namespace geovis {
+
+class MorrisThorne final : public MetricCRTP<MorrisThorne> {
+ public:
+  MorrisThorne()
+      : MetricCRTP({"MorrisThorne",
+                    {"t", "l", "theta", "phi"},
+                    CoordType::Spherical,
+                    {{"b0", 1.0, 0.0, 1e300, true, false, "throat radius b0 > 0 of the wormhole"}},
+                    {TetradKind::Default, TetradKind::Static},
+                    "Morris-Thorne wormhole, proper radial length l (Catalogue of Spacetimes, Morris-Thorne)"}) {
+    on_params_changed();
+  }
+
+  template <class T>
+  void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
+    using std::sin;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+    const T r2 = b02_ + x[1] * x[1];
+    const T st = sin(x[2]);
+    g[0][0] = T(-1.0);
+    g[1][1] = T(1.0);
+    g[2][2] = r2;
+    g[3][3] = r2 * st * st;
+  }
+
+  /// Catalogue of Spacetimes, "Morris-Thorne": Γ^l_θθ = −l, Γ^l_φφ = −l sin²θ,
+  /// Γ^θ_lθ = Γ^φ_lφ = l/(b0² + l²), Γ^θ_φφ = −sinθ cosθ, Γ^φ_θφ = cotθ.
+  void christoffel_closed(const Vec4& x, Christoffel& G) const {
+    G = Christoffel{};
+    const double l = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double lr2 = l / (b02_ + l * l);
+    G.G[1][2][2] = -l;
+    G.G[1][3][3] = -l * st * st;
+    G.G[2][1][2] = G.G[2][2][1] = lr2;
+    G.G[2][3][3] = -st * ct;
+    G.G[3][1][3] = G.G[3][3][1] = lr2;
+    G.G[3][2][3] = G.G[3][3][2] = ct / st;
+  }
+
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
+    const double l = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double lr2 = l / (b02_ + l * l);
+    a[0] = 0.0;
+    a[1] = l * (k[2] * k[2] + st * st * k[3] * k[3]);
+    a[2] = -2.0 * lr2 * k[1] * k[2] + st * ct * k[3] * k[3];
+    a[3] = -2.0 * lr2 * k[1] * k[3] - 2.0 * ct / st * k[2] * k[3];
+  }
+
+  /// The spacetime is regular everywhere; only the polar axis is a coordinate singularity.
+  bool is_valid(const Vec4& x) const override {
+    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
+           std::sin(x[2]) != 0.0;
+  }
+
+  Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
+    require_tetrad_kind(kind);
+    const double st = std::sin(x[2]);
+    if (st == 0.0) throw Error("MorrisThorne: the natural tetrad is singular on the polar axis (sin(theta) = 0)");
+    const double r = std::sqrt(b02_ + x[1] * x[1]);
+    Tetrad e{};
+    e[0][0] = 1.0;
+    e[1][1] = 1.0;
+    e[2][2] = 1.0 / r;
+    e[3][3] = 1.0 / (r * st);
+    return e;
+  }
+
+  int to_pseudo_cartesian(const Vec4& x, Vec3& p) const override {
+    const double l = x[1], st = std::sin(x[2]);
+    p = {l * st * std::cos(x[3]), l * st * std::sin(x[3]), l * std::cos(x[2])};
+    return l > 0.0 ? 0 : 1;
+  }
+
+  /// Inverse of to_pseudo_cartesian: chart 0 gives l = +|p|, chart 1 gives l = −|p| with the
+  /// angles of −p (so that l·n(θ,φ) = p again).
+  Vec4 from_pseudo_cartesian(double t, const Vec3& p, int chart) const override {
+    const double s = chart == 0 ? 1.0 : -1.0;
+    const double d = norm(p);
+    const double th = d > 0 ? std::acos(std::clamp(s * p.z / d, -1.0, 1.0)) : 0.0;
+    return {{t, s * d, th, std::atan2(s * p.y, s * p.x)}};
+  }
+
+ protected:
+  void on_params_changed() override { b02_ = p(0) * p(0); }
+
+ private:
+  double b02_ = 1.0;
+};
+
+std::unique_ptr<Metric> make_metric_MorrisThorne() { return std::make_unique<MorrisThorne>(); }
+
+}  // namespace geovis
