@@ -47,32 +47,38 @@ double Metric::param(std::string_view name) const {
               did_you_mean(name, names) + " (parameters: " + (names.empty() ? "none" : join(names)) + ")");
 }
 
-void Metric::set_param(std::string_view name, double value) {
-  const std::string n = to_lower(name);
-  for (size_t i = 0; i < info_.params.size(); ++i) {
+void Metric::set_param(std::string_view name, double value) { set_params({{std::string(name), value}}); }
+
+void Metric::set_params(const std::vector<std::pair<std::string, double>>& values) {
+  const std::vector<double> old = values_;
+  for (const auto& [name, value] : values) {
+    const std::string n = to_lower(name);
+    size_t i = 0;
+    while (i < info_.params.size() && info_.params[i].name != n) ++i;
+    if (i == info_.params.size()) {
+      values_ = old;
+      param(name);  // throws the unknown-name error
+    }
     const MetricParam& spec = info_.params[i];
-    if (spec.name != n) continue;
     const bool lo_ok = spec.min_open ? value > spec.min : value >= spec.min;
     const bool hi_ok = spec.max_open ? value < spec.max : value <= spec.max;
     if (!std::isfinite(value) || !lo_ok || !hi_ok) {
+      values_ = old;
       std::ostringstream os;
       os << "metric " << info_.name << ": parameter " << spec.name << " = " << value
          << " is out of range; expected a value in " << (spec.min_open ? "(" : "[") << spec.min << ", "
          << spec.max << (spec.max_open ? ")" : "]") << " (" << spec.doc << ")";
       throw Error(os.str());
     }
-    const double old = values_[i];
     values_[i] = value;
-    try {
-      on_params_changed();
-    } catch (...) {
-      values_[i] = old;
-      on_params_changed();
-      throw;
-    }
-    return;
   }
-  param(name);  // throws the unknown-name error
+  try {
+    on_params_changed();
+  } catch (...) {
+    values_ = old;
+    on_params_changed();
+    throw;
+  }
 }
 
 bool Metric::supports_tetrad(TetradKind kind) const {

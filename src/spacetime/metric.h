@@ -73,6 +73,9 @@ class Metric {
   /// Sets one parameter; throws Error (listing valid names / the allowed range) on a bad name or
   /// value, and re-checks cross-parameter conditions (e.g. |a| <= M).
   void set_param(std::string_view name, double value);
+  /// Sets several parameters at once and checks cross-parameter conditions only after all are
+  /// set (so a scene may give `angmom` before `mass`). On error nothing changes.
+  void set_params(const std::vector<std::pair<std::string, double>>& values);
   const std::vector<double>& param_values() const { return values_; }
 
   // ---- geometry ----
