@@ -6,7 +6,25 @@
 // spacetime/metrics/<file>.cpp.
 #define GEOVIS_METRICS(X)                       \
   X(Minkowski, "Minkowski")                     \
-  X(Schwarzschild, "Schwarzschild")
+  X(Schwarzschild, "Schwarzschild")             \
+  X(KerrBL, "KerrBL")                           \
+  X(MorrisThorne, "MorrisThorne")               \
+  X(TeoSimpleWH, "TeoSimpleWH")                 \
+  X(KastorTraschen, "KastorTraschen")           \
+  X(AlcubierreWarpSimple, "AlcubierreWarpSimple") \
+  X(EinsteinRosenWaveWWB, "EinsteinRosenWaveWWB") \
+  X(RotDihole, "RotDihole")                     \
+  X(DeSitterUniv, "DeSitterUniv")               \
+  X(SchwarzschildCart, "SchwarzschildCart")     \
+  X(SchwarzschildIsotropic, "SchwarzschildIsotropic") \
+  X(EddFinkIn, "EddFinkIn")                     \
+  X(PainleveGullstrand, "PainleveGullstrand")   \
+  X(ReissnerNordstrom, "ReissnerNordstrom")     \
+  X(Kottler, "Kottler")                         \
+  X(BarriolaVilenkin, "BarriolaVilenkin")       \
+  X(JanisNewmanWinicour, "JanisNewmanWinicour") \
+  X(Ernst, "Ernst")                             \
+  X(TaubNUT, "TaubNUT")
 
 namespace geovis {
 
@@ -43,7 +61,7 @@ std::unique_ptr<Metric> make_metric(const std::string& name) {
 std::unique_ptr<Metric> make_metric(const std::string& name,
                                     const std::vector<std::pair<std::string, double>>& params) {
   auto m = make_metric(name);
-  for (const auto& [k, v] : params) m->set_param(k, v);
+  m->set_params(params);
   return m;
 }
 

@@ -1,0 +1,83 @@
+// Barriola-Vilenkin spacetime (global monopole) in (t, r, θ, φ):
+//   ds² = −dt² + dr² + k² r² (dθ² + sin²θ dφ²)
+// Müller & Grave, Catalogue of Spacetimes (arXiv:0904.4184), section "Barriola-Vilenkin monopole";
+// M. Barriola, A. Vilenkin, Phys. Rev. Lett. 63 (1989) 341, with k² = 1 − 8πGη².
+// Space is a cone: on the equator dr² + k² r² dφ² is flat in the angle ψ = kφ.
+#include <cmath>
+#include <string>
+
+#include "spacetime/metric_crtp.h"
+#include "spacetime/metrics/diagonal_metric.h"
+
+namespace geovis {
+
+class BarriolaVilenkin final : public MetricCRTP<BarriolaVilenkin> {
+ public:
+  BarriolaVilenkin()
+      : MetricCRTP({"BarriolaVilenkin",
+                    {"t", "r", "theta", "phi"},
+                    CoordType::Spherical,
+                    {{"k", 0.8, 0.0, 1.0, true, false,
+                      "solid-angle factor k in (0, 1] (k^2 = 1 - 8 pi G eta^2; k = 1 is flat space)"}},
+                    {TetradKind::Default, TetradKind::Static},
+                    "global monopole (Barriola-Vilenkin), Catalogue of Spacetimes"}) {
+    on_params_changed();
+  }
+
+  template <class T>
+  void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
+    using std::sin;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+    const T& r = x[1];
+    const T st = sin(x[2]);
+    g[0][0] = T(-1.0);
+    g[1][1] = T(1.0);
+    g[2][2] = k2_ * r * r;
+    g[3][3] = k2_ * r * r * st * st;
+  }
+
+  /// A = B = 1, C = k² r², C' = 2k² r.
+  void diagonal(const Vec4& x, DiagonalMetric& d) const {
+    const double r = x[1];
+    spherical_diagonal(1.0, 0.0, 1.0, 0.0, k2_ * r * r, 2.0 * k2_ * r, x[2], d);
+  }
+
+  void christoffel_closed(const Vec4& x, Christoffel& G) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_christoffel(d, G);
+  }
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_accel(d, k, a);
+  }
+
+  /// r > 0 (the conical singularity at the origin) and off the polar axis.
+  bool is_valid(const Vec4& x) const override {
+    return x[1] > 1e-12 && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
+           std::sin(x[2]) != 0.0;
+  }
+
+  Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
+    require_tetrad_kind(kind);
+    DiagonalMetric d;
+    Tetrad e;
+    if (x[1] > 0.0) diagonal(x, d);
+    if (!(x[1] > 0.0) || !diagonal_static_tetrad(d.h, e))
+      throw Error("BarriolaVilenkin: no local tetrad at r = " + std::to_string(x[1]) +
+                  " or on the polar axis (the chart needs r > 0, sin(theta) != 0)");
+    return e;
+  }
+
+ protected:
+  void on_params_changed() override { k2_ = p(0) * p(0); }
+
+ private:
+  double k2_ = 0.64;
+};
+
+std::unique_ptr<Metric> make_metric_BarriolaVilenkin() { return std::make_unique<BarriolaVilenkin>(); }
+
+}  // namespace geovis

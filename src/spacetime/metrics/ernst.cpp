@@ -1,0 +1,110 @@
+// Ernst spacetime (Schwarzschild black hole immersed in a Melvin magnetic universe) in
+// (t, r, θ, φ), G = c = 1:
+//   ds² = Λ² [−f dt² + dr²/f + r² dθ²] + r² sin²θ / Λ² dφ²,   f = 1 − 2M/r,  Λ = 1 + B² r² sin²θ
+// Müller & Grave, Catalogue of Spacetimes (arXiv:0904.4184), section "Ernst spacetime";
+// F. J. Ernst, J. Math. Phys. 17 (1976) 54. B is the magnetic field strength; only B² enters.
+#include <cmath>
+#include <string>
+
+#include "spacetime/metric_crtp.h"
+#include "spacetime/metrics/diagonal_metric.h"
+
+namespace geovis {
+
+class Ernst final : public MetricCRTP<Ernst> {
+ public:
+  Ernst()
+      : MetricCRTP({"Ernst",
+                    {"t", "r", "theta", "phi"},
+                    CoordType::Spherical,
+                    {{"b", 0.1, -1e300, 1e300, false, false,
+                      "magnetic field strength B (any real; only B^2 enters the metric)"},
+                     {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0 of the black hole (r_s = 2M)"}},
+                    {TetradKind::Default, TetradKind::Static},
+                    "black hole in a Melvin magnetic universe (Ernst), Catalogue of Spacetimes"}) {
+    on_params_changed();
+  }
+
+  template <class T>
+  void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
+    using std::sin;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+    const T& r = x[1];
+    const T st = sin(x[2]);
+    const T f = 1.0 - rs_ / r;
+    const T L = 1.0 + B2_ * r * r * st * st;
+    const T L2 = L * L;
+    g[0][0] = -L2 * f;
+    g[1][1] = L2 / f;
+    g[2][2] = L2 * r * r;
+    g[3][3] = r * r * st * st / L2;
+  }
+
+  /// g_μμ and their r- and θ-derivatives, with Λ_r = 2B² r sin²θ, Λ_θ = 2B² r² sinθ cosθ,
+  /// f_r = 2M/r² (product and quotient rule on the line element above).
+  void diagonal(const Vec4& x, DiagonalMetric& d) const {
+    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double f = 1.0 - rs_ / r, df = rs_ / (r * r);
+    const double L = 1.0 + B2_ * r * r * st * st;
+    const double Lr = 2.0 * B2_ * r * st * st, Lth = 2.0 * B2_ * r * r * st * ct;
+    const double L2 = L * L;
+    d = DiagonalMetric{};
+    d.h[0] = -L2 * f;
+    d.h[1] = L2 / f;
+    d.h[2] = L2 * r * r;
+    d.h[3] = r * r * st * st / L2;
+    // ∂_r
+    d.dh[1][0] = -(2.0 * L * Lr * f + L2 * df);
+    d.dh[1][1] = 2.0 * L * Lr / f - L2 * df / (f * f);
+    d.dh[1][2] = 2.0 * L * Lr * r * r + 2.0 * L2 * r;
+    d.dh[1][3] = 2.0 * r * st * st / L2 - 2.0 * r * r * st * st * Lr / (L2 * L);
+    // ∂_θ
+    d.dh[2][0] = -2.0 * L * Lth * f;
+    d.dh[2][1] = 2.0 * L * Lth / f;
+    d.dh[2][2] = 2.0 * L * Lth * r * r;
+    d.dh[2][3] = 2.0 * r * r * st * ct / L2 - 2.0 * r * r * st * st * Lth / (L2 * L);
+  }
+
+  void christoffel_closed(const Vec4& x, Christoffel& G) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_christoffel(d, G);
+  }
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_accel(d, k, a);
+  }
+
+  /// Outside the horizon r = 2M and off the polar axis.
+  bool is_valid(const Vec4& x) const override {
+    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
+           std::sin(x[2]) != 0.0;
+  }
+
+  Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
+    require_tetrad_kind(kind);
+    DiagonalMetric d;
+    Tetrad e;
+    if (x[1] > rs_ && x[1] > 0.0) diagonal(x, d);
+    if (!(x[1] > rs_ && x[1] > 0.0) || !diagonal_static_tetrad(d.h, e))
+      throw Error("Ernst: no static observer at r = " + std::to_string(x[1]) +
+                  " (needs r > 2M = " + std::to_string(rs_) + " and sin(theta) != 0)");
+    return e;
+  }
+
+ protected:
+  void on_params_changed() override {
+    B2_ = p(0) * p(0);
+    rs_ = 2.0 * p(1);
+    r_min_ = rs_ > 0.0 ? rs_ * (1.0 + 1e-8) : 1e-300;
+  }
+
+ private:
+  double B2_ = 0.01, rs_ = 2.0, r_min_ = 2.0;
+};
+
+std::unique_ptr<Metric> make_metric_Ernst() { return std::make_unique<Ernst>(); }
+
+}  // namespace geovis

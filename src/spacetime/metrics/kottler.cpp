@@ -1,0 +1,103 @@
+// Kottler (Schwarzschild-de Sitter / -anti-de Sitter) spacetime in (t, r, θ, φ), G = c = 1:
+//   ds² = −f dt² + dr²/f + r² (dθ² + sin²θ dφ²),   f(r) = 1 − 2M/r − Λ r²/3
+// Müller & Grave, Catalogue of Spacetimes (arXiv:0904.4184), section "Kottler".
+// The static region is where f > 0: r ∈ (r_bh, r_cosmo) for Λ > 0 (requires 9ΛM² < 1),
+// r > r_bh for Λ ≤ 0. Rays stop at both horizons (the t-coordinate is singular there).
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "spacetime/metric_crtp.h"
+#include "spacetime/metrics/diagonal_metric.h"
+
+namespace geovis {
+
+class Kottler final : public MetricCRTP<Kottler> {
+ public:
+  Kottler()
+      : MetricCRTP({"Kottler",
+                    {"t", "r", "theta", "phi"},
+                    CoordType::Spherical,
+                    {{"lambda", 0.05, -1e300, 1e300, false, false,
+                      "cosmological constant Lambda (any sign; for Lambda > 0 a static region needs "
+                      "9 Lambda M^2 < 1)"},
+                     {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0"}},
+                    {TetradKind::Default, TetradKind::Static},
+                    "Schwarzschild-(anti-)de Sitter (Kottler), Catalogue of Spacetimes"}) {
+    on_params_changed();
+  }
+
+  template <class T>
+  void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
+    using std::sin;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+    const T& r = x[1];
+    const T f = 1.0 - 2.0 * M_ / r - (L_ / 3.0) * r * r;
+    const T st = sin(x[2]);
+    g[0][0] = -f;
+    g[1][1] = 1.0 / f;
+    g[2][2] = r * r;
+    g[3][3] = r * r * st * st;
+  }
+
+  double f_of(double r) const { return 1.0 - 2.0 * M_ / r - (L_ / 3.0) * r * r; }
+
+  /// g_μμ and ∂_r g_μμ: f' = 2M/r² − 2Λr/3, (1/f)' = −f'/f².
+  void diagonal(const Vec4& x, DiagonalMetric& d) const {
+    const double r = x[1];
+    const double f = f_of(r);
+    const double df = 2.0 * M_ / (r * r) - 2.0 * L_ * r / 3.0;
+    spherical_diagonal(f, df, 1.0 / f, -df / (f * f), r * r, 2.0 * r, x[2], d);
+  }
+
+  void christoffel_closed(const Vec4& x, Christoffel& G) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_christoffel(d, G);
+  }
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_accel(d, k, a);
+  }
+
+  /// Inside the static region f > 0 (between the horizons), r > 0, off the polar axis. The
+  /// margin 1e-8 on f corresponds to Schwarzschild's r > r_s (1 + 1e-8).
+  bool is_valid(const Vec4& x) const override {
+    return x[1] > 0.0 && f_of(x[1]) > 1e-8 && std::isfinite(x[0]) && std::isfinite(x[2]) &&
+           std::isfinite(x[3]) && std::sin(x[2]) != 0.0;
+  }
+
+  Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
+    require_tetrad_kind(kind);
+    DiagonalMetric d;
+    Tetrad e;
+    if (x[1] > 0.0) diagonal(x, d);
+    if (!(x[1] > 0.0) || !diagonal_static_tetrad(d.h, e))
+      throw Error("Kottler: no static observer at r = " + std::to_string(x[1]) +
+                  " (static observers exist only where 1 - 2M/r - Lambda r^2/3 > 0)");
+    return e;
+  }
+
+ protected:
+  void on_params_changed() override {
+    L_ = p(0);
+    M_ = p(1);
+    // For Λ > 0, f has positive values (a static region) only if 9ΛM² < 1 (Catalogue of
+    // Spacetimes, Kottler: the horizons are the real roots of r − 2M − Λr³/3 = 0).
+    if (L_ > 0.0 && 9.0 * L_ * M_ * M_ >= 1.0) {
+      std::ostringstream os;
+      os << "metric Kottler: parameters mass = " << M_ << ", lambda = " << L_
+         << " leave no static region; expected 9 * lambda * mass^2 < 1 (here " << 9.0 * L_ * M_ * M_ << ")";
+      throw Error(os.str());
+    }
+  }
+
+ private:
+  double M_ = 1.0, L_ = 0.05;
+};
+
+std::unique_ptr<Metric> make_metric_Kottler() { return std::make_unique<Kottler>(); }
+
+}  // namespace geovis

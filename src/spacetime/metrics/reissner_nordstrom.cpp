@@ -1,0 +1,98 @@
+// Reissner-Nordström spacetime (charged, non-rotating black hole) in Schwarzschild-like
+// coordinates (t, r, θ, φ), geometrized units G = c = 1, Gaussian charge:
+//   ds² = −f dt² + dr²/f + r² (dθ² + sin²θ dφ²),   f(r) = 1 − 2M/r + Q²/r²
+// Müller & Grave, Catalogue of Spacetimes (arXiv:0904.4184), section "Reissner-Nordström".
+// Horizons r± = M ± sqrt(M² − Q²) for |Q| ≤ M; for |Q| > M the singularity r = 0 is naked.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "spacetime/metric_crtp.h"
+#include "spacetime/metrics/diagonal_metric.h"
+
+namespace geovis {
+
+class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
+ public:
+  ReissnerNordstrom()
+      : MetricCRTP({"ReissnerNordstrom",
+                    {"t", "r", "theta", "phi"},
+                    CoordType::Spherical,
+                    {{"charge", 0.1, -1e300, 1e300, false, false,
+                      "electric charge Q (geometrized units); |Q| <= M: black hole with horizon "
+                      "r+ = M + sqrt(M^2 - Q^2), |Q| > M: naked singularity at r = 0"},
+                     {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0"}},
+                    {TetradKind::Default, TetradKind::Static},
+                    "charged black hole (Reissner-Nordstrom), Catalogue of Spacetimes"}) {
+    on_params_changed();
+  }
+
+  template <class T>
+  void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
+    using std::sin;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+    const T& r = x[1];
+    const T f = 1.0 - 2.0 * M_ / r + Q2_ / (r * r);
+    const T st = sin(x[2]);
+    g[0][0] = -f;
+    g[1][1] = 1.0 / f;
+    g[2][2] = r * r;
+    g[3][3] = r * r * st * st;
+  }
+
+  /// g_μμ and ∂_r g_μμ: f' = 2M/r² − 2Q²/r³, (1/f)' = −f'/f².
+  void diagonal(const Vec4& x, DiagonalMetric& d) const {
+    const double r = x[1];
+    const double f = 1.0 - 2.0 * M_ / r + Q2_ / (r * r);
+    const double df = 2.0 * M_ / (r * r) - 2.0 * Q2_ / (r * r * r);
+    spherical_diagonal(f, df, 1.0 / f, -df / (f * f), r * r, 2.0 * r, x[2], d);
+  }
+
+  void christoffel_closed(const Vec4& x, Christoffel& G) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_christoffel(d, G);
+  }
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_accel(d, k, a);
+  }
+
+  /// Outside the outer horizon (or r > 0 for a naked singularity) and off the polar axis.
+  bool is_valid(const Vec4& x) const override {
+    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
+           std::sin(x[2]) != 0.0;
+  }
+
+  Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
+    require_tetrad_kind(kind);
+    DiagonalMetric d;
+    diagonal(x, d);
+    Tetrad e;
+    if (!(x[1] > r_plus_) || !diagonal_static_tetrad(d.h, e))
+      throw Error("ReissnerNordstrom: no static observer at r = " + std::to_string(x[1]) +
+                  " (static observers exist only outside the horizon r+ = " + std::to_string(r_plus_) + ")");
+    return e;
+  }
+
+ protected:
+  void on_params_changed() override {
+    const double Q = p(0);
+    M_ = p(1);
+    Q2_ = Q * Q;
+    // Outer horizon r+ = M + sqrt(M² − Q²) (Catalogue of Spacetimes, Reissner-Nordström);
+    // no horizon when |Q| > M.
+    r_plus_ = Q2_ <= M_ * M_ ? M_ + std::sqrt(M_ * M_ - Q2_) : 0.0;
+    r_min_ = r_plus_ > 0.0 ? r_plus_ * (1.0 + 1e-8) : 1e-8 * std::max(M_, std::sqrt(Q2_));
+    if (!(r_min_ > 0.0)) r_min_ = 1e-300;  // M = Q = 0: Minkowski, only r > 0 required
+  }
+
+ private:
+  double M_ = 1.0, Q2_ = 0.01, r_plus_ = 2.0, r_min_ = 2.0;
+};
+
+std::unique_ptr<Metric> make_metric_ReissnerNordstrom() { return std::make_unique<ReissnerNordstrom>(); }
+
+}  // namespace geovis

@@ -1,0 +1,107 @@
+// Schwarzschild spacetime in isotropic Cartesian coordinates (t, x, y, z), G = c = 1:
+//   ds² = −((1 − ρ_s/ρ)/(1 + ρ_s/ρ))² dt² + (1 + ρ_s/ρ)⁴ (dx² + dy² + dz²),
+//   ρ = sqrt(x² + y² + z²),  ρ_s = M/2
+// Müller & Grave, Catalogue of Spacetimes (arXiv:0904.4184), section "Schwarzschild spacetime /
+// Isotropic coordinates". Schwarzschild radius: r = ρ (1 + ρ_s/ρ)²; the horizon r = 2M is ρ = ρ_s.
+#include <cmath>
+#include <string>
+
+#include "spacetime/metric_crtp.h"
+#include "spacetime/metrics/diagonal_metric.h"
+
+namespace geovis {
+
+class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
+ public:
+  SchwarzschildIsotropic()
+      : MetricCRTP({"SchwarzschildIsotropic",
+                    {"t", "x", "y", "z"},
+                    CoordType::Cartesian,
+                    {{"mass", 1.0, 0.0, 1e300, false, false,
+                      "mass M >= 0 of the black hole (horizon at rho = M/2)"}},
+                    {TetradKind::Default, TetradKind::Static},
+                    "Schwarzschild black hole in isotropic coordinates, Catalogue of Spacetimes"}) {
+    on_params_changed();
+  }
+
+  template <class T>
+  void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
+    using std::sqrt;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+    const T rho = sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    const T alpha = (rho - rho_s_) / (rho + rho_s_);  // (1 − ρ_s/ρ)/(1 + ρ_s/ρ)
+    const T psi = 1.0 + rho_s_ / rho;
+    const T psi2 = psi * psi;
+    g[0][0] = -alpha * alpha;
+    g[1][1] = g[2][2] = g[3][3] = psi2 * psi2;
+  }
+
+  /// ∂_j g_tt = −2α α' n_j with α' = 2ρ_s/(ρ + ρ_s)²; ∂_j g_ii = 4ψ³ ψ' n_j with ψ' = −ρ_s/ρ²,
+  /// n_j = x_j/ρ.
+  void diagonal(const Vec4& x, DiagonalMetric& d) const {
+    const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    const double rp = rho + rho_s_;
+    const double alpha = (rho - rho_s_) / rp;
+    const double dalpha = 2.0 * rho_s_ / (rp * rp);
+    const double psi = 1.0 + rho_s_ / rho;
+    const double psi3 = psi * psi * psi;
+    const double dpsi = -rho_s_ / (rho * rho);
+    const double dtt = -2.0 * alpha * dalpha, dss = 4.0 * psi3 * dpsi;
+    d = DiagonalMetric{};
+    d.h[0] = -alpha * alpha;
+    d.h[1] = d.h[2] = d.h[3] = psi3 * psi;
+    for (int j = 1; j < 4; ++j) {
+      const double n = x[j] / rho;
+      d.dh[j][0] = dtt * n;
+      d.dh[j][1] = d.dh[j][2] = d.dh[j][3] = dss * n;
+    }
+  }
+
+  void christoffel_closed(const Vec4& x, Christoffel& G) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_christoffel(d, G);
+  }
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_accel(d, k, a);
+  }
+
+  /// Outside the horizon ρ = ρ_s (margin 1e-8 as Schwarzschild). The isotropic chart also covers
+  /// the second exterior ρ < ρ_s, which a ray cannot reach without crossing the horizon.
+  bool is_valid(const Vec4& x) const override {
+    const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    return rho > rho_min_ && std::isfinite(x[0]) && std::isfinite(rho);
+  }
+
+  /// Static observer: e_(0) = ∂_t/α, e_(i) = ∂_i/ψ².
+  Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
+    require_tetrad_kind(kind);
+    const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    if (!(rho > rho_s_))
+      throw Error("SchwarzschildIsotropic: no static observer at rho = " + std::to_string(rho) +
+                  " (needs rho > M/2 = " + std::to_string(rho_s_) + ")");
+    DiagonalMetric d;
+    diagonal(x, d);
+    Tetrad e;
+    diagonal_static_tetrad(d.h, e);
+    return e;
+  }
+
+ protected:
+  void on_params_changed() override {
+    rho_s_ = 0.5 * p(0);
+    rho_min_ = rho_s_ > 0.0 ? rho_s_ * (1.0 + 1e-8) : 1e-300;
+  }
+
+ private:
+  double rho_s_ = 0.5, rho_min_ = 0.5;
+};
+
+std::unique_ptr<Metric> make_metric_SchwarzschildIsotropic() {
+  return std::make_unique<SchwarzschildIsotropic>();
+}
+
+}  // namespace geovis
