@@ -31,9 +31,18 @@ int run(int argc, const char* const* argv) {
   std::sort(cmds.begin(), cmds.end(), [](auto& a, auto& b) { return std::strcmp(a.first, b.first) < 0; });
   for (auto& [name, setup] : cmds) setup(app, opts);
   app.require_subcommand(0, 1);
+  app.fallthrough();  // global options may follow the subcommand
 
+  // Without a subcommand, `geovis [OPTIONS] [SCENE]` means `geovis render [OPTIONS] [SCENE]`
+  // (README's first command renders the built-in scene).
   std::vector<std::string> args(argv, argv + argc);
-  if (argc <= 1) args.push_back("render");  // README's first command: the built-in default scene
+  bool has_command = false;
+  for (size_t i = 1; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "-h" || a == "--help" || a == "--version") has_command = true;
+    for (auto& [name, setup] : cmds) has_command = has_command || a == name;
+  }
+  if (!has_command) args.insert(args.begin() + 1, "render");
   std::vector<const char*> cargs;
   for (auto& a : args) cargs.push_back(a.c_str());
   try {
