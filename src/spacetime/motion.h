@@ -32,6 +32,11 @@ class Motion {
   double tau_max() const { return samples().back().tau; }
   /// gvs-print-motion: one line per sample "tau x0 x1 x2 x3 u0 u1 u2 u3 e0^0..e3^3".
   void write(std::ostream& os) const;
+  /// Scene name of the motion type ("Geodesic", "ConstVelocity", "Worldline").
+  virtual const char* type_name() const { return "Motion"; }
+  /// True when at_proper_time/at_coordinate_time are defined for every τ/t (analytic motions);
+  /// false when only [tau_min, tau_max] was computed (they throw Error outside).
+  virtual bool unbounded() const { return false; }
 };
 
 using MotionPtr = std::shared_ptr<Motion>;

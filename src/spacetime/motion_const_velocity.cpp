@@ -1,0 +1,163 @@
+#include "spacetime/motion_const_velocity.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.h"
+
+namespace geovis {
+
+namespace {
+
+Vec3 spatial(const Vec4& x) { return Vec3{x[1], x[2], x[3]}; }
+Vec4 event(double t, const Vec3& p) { return Vec4{{t, p.x, p.y, p.z}}; }
+
+/// Lorentz transformation into the frame moving with velocity v (see the header).
+Vec4 boost_event(const Vec4& x, const Vec3& v) {
+  const double v2 = dot(v, v);
+  if (v2 == 0.0) return x;
+  const double gamma = 1.0 / std::sqrt(1.0 - v2);
+  const Vec3 p = spatial(x);
+  const double vx = dot(v, p);
+  return event(gamma * (x[0] - vx), p + (gamma * gamma / (gamma + 1.0) * vx) * v - (gamma * x[0]) * v);
+}
+
+/// Rodrigues' rotation of p by the angle phi about the unit axis a.
+Vec3 rotate(const Vec3& p, const Vec3& a, double phi) {
+  const double ap = dot(a, p);
+  return ap * a + std::cos(phi) * (p - ap * a) + std::sin(phi) * cross(a, p);
+}
+
+}  // namespace
+
+ConstVelocityMotion::ConstVelocityMotion(std::vector<Op> ops) {
+  for (const Op& op : ops) {
+    if (op.is_boost)
+      add_boost(op.v);
+    else
+      add_rotation(op.omega, op.axis);
+  }
+  update_samples();
+}
+
+void ConstVelocityMotion::add_boost(const Vec3& v) {
+  const double v2 = dot(v, v);
+  if (!std::isfinite(v2) || !(v2 < 1.0)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "ConstVelocity motion: boost velocity (%g, %g, %g) has |v| = %g; expected |v| < 1",
+                  v.x, v.y, v.z, std::sqrt(v2));
+    throw Error(buf);
+  }
+  Op op;
+  op.is_boost = true;
+  op.v = v;
+  ops_.push_back(op);
+  update_samples();
+}
+
+void ConstVelocityMotion::add_rotation(double omega, const Vec3& axis) {
+  const double n = norm(axis);
+  if (!(n > 0) || !std::isfinite(n) || !std::isfinite(omega))
+    throw Error("ConstVelocity motion: rotation axis is missing (zero) or not finite; expected #(omega ax ay az) "
+                "with a non-zero axis");
+  Op op;
+  op.is_boost = false;
+  op.omega = omega;
+  op.axis = axis / n;
+  ops_.push_back(op);
+  update_samples();
+}
+
+Vec4 ConstVelocityMotion::to_object_frame(const Vec4& x) const {
+  Vec4 y = x;
+  for (const Op& op : ops_) {
+    if (op.is_boost)
+      y = boost_event(y, op.v);
+    else
+      y = event(y[0], rotate(spatial(y), op.axis, -op.omega * y[0]));
+  }
+  return y;
+}
+
+Vec4 ConstVelocityMotion::from_object_frame(const Vec4& xo) const {
+  Vec4 y = xo;
+  for (auto it = ops_.rbegin(); it != ops_.rend(); ++it) {
+    if (it->is_boost)
+      y = boost_event(y, -it->v);  // the inverse boost has velocity −v
+    else
+      y = event(y[0], rotate(spatial(y), it->axis, it->omega * y[0]));
+  }
+  return y;
+}
+
+Vec4 ConstVelocityMotion::vector_to_object_frame(const Vec4& x, const Vec4& v) const {
+  // Chain rule through the sequence: boosts are linear; the rotation x' = R(−ωt) x has
+  // dx' = R(−ωt) dx − ω dt (a × R(−ωt) x).
+  Vec4 y = x, w = v;
+  for (const Op& op : ops_) {
+    if (op.is_boost) {
+      y = boost_event(y, op.v);
+      w = boost_event(w, op.v);
+    } else {
+      const double phi = -op.omega * y[0];
+      const Vec3 yr = rotate(spatial(y), op.axis, phi);
+      const Vec3 wr = rotate(spatial(w), op.axis, phi) - (op.omega * w[0]) * cross(op.axis, yr);
+      y = event(y[0], yr);
+      w = event(w[0], wr);
+    }
+  }
+  return w;
+}
+
+Vec4 ConstVelocityMotion::vector_from_object_frame(const Vec4& xo, const Vec4& vo) const {
+  // Inverse rotation x = R(ωt) x': dx = R(ωt) dx' + ω dt (a × R(ωt) x').
+  Vec4 y = xo, w = vo;
+  for (auto it = ops_.rbegin(); it != ops_.rend(); ++it) {
+    if (it->is_boost) {
+      y = boost_event(y, -it->v);
+      w = boost_event(w, -it->v);
+    } else {
+      const double phi = it->omega * y[0];
+      const Vec3 yr = rotate(spatial(y), it->axis, phi);
+      const Vec3 wr = rotate(spatial(w), it->axis, phi) + (it->omega * w[0]) * cross(it->axis, yr);
+      y = event(y[0], yr);
+      w = event(w[0], wr);
+    }
+  }
+  return w;
+}
+
+Vec4 ConstVelocityMotion::material_four_velocity(const Vec4& x) const {
+  const Vec4 xo = to_object_frame(x);
+  const Vec4 w = vector_from_object_frame(xo, Vec4{{1, 0, 0, 0}});
+  const double n = w[0] * w[0] - (w[1] * w[1] + w[2] * w[2] + w[3] * w[3]);
+  if (!(n > 0))
+    throw Error("ConstVelocity motion: the material point at this event moves at or faster than light (beyond the "
+                "light cylinder of the rotation)");
+  return (1.0 / std::sqrt(n)) * w;
+}
+
+MotionSample ConstVelocityMotion::at_proper_time(double tau) const {
+  // The origin rests in object coordinates, so its proper time is the object time t'.
+  MotionSample s;
+  s.tau = tau;
+  const Vec4 xo{{tau, 0, 0, 0}};
+  s.x = from_object_frame(xo);
+  for (int a = 0; a < 4; ++a) {
+    Vec4 unit{{0, 0, 0, 0}};
+    unit[a] = 1.0;
+    s.e[a] = vector_from_object_frame(xo, unit);
+  }
+  s.u = s.e[0];
+  return s;
+}
+
+MotionSample ConstVelocityMotion::at_coordinate_time(double t) const {
+  // Lab time along the origin's worldline is linear in τ: t(τ) = t(0) + u^t τ.
+  const MotionSample s0 = at_proper_time(0.0);
+  return at_proper_time((t - s0.x[0]) / s0.u[0]);
+}
+
+void ConstVelocityMotion::update_samples() { samples_ = {at_proper_time(0.0)}; }
+
+}  // namespace geovis

@@ -1,0 +1,36 @@
+// Builds motions from `init-motion` parameter sets (catalogue §1, §8; paper §3):
+//   Geodesic      — pos, localvel | vel, e0..e3, incoords, localframe, tau0, forward, backward,
+//                   maxnumpoints, stepsize; the solver (`solver` key) is resolved by the caller
+//                   and passed in;
+//   ConstVelocity — boost #(vx vy vz) and rotation #(ω ax ay az), repeatable, applied in order
+//                   (Minkowski only);
+//   Worldline (GeoViS "file") — events from `points` (list of #(x0 x1 x2 x3), or
+//                   #(tau x0 x1 x2 x3) with havetau #t) or `filename` (one event per line, same
+//                   columns, '#' starts a comment); frame e0..e3/incoords/localframe at the first
+//                   event, Fermi-Walker transported; tau0.
+// `id`, `metric` and `solver` are read by the scene builder, not here.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/params.h"
+#include "spacetime/geodesic.h"
+#include "spacetime/metric.h"
+#include "spacetime/motion.h"
+
+namespace geovis {
+
+/// Valid `type` values.
+std::vector<std::string> motion_type_names();
+
+/// Keys accepted by init-motion of the given type (for ParamSet::validate). Unknown type ->
+/// SceneError-free: returns the common keys.
+std::vector<ParamSpec> motion_param_specs(const std::string& type);
+
+/// Creates the motion; every problem is a SceneError "file:line: init-motion: key: ...", an
+/// unknown type names the closest valid one.
+MotionPtr make_motion(const ParamSet& ps, std::shared_ptr<const Metric> metric, const SolverConfig& solver);
+
+}  // namespace geovis

@@ -1,0 +1,154 @@
+#include "spacetime/motion_sampled.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.h"
+#include "spacetime/tetrad.h"
+
+namespace geovis {
+
+namespace {
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+/// Quintic Hermite basis on s ∈ [0,1] (values/first/second derivatives at s = 0 and 1 are the
+/// unit vectors): H0, H1, H2 for p(0), p'(0), p''(0) and H3, H4, H5 for p(1), p'(1), p''(1).
+void quintic_basis(double s, double H[6], double dH[6]) {
+  const double s2 = s * s, s3 = s2 * s, s4 = s3 * s, s5 = s4 * s;
+  H[0] = 1 - 10 * s3 + 15 * s4 - 6 * s5;
+  H[1] = s - 6 * s3 + 8 * s4 - 3 * s5;
+  H[2] = 0.5 * (s2 - 3 * s3 + 3 * s4 - s5);
+  H[3] = 10 * s3 - 15 * s4 + 6 * s5;
+  H[4] = -4 * s3 + 7 * s4 - 3 * s5;
+  H[5] = 0.5 * (s3 - 2 * s4 + s5);
+  dH[0] = -30 * s2 + 60 * s3 - 30 * s4;
+  dH[1] = 1 - 18 * s2 + 32 * s3 - 15 * s4;
+  dH[2] = 0.5 * (2 * s - 9 * s2 + 12 * s3 - 5 * s4);
+  dH[3] = 30 * s2 - 60 * s3 + 30 * s4;
+  dH[4] = -12 * s2 + 28 * s3 - 15 * s4;
+  dH[5] = 0.5 * (3 * s2 - 8 * s3 + 5 * s4);
+}
+
+}  // namespace
+
+void SampledMotion::set_nodes(std::vector<MotionNode> nodes) {
+  if (nodes.empty()) throw Error("motion has no samples");
+  nodes_ = std::move(nodes);
+  samples_.clear();
+  samples_.reserve(nodes_.size());
+  x0_increasing_ = true;
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    const MotionNode& n = nodes_[i];
+    samples_.push_back(MotionSample{n.tau, n.x, n.u, n.e});
+    if (i > 0 && !(n.x[0] > nodes_[i - 1].x[0])) x0_increasing_ = false;
+  }
+}
+
+size_t SampledMotion::interval(double tau) const {
+  const double lo = nodes_.front().tau, hi = nodes_.back().tau;
+  const double slack = 1e-12 * std::max({1.0, std::fabs(lo), std::fabs(hi)});
+  if (!(tau >= lo - slack && tau <= hi + slack))
+    throw Error(std::string(type_name()) + " motion: proper time " + num(tau) + " is outside the computed range [" +
+                num(lo) + ", " + num(hi) + "] (extend it with `forward`/`backward` or `maxnumpoints`)");
+  if (nodes_.size() == 1) return 0;
+  auto it = std::upper_bound(nodes_.begin(), nodes_.end(), tau,
+                             [](double t, const MotionNode& n) { return t < n.tau; });
+  size_t i = static_cast<size_t>(it - nodes_.begin());
+  i = i == 0 ? 0 : i - 1;
+  return std::min(i, nodes_.size() - 2);
+}
+
+void SampledMotion::interpolate_x(size_t i, double tau, Vec4& x, Vec4& u) const {
+  const MotionNode& a = nodes_[i];
+  const MotionNode& b = nodes_[i + 1];
+  const double h = b.tau - a.tau;
+  const double s = (tau - a.tau) / h;
+  double H[6], dH[6];
+  quintic_basis(s, H, dH);
+  for (int mu = 0; mu < 4; ++mu) {
+    x[mu] = H[0] * a.x[mu] + h * H[1] * a.u[mu] + h * h * H[2] * a.du[mu] + H[3] * b.x[mu] + h * H[4] * b.u[mu] +
+            h * h * H[5] * b.du[mu];
+    u[mu] = (dH[0] * a.x[mu] + dH[3] * b.x[mu]) / h + dH[1] * a.u[mu] + h * dH[2] * a.du[mu] + dH[4] * b.u[mu] +
+            h * dH[5] * b.du[mu];
+  }
+}
+
+MotionSample SampledMotion::at_proper_time(double tau) const {
+  const size_t i = interval(tau);
+  if (nodes_.size() == 1) return samples_[0];
+  const MotionNode& a = nodes_[i];
+  const MotionNode& b = nodes_[i + 1];
+  if (tau == a.tau) return samples_[i];
+  if (tau == b.tau) return samples_[i + 1];
+  MotionSample out;
+  out.tau = tau;
+  interpolate_x(i, tau, out.x, out.u);
+  // Cubic Hermite for the tetrad vectors (they satisfy a first-order ODE whose derivative is
+  // stored at the nodes).
+  const double h = b.tau - a.tau;
+  const double s = (tau - a.tau) / h;
+  const double s2 = s * s, s3 = s2 * s;
+  const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+  Tetrad e{};
+  for (int c = 0; c < 4; ++c)
+    for (int mu = 0; mu < 4; ++mu)
+      e[c][mu] = h00 * a.e[c][mu] + h * h10 * a.de[c][mu] + h01 * b.e[c][mu] + h * h11 * b.de[c][mu];
+  e[0] = out.u;
+  out.e = gram_schmidt(*metric_, out.x, e);
+  out.u = out.e[0];
+  return out;
+}
+
+double SampledMotion::proper_time_at_coordinate_time(double t) const {
+  const double t_lo = nodes_.front().x[0], t_hi = nodes_.back().x[0];
+  if (!x0_increasing_)
+    throw Error(std::string(type_name()) + " motion: the coordinate time x^0 does not increase along the motion, so "
+                "an event cannot be selected by coordinate time");
+  const double slack = 1e-12 * std::max({1.0, std::fabs(t_lo), std::fabs(t_hi)});
+  if (!(t >= t_lo - slack && t <= t_hi + slack))
+    throw Error(std::string(type_name()) + " motion: coordinate time " + num(t) + " is outside the computed range [" +
+                num(t_lo) + ", " + num(t_hi) + "] (extend it with `forward`/`backward` or `maxnumpoints`)");
+  if (nodes_.size() == 1) return nodes_[0].tau;
+  auto it = std::upper_bound(nodes_.begin(), nodes_.end(), t,
+                             [](double tt, const MotionNode& n) { return tt < n.x[0]; });
+  size_t i = static_cast<size_t>(it - nodes_.begin());
+  i = std::min(i == 0 ? 0 : i - 1, nodes_.size() - 2);
+  const MotionNode& a = nodes_[i];
+  const MotionNode& b = nodes_[i + 1];
+  if (t <= a.x[0]) return a.tau;
+  if (t >= b.x[0]) return b.tau;
+  // Safeguarded Newton on f(τ) = x^0(τ) − t with f' = u^0 (the bracket [lo, hi] always keeps a
+  // sign change; a Newton step leaving it is replaced by bisection).
+  double lo = a.tau, hi = b.tau;
+  double tau = a.tau + (b.tau - a.tau) * (t - a.x[0]) / (b.x[0] - a.x[0]);
+  for (int iter = 0; iter < 100; ++iter) {
+    Vec4 x, u;
+    interpolate_x(i, tau, x, u);
+    const double f = x[0] - t;
+    if (f > 0)
+      hi = tau;
+    else
+      lo = tau;
+    if (std::fabs(f) <= 1e-14 * std::max(1.0, std::fabs(t))) break;
+    double next = u[0] != 0 ? tau - f / u[0] : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::fabs(next - tau) <= 1e-15 * std::max(1.0, std::fabs(tau))) {
+      tau = next;
+      break;
+    }
+    tau = next;
+  }
+  return tau;
+}
+
+MotionSample SampledMotion::at_coordinate_time(double t) const {
+  return at_proper_time(proper_time_at_coordinate_time(t));
+}
+
+}  // namespace geovis

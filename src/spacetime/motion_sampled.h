@@ -1,0 +1,52 @@
+// A motion known at discrete proper times (nodes) with the derivatives the integrator computed
+// there; between nodes it is interpolated with Hermite polynomials:
+//   x(τ): quintic Hermite from x, u = dx/dτ and du/dτ at both ends (error O(h⁶)), u(τ) = its
+//         derivative (O(h⁵)) — as accurate as the 5th-order integrators that produced the nodes;
+//   e(τ): cubic Hermite from e and de/dτ (O(h⁴)), then re-orthonormalized with Gram-Schmidt
+//         against g at x(τ) with e_(0) = u(τ), so the interpolated frame is an exact tetrad.
+// Base of GeodesicMotion and WorldlineMotion.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "spacetime/motion.h"
+
+namespace geovis {
+
+struct MotionNode {
+  double tau = 0;
+  Vec4 x{{0, 0, 0, 0}};
+  Vec4 u{{0, 0, 0, 0}};
+  Vec4 du{{0, 0, 0, 0}};  ///< du^μ/dτ (coordinate derivative, = a^μ − Γ^μ_{ab} u^a u^b)
+  Tetrad e{};
+  Tetrad de{};            ///< de_(a)^μ/dτ
+};
+
+class SampledMotion : public Motion {
+ public:
+  MotionSample at_proper_time(double tau) const override;
+  MotionSample at_coordinate_time(double t) const override;
+  const std::vector<MotionSample>& samples() const override { return samples_; }
+  const std::vector<MotionNode>& nodes() const { return nodes_; }
+  const Metric& metric() const { return *metric_; }
+  /// Proper time at which x^0 = t (Hermite interpolation + safeguarded Newton iteration).
+  double proper_time_at_coordinate_time(double t) const;
+
+ protected:
+  explicit SampledMotion(std::shared_ptr<const Metric> metric) : metric_(std::move(metric)) {}
+  /// Installs the nodes (sorted by increasing τ, at least one).
+  void set_nodes(std::vector<MotionNode> nodes);
+
+ private:
+  /// Interval index i with nodes_[i].tau <= tau <= nodes_[i+1].tau; throws outside the range.
+  size_t interval(double tau) const;
+  void interpolate_x(size_t i, double tau, Vec4& x, Vec4& u) const;
+
+  std::shared_ptr<const Metric> metric_;
+  std::vector<MotionNode> nodes_;
+  std::vector<MotionSample> samples_;
+  bool x0_increasing_ = true;
+};
+
+}  // namespace geovis

@@ -1,0 +1,245 @@
+#include "spacetime/tetrad.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace geovis {
+
+namespace {
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::string vec_str(const Vec4& v) {
+  return "(" + fmt(v[0]) + ", " + fmt(v[1]) + ", " + fmt(v[2]) + ", " + fmt(v[3]) + ")";
+}
+
+const char* const kKindNames[] = {"default", "static", "lnrf", "freefall", "comoving", "cylinder", "cartesian"};
+
+}  // namespace
+
+double orthonormality_error(const Metric& m, const Vec4& x, const Tetrad& e) {
+  Mat4 g;
+  m.metric_tensor(x, g);
+  double err = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a; b < 4; ++b) {
+      const double target = a == b ? kEta[a] : 0.0;
+      err = std::max(err, std::fabs(dot(g, e[a], e[b]) - target));
+    }
+  return err;
+}
+
+void check_orthonormal(const Metric& m, const Vec4& x, const Tetrad& e, double tol, std::string_view what) {
+  Mat4 g;
+  m.metric_tensor(x, g);
+  std::string bad;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a; b < 4; ++b) {
+      const double target = a == b ? kEta[a] : 0.0;
+      const double prod = dot(g, e[a], e[b]);
+      if (!(std::fabs(prod - target) <= tol))
+        bad += (bad.empty() ? "" : ", ") + std::string("g(e") + std::to_string(a) + ",e" + std::to_string(b) +
+               ") = " + fmt(prod) + " instead of " + fmt(target);
+    }
+  if (!bad.empty())
+    throw Error(std::string(what) + " is not orthonormal with respect to the metric " + m.name() + " at " +
+                vec_str(x) + ": " + bad + " (tolerance " + fmt(tol) + "; expected g(e_a,e_b) = diag(-1,1,1,1))");
+}
+
+void require_valid_position(const Metric& m, const Vec4& x, std::string_view what) {
+  if (!m.is_valid(x))
+    throw Error(std::string(what) + " " + vec_str(x) + " is outside the validity domain of the metric " +
+                m.name() + " (coordinates " + m.info().coords[0] + ", " + m.info().coords[1] + ", " +
+                m.info().coords[2] + ", " + m.info().coords[3] + "; e.g. inside a horizon, at a singularity or on an axis)");
+}
+
+Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v) {
+  Mat4 g;
+  m.metric_tensor(x, g);
+  Tetrad e{};
+  const double n0 = dot(g, v[0], v[0]);
+  // Relative degeneracy threshold: a vector counts as degenerate when what is left of it after
+  // removing the components along the previous base vectors is ~1e-10 of its original size.
+  constexpr double kRel = 1e-10;
+  double scale0 = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) scale0 += std::fabs(g[i][j] * v[0][i] * v[0][j]);
+  if (!(n0 < -kRel * scale0) || !std::isfinite(n0))
+    throw Error("Gram-Schmidt: the first vector e0 = " + vec_str(v[0]) + " must be timelike, but g(e0,e0) = " +
+                fmt(n0) + " (metric " + m.name() + " at " + vec_str(x) + ")");
+  e[0] = (1.0 / std::sqrt(-n0)) * v[0];
+  for (int i = 1; i < 4; ++i) {
+    Vec4 w = v[i];
+    double scale = 0;
+    for (int p = 0; p < 4; ++p)
+      for (int q = 0; q < 4; ++q) scale += std::fabs(g[p][q] * v[i][p] * v[i][q]);
+    for (int a = 0; a < i; ++a) {
+      // remove the component along e_a: w -= η_aa g(w, e_a) e_a
+      const double c = kEta[a] * dot(g, w, e[a]);
+      w = w - c * e[a];
+    }
+    const double n = dot(g, w, w);
+    if (!(n > kRel * scale) || !std::isfinite(n))
+      throw Error("Gram-Schmidt: e" + std::to_string(i) + " = " + vec_str(v[i]) +
+                  " is degenerate (linearly dependent on the previous base vectors, zero or null; what remains "
+                  "after projection has g(w,w) = " + fmt(n) + ") (metric " + m.name() + " at " + vec_str(x) + ")");
+    e[i] = (1.0 / std::sqrt(n)) * w;
+  }
+  return e;
+}
+
+Tetrad tetrad_from_local(const Tetrad& base, const Tetrad& c) {
+  Tetrad e{};
+  for (int a = 0; a < 4; ++a) e[a] = local_to_coord(base, c[a]);
+  return e;
+}
+
+Tetrad boost_tetrad(const Tetrad& e, const Vec3& beta) {
+  const double b2 = dot(beta, beta);
+  if (!std::isfinite(b2) || !(b2 < 1.0))
+    throw Error("local velocity (" + fmt(beta.x) + ", " + fmt(beta.y) + ", " + fmt(beta.z) + ") has |v| = " +
+                fmt(std::sqrt(b2)) + "; expected |v| < 1 (speed of light = 1)");
+  if (b2 == 0.0) return e;
+  const double gamma = 1.0 / std::sqrt(1.0 - b2);
+  Tetrad out{};
+  Vec4 bs{{0, 0, 0, 0}};  // β^i e_(i)
+  for (int i = 0; i < 3; ++i) bs = bs + beta[i] * e[i + 1];
+  out[0] = gamma * (e[0] + bs);
+  for (int j = 0; j < 3; ++j)
+    out[j + 1] = e[j + 1] + (gamma * beta[j]) * e[0] + ((gamma - 1.0) * beta[j] / b2) * bs;
+  return out;
+}
+
+Vec3 local_velocity(const Metric& m, const Vec4& x, const Tetrad& e, const Vec4& u) {
+  const Vec4 ul = coord_to_local(m, x, e, u);
+  if (!(ul[0] > 0))
+    throw Error("four-velocity " + vec_str(u) + " is not future-directed with respect to the local frame (u^(0) = " +
+                fmt(ul[0]) + ")");
+  const Vec3 beta{ul[1] / ul[0], ul[2] / ul[0], ul[3] / ul[0]};
+  if (!(dot(beta, beta) < 1.0))
+    throw Error("four-velocity " + vec_str(u) + " is not timelike (local speed " + fmt(norm(beta)) + " >= 1)");
+  return beta;
+}
+
+Vec4 normalize_four_velocity(const Metric& m, const Vec4& x, const Vec4& u) {
+  Mat4 g;
+  m.metric_tensor(x, g);
+  const double n = dot(g, u, u);
+  if (!(n < 0) || !std::isfinite(n))
+    throw Error("four-velocity " + vec_str(u) + " is not timelike: g(u,u) = " + fmt(n) + " (metric " + m.name() +
+                " at " + vec_str(x) + ")");
+  return (1.0 / std::sqrt(-n)) * u;
+}
+
+Tetrad tetrad_for_four_velocity(const Metric& m, const Vec4& x, const Tetrad& ref, const Vec4& u) {
+  const Vec4 un = normalize_four_velocity(m, x, u);
+  Tetrad e = boost_tetrad(ref, local_velocity(m, x, ref, un));
+  e[0] = un;  // identical up to rounding; keep the exact input direction
+  return e;
+}
+
+Tetrad build_tetrad(const Metric& m, const TetradSpec& spec, double tol) {
+  require_valid_position(m, spec.pos, "tetrad position");
+  const Tetrad nat = m.natural_tetrad(spec.pos, spec.frame);
+  Tetrad E = spec.incoords ? spec.e : tetrad_from_local(nat, spec.e);
+  check_orthonormal(m, spec.pos, E, tol, spec.incoords ? "tetrad e0..e3 (in coordinates)" : "tetrad e0..e3");
+  E = gram_schmidt(m, spec.pos, E);
+  Vec3 beta = spec.localvel;
+  if (spec.has_vel) beta = local_velocity(m, spec.pos, nat, normalize_four_velocity(m, spec.pos, spec.vel));
+  if (dot(beta, beta) == 0.0) return E;
+  // Λ(β) acts on components relative to the natural frame: E_(a) = c_a^b ê_(b) ↦ c_a^b ê'_(b),
+  // where ê' is the boosted natural frame.
+  const Tetrad nat_boosted = boost_tetrad(nat, beta);
+  Tetrad c{};
+  for (int a = 0; a < 4; ++a) c[a] = coord_to_local(m, spec.pos, nat, E[a]);
+  return tetrad_from_local(nat_boosted, c);
+}
+
+TetradKind tetrad_kind_from_param(const ParamSet& ps, std::string_view key, TetradKind def) {
+  const Param* p = ps.find(key);
+  if (!p) return def;
+  const std::vector<std::string> names(std::begin(kKindNames), std::end(kKindNames));
+  if (p->value.is_number()) {
+    const int k = ps.get_int(key);
+    if (k < 0 || k > 6)
+      ps.fail(key, "expected a natural tetrad index 0..6 (gpTetradDefault .. gpTetradCartesian), found " +
+                       std::to_string(k));
+    return static_cast<TetradKind>(k);
+  }
+  const std::string s = ps.get_string(key);
+  const std::string l = to_lower(s);
+  for (int i = 0; i < 7; ++i)
+    if (l == kKindNames[i] || l == std::string("gptetrad") + kKindNames[i]) return static_cast<TetradKind>(i);
+  ps.fail(key, "unknown natural tetrad \"" + s + "\"" + did_you_mean(s, names) + " (valid: " + join(names) + ")");
+}
+
+TetradSpec tetrad_spec_from_params(const ParamSet& ps, bool require_pos, Vec4 default_pos) {
+  TetradSpec spec;
+  if (require_pos || ps.has("pos")) {
+    const std::vector<double> p = ps.get_vector_any("pos", {4, 5});
+    spec.pos = Vec4{{p[0], p[1], p[2], p[3]}};
+  } else {
+    spec.pos = default_pos;
+  }
+  for (int a = 0; a < 4; ++a) {
+    const char key[3] = {'e', static_cast<char>('0' + a), '\0'};
+    const std::vector<double> v = ps.get_vector(key, 4, std::vector<double>{a == 0 ? 1.0 : 0.0, a == 1 ? 1.0 : 0.0,
+                                                                            a == 2 ? 1.0 : 0.0, a == 3 ? 1.0 : 0.0});
+    spec.e[a] = Vec4{{v[0], v[1], v[2], v[3]}};
+  }
+  spec.incoords = ps.get_bool("incoords", false);
+  spec.frame = tetrad_kind_from_param(ps, "localframe", TetradKind::Default);
+  if (ps.has("localvel") && ps.has("vel"))
+    ps.fail("vel", "give either `vel` (coordinate four-velocity) or `localvel` (local 3-velocity), not both");
+  const std::vector<double> lv = ps.get_vector("localvel", 3, std::vector<double>{0, 0, 0});
+  spec.localvel = Vec3{lv[0], lv[1], lv[2]};
+  if (dot(spec.localvel, spec.localvel) >= 1.0)
+    ps.fail("localvel", "expected a 3-velocity with |v| < 1 (speed of light = 1), found |v| = " +
+                            fmt(norm(spec.localvel)));
+  if (ps.has("vel")) {
+    const std::vector<double> v = ps.get_vector("vel", 4);
+    spec.has_vel = true;
+    spec.vel = Vec4{{v[0], v[1], v[2], v[3]}};
+  }
+  return spec;
+}
+
+Tetrad tetrad_from_params(const ParamSet& ps, const Metric& m, Vec4* pos_out) {
+  const TetradSpec spec = tetrad_spec_from_params(ps);
+  if (pos_out) *pos_out = spec.pos;
+  // Run the steps one by one so each error names the key it comes from.
+  try {
+    require_valid_position(m, spec.pos, "position");
+  } catch (const Error& e) {
+    ps.fail("pos", e.what());
+  }
+  Tetrad nat{};
+  try {
+    nat = m.natural_tetrad(spec.pos, spec.frame);
+  } catch (const Error& e) {
+    ps.fail("localframe", e.what());
+  }
+  (void)nat;
+  try {
+    TetradSpec no_boost = spec;
+    no_boost.localvel = Vec3{0, 0, 0};
+    no_boost.has_vel = false;
+    build_tetrad(m, no_boost);
+  } catch (const Error& e) {
+    ps.fail("e0..e3", e.what());
+  }
+  try {
+    return build_tetrad(m, spec);
+  } catch (const Error& e) {
+    ps.fail(spec.has_vel ? "vel" : "localvel", e.what());
+  }
+}
+
+}  // namespace geovis

@@ -1,0 +1,325 @@
+// Motions against analytic results: the circular orbit of paper §4.1 (period 92.3436, geodetic
+// precession 2π(1 − √(1 − 3M/r)) = 105.44° per orbit), radial free fall from rest (cycloid
+// τ = √(r_i³/8M)(η + sin η), r = r_i(1 + cos η)/2; MTW §31.10), and the rolling wheel of paper
+// §4.6 (top point moves with 2v/(1 + v²)).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+#include "spacetime/metric_registry.h"
+#include "spacetime/motion_const_velocity.h"
+#include "spacetime/motion_factory.h"
+#include "spacetime/motion_geodesic.h"
+#include "spacetime/tetrad.h"
+
+using namespace geovis;
+
+namespace {
+
+std::string error_of(auto&& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+ParamSet paper_orbit_params() {
+  // Paper §3 init-motion (with more points and a longer forward range: one full orbit).
+  ParamSet ps("init-motion", SourceLoc{"orbit.scm", 20});
+  ps.add("type", "Geodesic");
+  ps.add("pos", std::vector<double>{0.0, 6.0, M_PI / 2, 0.0});
+  ps.add("localvel", std::vector<double>{0.0, 0.0, 0.5});
+  ps.add("e0", std::vector<double>{1, 0, 0, 0});
+  ps.add("e1", std::vector<double>{0, 0, -1, 0});
+  ps.add("e2", std::vector<double>{0, 0, 0, -1});
+  ps.add("e3", std::vector<double>{0, 1, 0, 0});
+  ps.add("maxnumpoints", 1000);
+  ps.add("forward", 70.0);
+  ps.add("backward", 10.0);
+  return ps;
+}
+
+SolverConfig paper_solver() {
+  SolverConfig cfg;  // paper §3: GSL_RK_Cash-Karp, step_ctrl #f, step_size 0.1
+  cfg.kind = SolverKind::CashKarp45;
+  cfg.step_ctrl = false;
+  cfg.step_size = 0.1;
+  cfg.eps_abs = 0.01;
+  return cfg;
+}
+
+/// Radial free fall from rest at r_i (M = 1): r(τ) from the cycloid, solving τ(η) by Newton.
+double cycloid_r(double ri, double tau) {
+  const double A = std::sqrt(ri * ri * ri / 8.0);
+  double eta = 1.0;
+  for (int i = 0; i < 100; ++i) eta -= (A * (eta + std::sin(eta)) - tau) / (A * (1 + std::cos(eta)));
+  return 0.5 * ri * (1 + std::cos(eta));
+}
+
+}  // namespace
+
+TEST(Motion, CircularOrbitPeriodAndGeodeticPrecession) {
+  std::shared_ptr<const Metric> m = make_metric("Schwarzschild");
+  const MotionPtr motion = make_motion(paper_orbit_params(), m, paper_solver());
+  auto* geo = dynamic_cast<GeodesicMotion*>(motion.get());
+  ASSERT_NE(geo, nullptr);
+  EXPECT_EQ(geo->forward_stop(), StopReason::LambdaMax);
+  EXPECT_EQ(geo->backward_stop(), StopReason::LambdaMax);
+  EXPECT_NEAR(motion->tau_min(), -10.0, 1e-9);
+  EXPECT_NEAR(motion->tau_max(), 70.0, 1e-9);
+  // uniform proper-time sampling with step_size (step_ctrl #f)
+  const auto& s = motion->samples();
+  EXPECT_EQ(s.size(), 801u);
+  EXPECT_NEAR(s[1].tau - s[0].tau, 0.1, 1e-12);
+  double rdev = 0, ortho = 0;
+  for (const MotionSample& x : s) {
+    rdev = std::max(rdev, std::fabs(x.x[1] - 6.0));
+    ortho = std::max(ortho, orthonormality_error(*m, x.x, x.e));
+  }
+  EXPECT_LT(rdev, 1e-8);
+  EXPECT_LT(ortho, 1e-10);
+
+  // Coordinate period t_2π = 2π/Ω, Ω = √(M/r³): 92.3436 (paper §4.1).
+  const double period = 2 * M_PI * std::sqrt(216.0);
+  EXPECT_NEAR(period, 92.3436, 1e-4);
+  const MotionSample end = motion->at_coordinate_time(period);
+  EXPECT_NEAR(end.x[0], period, 1e-9);
+  EXPECT_NEAR(end.x[3], 2 * M_PI, 1e-7);
+  EXPECT_NEAR(end.tau, period / std::sqrt(2.0), 1e-7);  // u^t = 1/√(1 − 3M/r) = √2
+  EXPECT_LT(orthonormality_error(*m, end.x, end.e), 1e-12);
+
+  // Geodetic precession: compare the transported e3 (initially ê_r) with the initial frame at the
+  // same place and velocity (boosted natural tetrad; e3 = ê_r, e2 = −ê_φ').
+  const Tetrad ref = boost_tetrad(m->natural_tetrad(end.x), Vec3{0, 0, 0.5});
+  Mat4 g;
+  m->metric_tensor(end.x, g);
+  const double along_r = dot(g, end.e[3], ref[1]);
+  const double along_phi = dot(g, end.e[3], ref[3]);
+  const double angle = std::atan2(along_phi, along_r);
+  const double expected = 2 * M_PI * (1 - std::sqrt(1 - 3.0 / 6.0));
+  EXPECT_NEAR(expected * 180 / M_PI, 105.44, 0.01);
+  EXPECT_NEAR(angle, expected, 1e-6);
+  EXPECT_NEAR(dot(g, end.e[1], ref[2]), -1.0, 1e-10);  // e1 = −ê_θ is not rotated
+
+  // interpolation between samples stays on the orbit and orthonormal
+  const MotionSample mid = motion->at_proper_time(33.333);
+  EXPECT_NEAR(mid.x[1], 6.0, 1e-9);
+  EXPECT_NEAR(mid.x[3], 33.333 * std::sqrt(2.0) / std::sqrt(216.0), 1e-9);
+  EXPECT_LT(orthonormality_error(*m, mid.x, mid.e), 1e-13);
+  EXPECT_NE(error_of([&] { motion->at_proper_time(80.0); }).find("outside the computed range"), std::string::npos);
+}
+
+TEST(Motion, RadialFreeFallSchwarzschild) {
+  std::shared_ptr<const Metric> m = make_metric("Schwarzschild");
+  ParamSet ps("init-motion", SourceLoc{"fall.scm", 86});
+  ps.add("type", "Geodesic");
+  ps.add("pos", std::vector<double>{0.0, 10.0, M_PI / 2, 0.0});
+  ps.add("localvel", std::vector<double>{0, 0, 0});
+  ps.add("maxnumpoints", 8000);
+  ps.add("forward", 100.0);
+  SolverConfig cfg;  // fallEddFinkIn.scm: GSL_RK_Fehlberg, step_ctrl #f, step_size 0.005
+  cfg.step_ctrl = false;
+  cfg.step_size = 0.005;
+  const MotionPtr motion = make_motion(ps, m, cfg);
+  const MotionSample s = motion->at_proper_time(32.395);
+  EXPECT_NEAR(s.x[1], cycloid_r(10, 32.395), 1e-7);
+  EXPECT_NEAR(s.x[1], 3.01, 0.005);
+  // Schwarzschild coordinates end at the horizon r = 2M, reached at τ = 33.71 (η = acos(−0.6)).
+  const double tau_h = std::sqrt(125.0) * (std::acos(-0.6) + 0.8);
+  EXPECT_LT(motion->tau_max(), tau_h);
+  EXPECT_GT(motion->tau_max(), 33.0);
+}
+
+TEST(Motion, RadialFreeFallEddingtonFinkelsteinReachesTheCentre) {
+  const auto names = metric_names();
+  if (std::find(names.begin(), names.end(), "EddFinkIn") == names.end()) GTEST_SKIP() << "EddFinkIn not registered";
+  std::shared_ptr<const Metric> m = make_metric("EddFinkIn");
+  ParamSet ps("init-motion", SourceLoc{"fallEddFinkIn.scm", 86});
+  ps.add("type", "Geodesic");
+  ps.add("pos", std::vector<double>{0.0, 10.0, M_PI / 2, 0.0});
+  ps.add("localvel", std::vector<double>{0, 0, 0});
+  ps.add("localframe", "static");
+  ps.add("maxnumpoints", 8000);
+  ps.add("forward", 100.0);
+  SolverConfig cfg;
+  cfg.step_ctrl = false;
+  cfg.step_size = 0.005;
+  const MotionPtr motion = make_motion(ps, m, cfg);
+  EXPECT_NEAR(motion->at_proper_time(32.395).x[1], cycloid_r(10, 32.395), 1e-7);
+  const double r = motion->at_proper_time(35.09).x[1];
+  EXPECT_NEAR(r, cycloid_r(10, 35.09), 1e-5);
+  EXPECT_NEAR(r, 0.173, 0.002);
+}
+
+TEST(Motion, RollingWheel) {
+  // minkWheel.scm: boost #(0 −0.8 0), rotation #(0.4 1 0 0); radius 2.
+  std::shared_ptr<const Metric> m = make_metric("Minkowski");
+  ParamSet ps("init-motion", SourceLoc{"minkWheel.scm", 100});
+  ps.add("type", "ConstVelocity");
+  ps.add("boost", std::vector<double>{0.0, -0.8, 0.0});
+  ps.add("rotation", std::vector<double>{0.4, 1.0, 0.0, 0.0});
+  const MotionPtr motion = make_motion(ps, m, SolverConfig{});
+  auto* cv = dynamic_cast<ConstVelocityMotion*>(motion.get());
+  ASSERT_NE(cv, nullptr);
+  // centre moves with v = −0.8 ŷ and crosses the origin at t = 0 (paper Fig. 8)
+  const MotionSample c = motion->at_coordinate_time(10.0);
+  EXPECT_NEAR(c.x[2], -8.0, 1e-12);
+  EXPECT_NEAR(c.tau, 10.0 * 0.6, 1e-12);
+  Mat4 g;
+  m->metric_tensor(c.x, g);
+  EXPECT_LT(orthonormality_error(*m, c.x, c.e), 1e-13);
+  // top point: 2v/(1 + v²) = 0.97561 along −y; contact point at rest (rolling without slipping)
+  const Vec4 top = cv->material_four_velocity(Vec4{{3.0, 0, -2.4, 2.0}});
+  EXPECT_NEAR(top[2] / top[0], -1.6 / 1.64, 1e-12);
+  EXPECT_NEAR(top[1] / top[0], 0, 1e-12);
+  EXPECT_NEAR(top[3] / top[0], 0, 1e-12);
+  const Vec4 bottom = cv->material_four_velocity(Vec4{{3.0, 0, -2.4, -2.0}});
+  EXPECT_NEAR(bottom[2] / bottom[0], 0, 1e-12);
+  EXPECT_NEAR(bottom[0], 1, 1e-12);
+  // the maps are inverse to each other
+  const Vec4 ev{{1.3, 0.2, -0.7, 1.1}};
+  const Vec4 back = cv->from_object_frame(cv->to_object_frame(ev));
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(back[i], ev[i], 1e-13);
+  // differential = finite difference of the map (central, O(h²))
+  const Vec4 dv{{0.3, -0.2, 0.5, 0.1}};
+  const Vec4 jd = cv->vector_to_object_frame(ev, dv);
+  const double h = 1e-5;
+  const Vec4 fd = (1.0 / (2 * h)) * (cv->to_object_frame(ev + h * dv) - cv->to_object_frame(ev - h * dv));
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(jd[i], fd[i], 1e-8);
+}
+
+TEST(Motion, WorldlineFromPointsAndWrite) {
+  std::shared_ptr<const Metric> m = make_metric("Minkowski");
+  ParamSet ps("init-motion", SourceLoc{"wl.scm", 5});
+  ps.add("type", "file");
+  ValueList pts;
+  for (int i = 0; i < 5; ++i) pts.push_back(std::vector<double>{1.0 * i, 0.5 * i, 0, 0});
+  ps.add("points", pts);
+  const MotionPtr motion = make_motion(ps, m, SolverConfig{});
+  const double gamma = 1 / std::sqrt(0.75);
+  EXPECT_NEAR(motion->tau_max(), 4.0 / gamma, 1e-12);  // uniform motion with v = 0.5
+  const MotionSample s = motion->at_proper_time(1.0);
+  EXPECT_NEAR(s.u[0], gamma, 1e-12);
+  EXPECT_NEAR(s.u[1], 0.5 * gamma, 1e-12);
+  std::ostringstream os;
+  motion->write(os);
+  std::istringstream is(os.str());
+  std::string line;
+  int rows = 0;
+  while (std::getline(is, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    int cols = 0;
+    double v;
+    while (ls >> v) ++cols;
+    EXPECT_EQ(cols, 25);
+    ++rows;
+  }
+  EXPECT_EQ(rows, 5);
+}
+
+TEST(Motion, FactoryErrors) {
+  std::shared_ptr<const Metric> m = make_metric("Schwarzschild");
+  const SolverConfig cfg = paper_solver();
+  ParamSet bad_type = paper_orbit_params();
+  bad_type.set("type", "Geodesik");
+  EXPECT_NE(error_of([&] { make_motion(bad_type, m, cfg); }).find("did you mean \"Geodesic\""), std::string::npos);
+
+  ParamSet fast = paper_orbit_params();
+  fast.set("localvel", std::vector<double>{0, 0, 1.2});
+  const std::string f = error_of([&] { make_motion(fast, m, cfg); });
+  EXPECT_EQ(f.rfind("orbit.scm:20: init-motion: localvel:", 0), 0u) << f;
+
+  ParamSet inside = paper_orbit_params();
+  inside.set("pos", std::vector<double>{0, 1.0, M_PI / 2, 0});
+  EXPECT_NE(error_of([&] { make_motion(inside, m, cfg); }).find("init-motion: pos:"), std::string::npos);
+
+  ParamSet skew = paper_orbit_params();
+  skew.set("e1", std::vector<double>{0, 0.2, -1, 0});
+  EXPECT_NE(error_of([&] { make_motion(skew, m, cfg); }).find("init-motion: e0..e3:"), std::string::npos);
+
+  ParamSet empty = paper_orbit_params();
+  empty.erase("forward");
+  empty.erase("backward");
+  EXPECT_NE(error_of([&] { make_motion(empty, m, cfg); }).find("forward"), std::string::npos);
+
+  ParamSet rot("init-motion", SourceLoc{"w.scm", 1});
+  rot.add("type", "ConstVelocity");
+  rot.add("rotation", std::vector<double>{0.4, 0, 0, 0});
+  EXPECT_NE(error_of([&] { make_motion(rot, make_metric("Minkowski"), cfg); }).find("axis is missing"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { make_motion(rot, m, cfg); }).find("Minkowski"), std::string::npos);
+
+  ParamSet nowl("init-motion", SourceLoc{"w.scm", 2});
+  nowl.add("type", "Worldline");
+  EXPECT_NE(error_of([&] { make_motion(nowl, m, cfg); }).find("points"), std::string::npos);
+}
+
+TEST(Motion, WorldlineFromFileWithProperTimes) {
+  // havetau #t: columns tau x0 x1 x2 x3. Uniform motion with v = 0.6 (γ = 1.25) in Minkowski.
+  const std::string file = std::string(GEOVIS_BINARY_DIR) + "/test_motion_worldline.txt";
+  {
+    std::ofstream out(file);
+    out << "# tau t x y z\n";
+    for (int i = 0; i < 6; ++i) out << 0.8 * i << " " << 1.0 * i << " " << 0.6 * i << " 0 0\n";
+  }
+  std::shared_ptr<const Metric> m = make_metric("Minkowski");
+  ParamSet ps("init-motion", SourceLoc{"wl.scm", 9});
+  ps.add("type", "Worldline");
+  ps.add("filename", file);
+  ps.add("havetau", true);
+  const MotionPtr motion = make_motion(ps, m, SolverConfig{});
+  EXPECT_NEAR(motion->tau_min(), 0.0, 1e-14);
+  EXPECT_NEAR(motion->tau_max(), 4.0, 1e-12);  // proper time recomputed from the metric: 5/γ
+  const MotionSample s = motion->at_coordinate_time(2.5);
+  EXPECT_NEAR(s.x[1], 1.5, 1e-12);
+  EXPECT_NEAR(s.tau, 2.0, 1e-12);
+  EXPECT_NEAR(s.e[1][0], 0.75, 1e-12);  // boosted x axis: γβ ê_t + γ ê_x
+  std::remove(file.c_str());
+
+  ParamSet missing("init-motion", SourceLoc{"wl.scm", 10});
+  missing.add("type", "Worldline");
+  missing.add("filename", "/nonexistent/geovis_events.txt");
+  EXPECT_NE(error_of([&] { make_motion(missing, m, SolverConfig{}); }).find("cannot open"), std::string::npos);
+}
+
+TEST(Motion, Tau0ShiftsProperTime) {
+  std::shared_ptr<const Metric> m = make_metric("Schwarzschild");
+  ParamSet ps = paper_orbit_params();
+  ps.add("tau0", 5.0);
+  ps.set("forward", 2.0);
+  ps.set("backward", 1.0);
+  const MotionPtr motion = make_motion(ps, m, paper_solver());
+  EXPECT_NEAR(motion->tau_min(), 4.0, 1e-12);
+  EXPECT_NEAR(motion->tau_max(), 7.0, 1e-12);
+  EXPECT_EQ(motion->at_proper_time(5.0).x[0], 0.0);  // the start event
+}
+
+TEST(Motion, ParamSpecsAcceptTheSharedScenes) {
+  // The keys of paper §3 / sphereAroundBlackhole.scm and minkWheel.scm validate cleanly; an
+  // unknown key is reported with the closest valid one.
+  Diagnostics diag;
+  ParamSet geo = paper_orbit_params();
+  geo.add("id", "motion");
+  geo.add("solver", "gsolver");
+  geo.validate(motion_param_specs("Geodesic"), diag);
+  EXPECT_TRUE(diag.warnings().empty()) << (diag.warnings().empty() ? "" : diag.warnings()[0]);
+  ParamSet wheel("init-motion", SourceLoc{"minkWheel.scm", 100});
+  wheel.add("type", "ConstVelocity");
+  wheel.add("boost", std::vector<double>{0.0, -0.8, 0.0});
+  wheel.add("rotation", std::vector<double>{0.4, 1.0, 0.0, 0.0});
+  wheel.add("id", "cm");
+  wheel.validate(motion_param_specs("ConstVelocity"), diag);
+  EXPECT_TRUE(diag.warnings().empty());
+  geo.add("maxnumpoint", 10);
+  geo.validate(motion_param_specs("Geodesic"), diag);
+  ASSERT_EQ(diag.warnings().size(), 1u);
+  EXPECT_NE(diag.warnings()[0].find("maxnumpoints"), std::string::npos) << diag.warnings()[0];
+}

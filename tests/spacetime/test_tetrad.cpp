@@ -1,0 +1,188 @@
+// Local tetrads: user tetrads relative to the natural tetrad, orthonormality errors, Gram-Schmidt,
+// boosts and tetrads adapted to a four-velocity. Expectations are analytic (Schwarzschild natural
+// tetrad, paper eq. 2; special-relativistic boost formulas).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+#include "spacetime/metric_registry.h"
+#include "spacetime/tetrad.h"
+
+using namespace geovis;
+
+namespace {
+
+std::string error_of(auto&& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Tetrad, PaperObserverRelativeToNaturalTetrad) {
+  // Paper §3: e0 = ê_t, e1 = −ê_r, e2 = −ê_φ, e3 = −ê_θ at r = 30 (Schwarzschild, M = 1).
+  auto m = make_metric("Schwarzschild");
+  TetradSpec spec;
+  spec.pos = Vec4{{0, 30, M_PI / 2, 0}};
+  spec.e[0] = Vec4{{1, 0, 0, 0}};
+  spec.e[1] = Vec4{{0, -1, 0, 0}};
+  spec.e[2] = Vec4{{0, 0, 0, -1}};
+  spec.e[3] = Vec4{{0, 0, -1, 0}};
+  const Tetrad e = build_tetrad(*m, spec);
+  const double f = std::sqrt(1 - 2.0 / 30);
+  EXPECT_NEAR(e[0][0], 1 / f, 1e-15);
+  EXPECT_NEAR(e[1][1], -f, 1e-15);
+  EXPECT_NEAR(e[2][3], -1.0 / 30, 1e-15);
+  EXPECT_NEAR(e[3][2], -1.0 / 30, 1e-15);
+  EXPECT_LT(orthonormality_error(*m, spec.pos, e), 1e-14);
+}
+
+TEST(Tetrad, NonOrthonormalInputListsTheOffendingProducts) {
+  auto m = make_metric("Schwarzschild");
+  TetradSpec spec;
+  spec.pos = Vec4{{0, 10, 1.0, 0}};
+  spec.e[2] = Vec4{{0, 0.3, 1, 0}};  // not orthogonal to e1, not unit
+  const std::string msg = error_of([&] { build_tetrad(*m, spec); });
+  EXPECT_NE(msg.find("not orthonormal"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("g(e1,e2) = 0.3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("g(e2,e2) = 1.09 instead of 1"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("tolerance"), std::string::npos) << msg;
+}
+
+TEST(Tetrad, InCoordinatesIsCheckedWithTheMetric) {
+  auto m = make_metric("Schwarzschild");
+  TetradSpec spec;
+  spec.pos = Vec4{{0, 10, 1.0, 0}};
+  spec.incoords = true;  // coordinate basis vectors are not unit at r = 10
+  EXPECT_NE(error_of([&] { build_tetrad(*m, spec); }).find("g(e0,e0) = -0.8 instead of -1"), std::string::npos);
+}
+
+TEST(Tetrad, BoostMatchesTheFourVelocityAndStaysOrthonormal) {
+  auto m = make_metric("Schwarzschild");
+  const Vec4 x{{0, 6, M_PI / 2, 0}};
+  const Tetrad nat = m->natural_tetrad(x);
+  const Vec3 beta{0.1, -0.2, 0.5};
+  const Tetrad b = boost_tetrad(nat, beta);
+  const Vec4 u = local_four_velocity(nat, beta);  // metric.cpp: u = γ(e0 + β^i e_i)
+  for (int mu = 0; mu < 4; ++mu) EXPECT_NEAR(b[0][mu], u[mu], 1e-14);
+  EXPECT_LT(orthonormality_error(*m, x, b), 1e-14);
+  // Pure boost along ê_3 only: e3' = γ(β ê0 + ê3), e1', e2' unchanged (Jackson 11.19).
+  const Tetrad b3 = boost_tetrad(nat, Vec3{0, 0, 0.6});
+  const double g = 1.25;
+  const Vec4 l3 = coord_to_local(*m, x, nat, b3[3]);
+  EXPECT_NEAR(l3[0], g * 0.6, 1e-14);
+  EXPECT_NEAR(l3[3], g, 1e-14);
+  EXPECT_NEAR(l3[1], 0, 1e-14);
+  for (int mu = 0; mu < 4; ++mu) EXPECT_NEAR(b3[1][mu], nat[1][mu], 1e-15);
+  // local_velocity inverts the boost
+  const Vec3 back = local_velocity(*m, x, nat, b[0]);
+  EXPECT_NEAR(back.x, 0.1, 1e-14);
+  EXPECT_NEAR(back.y, -0.2, 1e-14);
+  EXPECT_NEAR(back.z, 0.5, 1e-14);
+}
+
+TEST(Tetrad, LocalVelocityBoostsTheUserFrame) {
+  // init-motion of paper §3: localvel 0.5 along ê_φ with e1 = −ê_θ, e2 = −ê_φ, e3 = ê_r.
+  auto m = make_metric("Schwarzschild");
+  TetradSpec spec;
+  spec.pos = Vec4{{0, 6, M_PI / 2, 0}};
+  spec.e[1] = Vec4{{0, 0, -1, 0}};
+  spec.e[2] = Vec4{{0, 0, 0, -1}};
+  spec.e[3] = Vec4{{0, 1, 0, 0}};
+  spec.localvel = Vec3{0, 0, 0.5};
+  const Tetrad e = build_tetrad(*m, spec);
+  const Tetrad nat = m->natural_tetrad(spec.pos);
+  const double g = 1 / std::sqrt(0.75);
+  const Vec4 l0 = coord_to_local(*m, spec.pos, nat, e[0]);
+  EXPECT_NEAR(l0[0], g, 1e-14);
+  EXPECT_NEAR(l0[3], 0.5 * g, 1e-14);
+  const Vec4 l2 = coord_to_local(*m, spec.pos, nat, e[2]);  // −(γβ ê0 + γ ê_φ)
+  EXPECT_NEAR(l2[0], -0.5 * g, 1e-14);
+  EXPECT_NEAR(l2[3], -g, 1e-14);
+  const Vec4 l3 = coord_to_local(*m, spec.pos, nat, e[3]);  // ê_r unchanged
+  EXPECT_NEAR(l3[1], 1, 1e-14);
+  EXPECT_NEAR(l3[0], 0, 1e-14);
+  EXPECT_LT(orthonormality_error(*m, spec.pos, e), 1e-14);
+}
+
+TEST(Tetrad, AdaptedToFourVelocity) {
+  auto m = make_metric("Schwarzschild");
+  const Vec4 x{{0, 8, 1.2, 0.3}};
+  const Tetrad nat = m->natural_tetrad(x);
+  const Vec4 u = 3.0 * local_four_velocity(nat, Vec3{0.3, 0.1, -0.4});  // not normalized
+  const Tetrad e = tetrad_for_four_velocity(*m, x, nat, u);
+  EXPECT_LT(orthonormality_error(*m, x, e), 1e-13);
+  for (int mu = 0; mu < 4; ++mu) EXPECT_NEAR(e[0][mu], u[mu] / 3.0, 1e-13);
+}
+
+TEST(Tetrad, GramSchmidt) {
+  auto m = make_metric("Schwarzschild");
+  const Vec4 x{{0, 5, 0.7, 1.0}};
+  Tetrad v{};
+  v[0] = Vec4{{2.0, 0.3, 0.01, 0.02}};
+  v[1] = Vec4{{0.5, 1.0, 0.1, 0.0}};
+  v[2] = Vec4{{0.1, 0.2, 0.3, 0.0}};
+  v[3] = Vec4{{0.0, 0.1, 0.2, 0.5}};
+  const Tetrad e = gram_schmidt(*m, x, v);
+  EXPECT_LT(orthonormality_error(*m, x, e), 1e-14);
+  const double ratio = e[0][0] / v[0][0];  // e0 ∥ v0, same orientation
+  EXPECT_GT(ratio, 0);
+  for (int mu = 1; mu < 4; ++mu) EXPECT_NEAR(e[0][mu], ratio * v[0][mu], 1e-14);
+
+  Tetrad deg = v;
+  deg[2] = 2.0 * v[1];
+  EXPECT_NE(error_of([&] { gram_schmidt(*m, x, deg); }).find("e2"), std::string::npos);
+  Tetrad spacelike = v;
+  spacelike[0] = Vec4{{0.0, 1.0, 0, 0}};
+  EXPECT_NE(error_of([&] { gram_schmidt(*m, x, spacelike); }).find("timelike"), std::string::npos);
+}
+
+TEST(Tetrad, Errors) {
+  auto m = make_metric("Schwarzschild");
+  const Vec4 x{{0, 6, M_PI / 2, 0}};
+  const Tetrad nat = m->natural_tetrad(x);
+  EXPECT_NE(error_of([&] { boost_tetrad(nat, Vec3{0.6, 0.8, 0}); }).find("|v| < 1"), std::string::npos);
+  TetradSpec inside;
+  inside.pos = Vec4{{0, 1.5, M_PI / 2, 0}};
+  EXPECT_NE(error_of([&] { build_tetrad(*m, inside); }).find("validity domain"), std::string::npos);
+  TetradSpec lnrf;
+  lnrf.pos = x;
+  lnrf.frame = TetradKind::LNRF;
+  EXPECT_NE(error_of([&] { build_tetrad(*m, lnrf); }).find("lnrf"), std::string::npos);
+  // past-directed four-velocity
+  EXPECT_NE(error_of([&] { local_velocity(*m, x, nat, -1.0 * nat[0]); }).find("future"), std::string::npos);
+}
+
+TEST(Tetrad, FromParamsReportsFileLineCommandKey) {
+  auto m = make_metric("Schwarzschild");
+  ParamSet ps("local-tetrad", SourceLoc{"scene.scm", 12});
+  ps.add("pos", std::vector<double>{0, 30, M_PI / 2, 0});
+  ps.add("e1", std::vector<double>{0, -1, 0.5, 0});
+  ps.add("incoords", false);
+  const std::string msg = error_of([&] { tetrad_from_params(ps, *m); });
+  EXPECT_EQ(msg.rfind("scene.scm:12: local-tetrad: e0..e3:", 0), 0u) << msg;
+
+  ParamSet fast("local-tetrad", SourceLoc{"scene.scm", 3});
+  fast.add("pos", std::vector<double>{0, 30, M_PI / 2, 0});
+  fast.add("localvel", std::vector<double>{0, 0, 1.0});
+  EXPECT_NE(error_of([&] { tetrad_from_params(fast, *m); }).find("localvel"), std::string::npos);
+
+  ParamSet kind("init-motion", SourceLoc{"scene.scm", 7});
+  kind.add("pos", std::vector<double>{0, 30, M_PI / 2, 0});
+  kind.add("localframe", "statik");
+  EXPECT_NE(error_of([&] { tetrad_from_params(kind, *m); }).find("did you mean \"static\""), std::string::npos);
+
+  ParamSet ok("local-tetrad", SourceLoc{"scene.scm", 1});
+  ok.add("pos", std::vector<double>{0, 30, M_PI / 2, 0, 0});  // GeoViS' 5-vector pos
+  ok.add("localframe", 1);
+  Vec4 pos;
+  const Tetrad e = tetrad_from_params(ok, *m, &pos);
+  EXPECT_EQ(pos[1], 30);
+  EXPECT_LT(orthonormality_error(*m, pos, e), 1e-14);
+}
