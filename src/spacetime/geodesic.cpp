@@ -1,6 +1,10 @@
 #include "spacetime/geodesic.h"
 
+#include <cmath>
+#include <sstream>
+
 #include "core/error.h"
+#include "spacetime/integrators.h"
 
 namespace geovis {
 
@@ -25,7 +29,8 @@ GeodesicType parse_geodesic_type(const std::string& s) {
 const std::vector<SolverInfo>& solver_names() {
   // Catalogue §13: GeoViS/Motion4D names and what they map onto here. GSL's implicit methods
   // (Gaussian points, Gear) target stiff problems; geodesics are not stiff, so they map onto the
-  // explicit method of the same order with step control.
+  // explicit method of the same order with step control. GSL's rk8pd (Prince-Dormand 8(7)) and
+  // Motion4D's DP65 map onto the closest high-order method we have, DOP853.
   static const std::vector<SolverInfo> names = {
       {"RK4", SolverKind::RK4, "classical 4th-order Runge-Kutta, fixed step (Motion4D GeodesicRK4)"},
       {"BS", SolverKind::BulirschStoer, "Bulirsch-Stoer extrapolation (Motion4D GeodesicBS)"},
@@ -39,9 +44,16 @@ const std::vector<SolverInfo>& solver_names() {
       {"GSL_M2_IG", SolverKind::RK2, "mapped onto the embedded 2nd-order Runge-Kutta"},
       {"DP54", SolverKind::DormandPrince54, "Dormand-Prince 5(4)"},
       {"DP65", SolverKind::DormandPrince853, "mapped onto Dormand-Prince 8(5,3)"},
-      {"DP853", SolverKind::DormandPrince853, "Dormand-Prince 8(5,3) (Hairer's DOP853)"},
+      // Our names (solver_kind_name) and short aliases.
+      {"RK2", SolverKind::RK2, "Heun-Euler embedded 2(1)"},
+      {"CashKarp45", SolverKind::CashKarp45, "Runge-Kutta Cash-Karp 4(5)"},
       {"CashKarp", SolverKind::CashKarp45, "Runge-Kutta Cash-Karp 4(5)"},
+      {"Fehlberg45", SolverKind::Fehlberg45, "Runge-Kutta-Fehlberg 4(5)"},
       {"Fehlberg", SolverKind::Fehlberg45, "Runge-Kutta-Fehlberg 4(5)"},
+      {"DormandPrince54", SolverKind::DormandPrince54, "Dormand-Prince 5(4), FSAL"},
+      {"DOP853", SolverKind::DormandPrince853, "Dormand-Prince 8(5,3) (Hairer's DOP853)"},
+      {"DP853", SolverKind::DormandPrince853, "Dormand-Prince 8(5,3) (Hairer's DOP853)"},
+      {"BulirschStoer", SolverKind::BulirschStoer, "Gragg-Bulirsch-Stoer extrapolation"},
       // Motion4D full names (catalogue §13).
       {"Runge-Kutta (fourth order)", SolverKind::RK4, "classical 4th-order Runge-Kutta"},
       {"Bulirsch-Stoer", SolverKind::BulirschStoer, "Bulirsch-Stoer extrapolation"},
@@ -109,6 +121,24 @@ const char* stop_reason_name(StopReason r) {
     case StopReason::NotFinite: return "not-finite";
   }
   return "?";
+}
+
+void validate_solver_config(const SolverConfig& cfg) {
+  auto fail = [](const char* key, const std::string& expected, double found) {
+    std::ostringstream os;
+    os << "solver: " << key << ": expected " << expected << ", found " << found;
+    throw Error(os.str());
+  };
+  if (!(cfg.eps_abs >= 0) || !std::isfinite(cfg.eps_abs)) fail("eps_abs", "a finite number >= 0", cfg.eps_abs);
+  if (!(cfg.eps_rel >= 0) || !std::isfinite(cfg.eps_rel)) fail("eps_rel", "a finite number >= 0", cfg.eps_rel);
+  if (cfg.step_ctrl && cfg.eps_abs == 0 && cfg.eps_rel == 0)
+    fail("eps_abs", "a positive tolerance (eps_abs and eps_rel are both 0)", cfg.eps_abs);
+  if (!(cfg.step_size > 0) || !std::isfinite(cfg.step_size)) fail("step_size", "a finite number > 0", cfg.step_size);
+  if (!(cfg.step_max > 0)) fail("max_step", "a number > 0", cfg.step_max);
+  if (!(cfg.step_min >= 0)) fail("step_min", "a number >= 0", cfg.step_min);
+  if (cfg.max_steps < 0) fail("max_steps", "an integer >= 0", cfg.max_steps);
+  if (!(cfg.lambda_max > 0)) fail("lambda_max", "a number > 0", cfg.lambda_max);
+  if (!(cfg.constraint_tol > 0)) fail("constraint_tol", "a number > 0", cfg.constraint_tol);
 }
 
 void hermite_interpolate(const StepView& st, double s, Vec4& x, Vec4& k) {

@@ -73,7 +73,8 @@ struct SolverConfig {
   /// it leaves it.
   Vec4 box_ll{{-DBL_MAX, -DBL_MAX, -DBL_MAX, -DBL_MAX}};
   Vec4 box_ur{{DBL_MAX, DBL_MAX, DBL_MAX, DBL_MAX}};
-  /// Stop when |g(k,k) - target| exceeds this (relative to the size of k's time component).
+  /// Stop when |g(k,k) - target| exceeds this times max(Σ_{μν} |g_μν k^μ k^ν|, |target|), i.e.
+  /// relative to the size of the terms that cancel in g(k,k) (integrators.h, MetricSystem).
   double constraint_tol = 1e-2;
   /// Re-project k onto the constraint surface after every accepted step.
   bool reproject = false;

@@ -1,20 +1,41 @@
-// Integrator templates: the ODE systems along a geodesic and the explicit steppers. Everything
-// here is a template instantiated per concrete metric (metric_crtp.h), so a Runge-Kutta stage is
-// straight-line code with the metric's Christoffel symbols inlined.
+// Integrator templates: the ODE systems along a geodesic, the explicit steppers and the step-size
+// driver. Everything here is a template instantiated per concrete metric (metric_crtp.h), so a
+// Runge-Kutta stage is straight-line code with the metric's Christoffel symbols inlined: no heap
+// allocation and no virtual call per stage; the solver kind is dispatched once per geodesic.
 //
-// Stepper concept:
-//   static constexpr int kOrder;                 // order of the propagated solution
-//   static constexpr int kErrOrder;              // order of the embedded estimate (0: none)
+// Steppers (tableaux from the original papers, as reprinted in Hairer, Nørsett & Wanner, "Solving
+// Ordinary Differential Equations I", 2nd ed., Springer 1993 — "HNW" below):
+//   RK2        Heun–Euler embedded 2(1) (trapezoidal Heun / explicit Euler; HNW I §II.4)
+//   RK4        classical Runge–Kutta, fixed step (HNW I §II.1)
+//   CashKarp45 Cash & Karp, ACM TOMS 16 (1990) 201; 5th order propagated (as GSL rkck)
+//   Fehlberg45 Fehlberg, NASA TR R-315 (1969), HNW I §II.5; 4th order propagated (classical RKF45)
+//   DP54       Dormand & Prince, J. Comput. Appl. Math. 6 (1980) 19; HNW I §II.5, FSAL
+//   DOP853     Hairer's DOP853 (HNW I §II.10, code dop853.f): 8th order with the combined 5th/3rd
+//              order error estimator err = e5² / sqrt(e5² + 0.01 e3²)
+//   BS         Gragg–Bulirsch–Stoer: modified midpoint rule with Gragg's smoothing step, polynomial
+//              (Aitken–Neville) extrapolation in h², error from the last two entries of the
+//              extrapolation table, order and step size selection by work per unit step (HNW I
+//              §II.9, Hairer's code ODEX).
+//
+// Stepper concept (an object, constructed per geodesic from the SolverConfig):
+//   static constexpr bool kHasErrorEstimate;
 //   template <int N, class F> bool attempt(F& f, const double* y, const double* dy, double h,
-//                                          double* yout, double* yerr, double* dyout, long& evals);
-//     one trial step of size h from (y, dy = f(y)); writes the new state and an error estimate
-//     (componentwise, zero when kErrOrder == 0); returns true when it also wrote dyout = f(yout)
-//     (first-same-as-last methods).
+//                                          double* yout, double* dyout, const ErrorScale& tol,
+//                                          long& evals, double& err);
+//     one trial step of signed size h from (y, dy = f(y)); writes the new state and the scaled
+//     error norm err (≤ 1: acceptable; 0 when the stepper has no estimate); returns true when it
+//     also wrote dyout = f(yout) (first-same-as-last methods).
+//   double next_step(double h, double err, bool accepted, bool after_reject);
+//     the |h| proposed for the next attempt.
 #pragma once
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <limits>
+#include <utility>
 
+#include "core/error.h"
 #include "spacetime/geodesic.h"
 #include "spacetime/vec.h"
 
@@ -22,8 +43,8 @@ namespace geovis {
 
 // ---- ODE systems -------------------------------------------------------------------------------
 
-/// Geodesic equation d²x^μ/dλ² = −Γ^μ_{ab} k^a k^b (y = x, k). Uses the metric's hand-written
-/// acceleration when it has one, else contracts the closed-form Christoffel symbols.
+/// Geodesic equation in coordinates, d²x^μ/dλ² = −Γ^μ_{ab} k^a k^b (y = x, k). Uses the metric's
+/// hand-written acceleration when it has one, else contracts the Christoffel symbols.
 template <class M>
 struct GeodesicRHS {
   static constexpr int N = 8;
@@ -65,39 +86,172 @@ struct TransportRHS {
 
 // The Jacobi system (Sachs basis + Jacobi matrix) lives in spacetime/jacobi.h.
 
-// ---- Butcher tableaux ---------------------------------------------------------------------------
+// ---- error norm ----------------------------------------------------------------------------------
 
-/// Generic explicit embedded Runge-Kutta step from a tableau type with static members
-/// S (stages), c[S], a[S][S], b[S] (propagated), e[S] = b - b_hat (error weights), kOrder,
-/// kErrOrder, kFsal.
+/// GSL's "y" control (gsl_odeiv2_control_y_new, as GeoViS uses it): component i may carry the
+/// local error D_i = eps_abs + eps_rel·|y_i|. The scaled error is the maximum over components of
+/// |err_i| / D_i. |y_i| is taken at the start of the step, not at its end as in GSL and HNW I
+/// §II.4: a trial step that jumps across a singularity produces a huge y_new and must not
+/// inflate its own tolerance with it (test BlowUpStopsBeforeTheSingularity).
+struct ErrorScale {
+  double eps_abs = 0, eps_rel = 0;
+  /// max_i |err_i| / (eps_abs + eps_rel·|y0_i|); NaN when an error component is NaN. With
+  /// eps_rel = 0 (GeoViS's default) this is one division per step instead of one per component.
+  template <int N>
+  double norm(const double* err, const double* y0) const {
+    double m = 0;
+    bool nan = false;
+    if (eps_rel == 0.0) {
+      for (int i = 0; i < N; ++i) {
+        const double a = std::fabs(err[i]);
+        nan |= a != a;
+        m = std::max(m, a);
+      }
+      m /= eps_abs;
+    } else {
+      for (int i = 0; i < N; ++i) {
+        const double a = std::fabs(err[i]);
+        nan |= a != a;
+        m = std::max(m, a / (eps_abs + eps_rel * std::fabs(y0[i])));
+      }
+    }
+    return nan ? std::numeric_limits<double>::quiet_NaN() : m;
+  }
+};
+
+// ---- explicit Runge-Kutta ------------------------------------------------------------------------
+
+namespace rk_detail {
+
+/// acc += a·k[j][i] for the compile-time coefficient a = Tab::a[s][j] (skipped when zero, so the
+/// unrolled stage is exactly the tableau's non-zero pattern).
+template <class Tab, int s, int j, int S, int N>
+inline void add_a(double& acc, const double (&k)[S][N], int i) {
+  if constexpr (Tab::a[s][j] != 0.0) acc += Tab::a[s][j] * k[j][i];
+}
+template <class Tab, int S, int N, const double (&w)[S], int j>
+inline void add_w(double& acc, const double (&k)[S][N], int i) {
+  if constexpr (w[j] != 0.0) acc += w[j] * k[j][i];
+}
+/// Σ_j w[j] k[j][i] over the non-zero weights.
+template <class Tab, int S, int N, const double (&w)[S]>
+inline double weighted(const double (&k)[S][N], int i) {
+  double acc = 0.0;
+  [&]<int... j>(std::integer_sequence<int, j...>) {
+    (add_w<Tab, S, N, w, j>(acc, k, i), ...);
+  }(std::make_integer_sequence<int, S>{});
+  return acc;
+}
+
+/// Stage s (≥ 1): tmp = y + h Σ_{j<s} a[s][j] k_j, then k_s = f(tmp).
+template <class Tab, int s, int S, int N, class F>
+inline void stage(F& f, const double* y, double h, double (&k)[S][N]) {
+  double tmp[N];
+  for (int i = 0; i < N; ++i) {
+    double acc = 0.0;
+    [&]<int... j>(std::integer_sequence<int, j...>) {
+      (add_a<Tab, s, j, S, N>(acc, k, i), ...);
+    }(std::make_integer_sequence<int, s>{});
+    tmp[i] = y[i] + h * acc;
+  }
+  f(tmp, k[s]);
+}
+
+template <class Tab, int S, int N, class F>
+inline void all_stages(F& f, const double* y, double h, double (&k)[S][N]) {
+  [&]<int... s>(std::integer_sequence<int, s...>) {
+    (stage<Tab, s + 1, S, N>(f, y, h, k), ...);
+  }(std::make_integer_sequence<int, S - 1>{});
+}
+
+}  // namespace rk_detail
+
+/// Step-size control of the embedded pairs. Standard rule (HNW I §II.4):
+///   h_new = h·0.9·err^(−1/q̂),  q̂ = kErrExp (the error estimate behaves like h^q̂),
+/// growth limited to ×5 and shrink to ×0.2 (GSL's standard control), no growth right after a
+/// rejection (HNW I §II.4). After two accepted steps in a row it also applies Gustafsson's
+/// predictive rule (Gustafsson, ACM TOMS 20 (1994) 496; HNW II §IV.8, as in Hairer's RADAU5)
+///   h_new = h·0.9·err^(−1/q̂) · (h/h_old) · (err_old/err)^(1/q̂)
+/// and takes the smaller proposal: when the error grows steadily from step to step (a ray falling
+/// towards a black hole), the standard rule keeps proposing steps that are then rejected.
+template <int kErrExp>
+struct StepController {
+  static constexpr double kSafety = 0.9, kMaxGrow = 5.0, kMaxShrink = 0.2;
+  double h_old = 0, q_old = 0;  ///< last accepted step and its err^(1/q̂); h_old = 0: none yet
+
+  double next(double h, double err, bool accepted, bool after_reject) {
+    h = std::fabs(h);
+    double fac, q = 0;
+    if (!(err > 0.0)) {
+      fac = kMaxGrow;
+    } else if (std::isfinite(err)) {
+      q = std::pow(err, 1.0 / kErrExp);
+      fac = kSafety / q;
+      if (accepted && h_old > 0 && q_old > 0) fac = std::min(fac, fac * (h / h_old) * (q_old / q));
+      fac = std::clamp(fac, kMaxShrink, kMaxGrow);
+    } else {
+      fac = kMaxShrink;
+    }
+    if (!accepted) {
+      fac = std::min(fac, kSafety);
+    } else {
+      if (after_reject) fac = std::min(fac, 1.0);
+      h_old = h;
+      q_old = q;
+    }
+    return h * fac;
+  }
+};
+
+/// Explicit embedded Runge-Kutta step from a tableau with static members S (stages), a[S][S],
+/// b[S] (propagated solution), e[S] = b − b̂ (error weights), kErrExp (0: no estimate), kFsal.
 template <class Tab>
 struct ExplicitRK {
-  static constexpr int kOrder = Tab::kOrder;
-  static constexpr int kErrOrder = Tab::kErrOrder;
+  static constexpr bool kHasErrorEstimate = Tab::kErrExp > 0;
+  explicit ExplicitRK(const SolverConfig&) {}
+  StepController<(Tab::kErrExp > 0 ? Tab::kErrExp : 1)> control;
+
+  template <int N, class F>
+  bool attempt(F& f, const double* y, const double* dy, double h, double* yout, double* dyout,
+               const ErrorScale& tol, long& evals, double& err) {
+    constexpr int S = Tab::S;
+    double k[S][N];
+    for (int i = 0; i < N; ++i) k[0][i] = dy[i];
+    rk_detail::all_stages<Tab>(f, y, h, k);
+    evals += S - 1;
+    double e[N];
+    for (int i = 0; i < N; ++i) {
+      yout[i] = y[i] + h * rk_detail::weighted<Tab, S, N, Tab::b>(k, i);
+      if constexpr (kHasErrorEstimate) e[i] = h * rk_detail::weighted<Tab, S, N, Tab::e>(k, i);
+    }
+    err = 0.0;
+    if constexpr (kHasErrorEstimate) err = tol.norm<N>(e, y);
+    if constexpr (Tab::kFsal) {
+      // The last stage was evaluated at yout itself (c_S = 1, a[S-1] = b).
+      for (int i = 0; i < N; ++i) dyout[i] = k[S - 1][i];
+      return true;
+    }
+    return false;
+  }
+  double next_step(double h, double err, bool accepted, bool after_reject) {
+    if constexpr (kHasErrorEstimate) return control.next(h, err, accepted, after_reject);
+    return std::fabs(h);
+  }
+
+  /// Componentwise form for callers with their own step control (e.g. Fermi–Walker transport in
+  /// transport.cpp): writes yerr_i = h Σ_s e_s k_{s,i}; returns true when dyout = f(yout) was
+  /// written. Prefer integrate_ode(), which adds the step-size control and stop logic.
   template <int N, class F>
   static bool attempt(F& f, const double* y, const double* dy, double h, double* yout, double* yerr,
                       double* dyout, long& evals) {
     constexpr int S = Tab::S;
     double k[S][N];
-    double tmp[N];
     for (int i = 0; i < N; ++i) k[0][i] = dy[i];
-    for (int s = 1; s < S; ++s) {
-      for (int i = 0; i < N; ++i) {
-        double acc = 0;
-        for (int j = 0; j < s; ++j) acc += Tab::a[s][j] * k[j][i];
-        tmp[i] = y[i] + h * acc;
-      }
-      f(tmp, k[s]);
-      ++evals;
-    }
+    rk_detail::all_stages<Tab>(f, y, h, k);
+    evals += S - 1;
     for (int i = 0; i < N; ++i) {
-      double acc = 0, err = 0;
-      for (int s = 0; s < S; ++s) {
-        acc += Tab::b[s] * k[s][i];
-        err += Tab::e[s] * k[s][i];
-      }
-      yout[i] = y[i] + h * acc;
-      yerr[i] = h * err;
+      yout[i] = y[i] + h * rk_detail::weighted<Tab, S, N, Tab::b>(k, i);
+      yerr[i] = h * rk_detail::weighted<Tab, S, N, Tab::e>(k, i);
     }
     if constexpr (Tab::kFsal) {
       for (int i = 0; i < N; ++i) dyout[i] = k[S - 1][i];
@@ -107,11 +261,33 @@ struct ExplicitRK {
   }
 };
 
-/// Cash & Karp, ACM TOMS 16 (1990) 201: embedded 4(5), the 5th-order solution is propagated
-/// (as GSL's rkck and Numerical Recipes).
-struct CashKarpTableau {
-  static constexpr int S = 6, kOrder = 5, kErrOrder = 4;
+/// Heun–Euler embedded pair 2(1): Heun's trapezoidal method (order 2) is propagated, explicit Euler
+/// (order 1) is the comparison; the estimate behaves like h².
+struct HeunEulerTableau {
+  static constexpr int S = 2, kErrExp = 2;
   static constexpr bool kFsal = false;
+  static constexpr double c[2] = {0, 1};
+  static constexpr double a[2][2] = {{0, 0}, {1, 0}};
+  static constexpr double b[2] = {0.5, 0.5};
+  static constexpr double e[2] = {0.5 - 1.0, 0.5};
+};
+
+/// Classical fourth-order Runge-Kutta (fixed step; no error estimate).
+struct RK4Tableau {
+  static constexpr int S = 4, kErrExp = 0;
+  static constexpr bool kFsal = false;
+  static constexpr double c[4] = {0, 0.5, 0.5, 1};
+  static constexpr double a[4][4] = {{0, 0, 0, 0}, {0.5, 0, 0, 0}, {0, 0.5, 0, 0}, {0, 0, 1, 0}};
+  static constexpr double b[4] = {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6};
+  static constexpr double e[4] = {0, 0, 0, 0};
+};
+
+/// Cash & Karp (1990): embedded 4(5); the 5th-order solution is propagated (as GSL's rkck
+/// and Numerical Recipes), the estimate is the 4th-order local error, ~h⁵.
+struct CashKarpTableau {
+  static constexpr int S = 6, kErrExp = 5;
+  static constexpr bool kFsal = false;
+  static constexpr double c[6] = {0, 1.0 / 5, 3.0 / 10, 3.0 / 5, 1, 7.0 / 8};
   static constexpr double a[6][6] = {
       {0, 0, 0, 0, 0, 0},
       {1.0 / 5, 0, 0, 0, 0, 0},
@@ -124,130 +300,439 @@ struct CashKarpTableau {
                                   125.0 / 594 - 13525.0 / 55296, -277.0 / 14336, 512.0 / 1771 - 0.25};
 };
 
-/// Classical fourth-order Runge-Kutta (fixed step; no error estimate).
-struct RK4Tableau {
-  static constexpr int S = 4, kOrder = 4, kErrOrder = 0;
+/// Runge–Kutta–Fehlberg 4(5) (Fehlberg 1969; HNW I §II.5): the 4th-order
+/// solution is propagated as in Fehlberg's original method, the 5th-order one estimates its
+/// error, ~h⁵.
+struct FehlbergTableau {
+  static constexpr int S = 6, kErrExp = 5;
   static constexpr bool kFsal = false;
-  static constexpr double a[4][4] = {{0, 0, 0, 0}, {0.5, 0, 0, 0}, {0, 0.5, 0, 0}, {0, 0, 1, 0}};
-  static constexpr double b[4] = {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6};
-  static constexpr double e[4] = {0, 0, 0, 0};
+  static constexpr double c[6] = {0, 1.0 / 4, 3.0 / 8, 12.0 / 13, 1, 1.0 / 2};
+  static constexpr double a[6][6] = {
+      {0, 0, 0, 0, 0, 0},
+      {1.0 / 4, 0, 0, 0, 0, 0},
+      {3.0 / 32, 9.0 / 32, 0, 0, 0, 0},
+      {1932.0 / 2197, -7200.0 / 2197, 7296.0 / 2197, 0, 0, 0},
+      {439.0 / 216, -8.0, 3680.0 / 513, -845.0 / 4104, 0, 0},
+      {-8.0 / 27, 2.0, -3544.0 / 2565, 1859.0 / 4104, -11.0 / 40, 0}};
+  static constexpr double b[6] = {25.0 / 216, 0, 1408.0 / 2565, 2197.0 / 4104, -1.0 / 5, 0};
+  static constexpr double e[6] = {25.0 / 216 - 16.0 / 135,       0,
+                                  1408.0 / 2565 - 6656.0 / 12825, 2197.0 / 4104 - 28561.0 / 56430,
+                                  -1.0 / 5 + 9.0 / 50,            -2.0 / 55};
+};
+
+/// Dormand & Prince (1980) RK5(4)7M (HNW I §II.5): 5th order propagated, FSAL (the 7th
+/// stage is f at the new point), estimate ~h⁵.
+struct DormandPrince54Tableau {
+  static constexpr int S = 7, kErrExp = 5;
+  static constexpr bool kFsal = true;
+  static constexpr double c[7] = {0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1};
+  static constexpr double a[7][7] = {
+      {0, 0, 0, 0, 0, 0, 0},
+      {1.0 / 5, 0, 0, 0, 0, 0, 0},
+      {3.0 / 40, 9.0 / 40, 0, 0, 0, 0, 0},
+      {44.0 / 45, -56.0 / 15, 32.0 / 9, 0, 0, 0, 0},
+      {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729, 0, 0, 0},
+      {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656, 0, 0},
+      {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0}};
+  static constexpr double b[7] = {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0};
+  static constexpr double e[7] = {71.0 / 57600,  0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200,
+                                  22.0 / 525, -1.0 / 40};
+};
+
+/// Hairer's DOP853 (HNW I §II.10; coefficients of dop853.f, Dormand & Prince 1981 8(7)13M
+/// re-optimized with a 5th- and 3rd-order embedded pair). 12 stages, 8th-order propagated.
+struct DOP853Tableau {
+  static constexpr int S = 12;
+  static constexpr double c[12] = {0.0,
+                                   0.526001519587677318785587544488e-01,
+                                   0.789002279381515978178381316732e-01,
+                                   0.118350341907227396726757197510e+00,
+                                   0.281649658092772603273242802490e+00,
+                                   0.333333333333333333333333333333e+00,
+                                   0.25e+00,
+                                   0.307692307692307692307692307692e+00,
+                                   0.651282051282051282051282051282e+00,
+                                   0.6e+00,
+                                   0.857142857142857142857142857142e+00,
+                                   1.0};
+  static constexpr double a[12][12] = {
+      {},
+      {5.26001519587677318785587544488e-2},
+      {1.97250569845378994544595329183e-2, 5.91751709536136983633785987549e-2},
+      {2.95875854768068491816892993775e-2, 0, 8.87627564304205475450678981324e-2},
+      {2.41365134159266685502369798665e-1, 0, -8.84549479328286085344864962717e-1,
+       9.24834003261792003115737966543e-1},
+      {3.7037037037037037037037037037e-2, 0, 0, 1.70828608729473871279604482173e-1,
+       1.25467687566822425016691814123e-1},
+      {3.7109375e-2, 0, 0, 1.70252211019544039314978060272e-1, 6.02165389804559606850219397283e-2,
+       -1.7578125e-2},
+      {3.70920001185047927108779319836e-2, 0, 0, 1.70383925712239993810214054705e-1,
+       1.07262030446373284651809199168e-1, -1.53194377486244017527936158236e-2,
+       8.27378916381402288758473766002e-3},
+      {6.24110958716075717114429577812e-1, 0, 0, -3.36089262944694129406857109825e0,
+       -8.68219346841726006818189891453e-1, 2.75920996994467083049415600797e1,
+       2.01540675504778934086186788979e1, -4.34898841810699588477366255144e1},
+      {4.77662536438264365890433908527e-1, 0, 0, -2.48811461997166764192642586468e0,
+       -5.90290826836842996371446475743e-1, 2.12300514481811942347288949897e1,
+       1.52792336328824235832596922938e1, -3.32882109689848629194453265587e1,
+       -2.03312017085086261358222928593e-2},
+      {-9.3714243008598732571704021658e-1, 0, 0, 5.18637242884406370830023853209e0,
+       1.09143734899672957818500254654e0, -8.14978701074692612513997267357e0,
+       -1.85200656599969598641566180701e1, 2.27394870993505042818970056734e1,
+       2.49360555267965238987089396762e0, -3.0467644718982195003823669022e0},
+      {2.27331014751653820792359768449e0, 0, 0, -1.05344954667372501984066689879e1,
+       -2.00087205822486249909675718444e0, -1.79589318631187989172765950534e1,
+       2.79488845294199600508499808837e1, -2.85899827713502369474065508674e0,
+       -8.87285693353062954433549289258e0, 1.23605671757943030647266201528e1,
+       6.43392746015763530355970484046e-1}};
+  static constexpr double b[12] = {5.42937341165687622380535766363e-2, 0, 0, 0, 0,
+                                   4.45031289275240888144113950566e0,  1.89151789931450038304281599044e0,
+                                   -5.8012039600105847814672114227e0,  3.1116436695781989440891606237e-1,
+                                   -1.52160949662516078556178806805e-1, 2.01365400804030348374776537501e-1,
+                                   4.47106157277725905176885569043e-2};
+  /// 5th-order error weights (b − b̂₅), dop853.f ER1..ER12.
+  static constexpr double e5[12] = {0.1312004499419488073250102996e-01, 0, 0, 0, 0,
+                                    -0.1225156446376204440720569753e+01, -0.4957589496572501915214079952e+00,
+                                    0.1664377182454986536961530415e+01,  -0.3503288487499736816886487290e+00,
+                                    0.3341791187130174790297318841e+00,  0.8192320648511571246570742613e-01,
+                                    -0.2235530786388629525884427845e-01};
+  /// 3rd-order comparison weights b̂₃ (dop853.f BHH1..3 on stages 1, 9, 12); e3 = b − b̂₃.
+  static constexpr double bhh1 = 0.244094488188976377952755905512e+00;
+  static constexpr double bhh2 = 0.733846688281611857341361741547e+00;
+  static constexpr double bhh3 = 0.220588235294117647058823529412e-01;
+  static constexpr double e3[12] = {b[0] - bhh1, 0, 0, 0, 0, b[5], b[6], b[7], b[8] - bhh2, b[9], b[10],
+                                    b[11] - bhh3};
+};
+
+/// DOP853 step: the general stage machinery with Hairer's combined error estimator
+/// err = |h|·e5² / sqrt(e5² + 0.01·e3²) (dop853.f, label 'ERROR ESTIMATION'), here with the max
+/// norm of ErrorScale instead of dop853's RMS norm. It behaves like h⁸ (HNW I §II.10).
+struct DOP853 {
+  using Tab = DOP853Tableau;
+  static constexpr bool kHasErrorEstimate = true;
+  static constexpr int kErrExp = 8;
+  explicit DOP853(const SolverConfig&) {}
+
+  template <int N, class F>
+  bool attempt(F& f, const double* y, const double* dy, double h, double* yout, double* /*dyout*/,
+               const ErrorScale& tol, long& evals, double& err) {
+    constexpr int S = Tab::S;
+    double k[S][N];
+    for (int i = 0; i < N; ++i) k[0][i] = dy[i];
+    rk_detail::all_stages<Tab>(f, y, h, k);
+    evals += S - 1;
+    double e5[N], e3[N];
+    for (int i = 0; i < N; ++i) {
+      yout[i] = y[i] + h * rk_detail::weighted<Tab, S, N, Tab::b>(k, i);
+      e5[i] = rk_detail::weighted<Tab, S, N, Tab::e5>(k, i);
+      e3[i] = rk_detail::weighted<Tab, S, N, Tab::e3>(k, i);
+    }
+    const double err5 = tol.norm<N>(e5, y), err3 = tol.norm<N>(e3, y);
+    const double deno = err5 * err5 + 0.01 * err3 * err3;
+    err = deno > 0 ? std::fabs(h) * err5 * err5 / std::sqrt(deno) : (deno == 0 ? 0.0 : deno);
+    return false;
+  }
+  double next_step(double h, double err, bool accepted, bool after_reject) {
+    return control.next(h, err, accepted, after_reject);
+  }
+  StepController<kErrExp> control;
+};
+
+// ---- Bulirsch–Stoer ------------------------------------------------------------------------------
+
+/// Gragg–Bulirsch–Stoer extrapolation (HNW I §II.9). Row j of the extrapolation table starts with
+/// Gragg's modified midpoint rule over the big step H with n_j = 2(j+1) substeps (Deuflhard's
+/// sequence 2, 4, 6, ...) including Gragg's smoothing step, whose error expands in even powers of
+/// H (Gragg 1965; HNW I §II.9); Aitken–Neville extrapolation (HNW I §II.9)
+///   T_{j,k+1} = T_{j,k} + (T_{j,k} − T_{j−1,k}) / ((n_j / n_{j−k})² − 1)
+/// gives T_{j,j} of order 2(j+1). The error of T_{j,j−1} (order 2j, local error ~H^{2j+1}) is
+/// estimated by |T_{j,j} − T_{j,j−1}|; T_{j,j} is propagated. Order (number of rows) and step
+/// size are chosen to minimize the work per unit step A_j/H_j (HNW I §II.9, code ODEX).
+/// With step control off, kFixedRows rows are used (order 2·kFixedRows = 8).
+struct BulirschStoer {
+  static constexpr bool kHasErrorEstimate = true;
+  static constexpr int kMaxRows = 9;    ///< n = 2 ... 18; highest order 18
+  static constexpr int kFixedRows = 4;  ///< order 8 with fixed steps
+  static constexpr int n(int j) { return 2 * (j + 1); }
+  /// Work (f evaluations) for rows 0..j, including the evaluation at the start of the step.
+  static constexpr double work(int j) {
+    double w = 1;
+    for (int l = 0; l <= j; ++l) w += n(l);
+    return w;
+  }
+
+  explicit BulirschStoer(const SolverConfig& cfg) : adaptive_(cfg.step_ctrl) {}
+
+  template <int N, class F>
+  bool attempt(F& f, const double* y, const double* dy, double H, double* yout, double* /*dyout*/,
+               const ErrorScale& tol, long& evals, double& err) {
+    double T[kMaxRows][N];  // T[k] = T_{j,k} of the latest row j
+    const int last_row = adaptive_ ? std::min(kopt_ + 1, kMaxRows - 1) : kFixedRows - 1;
+    err = 0.0;
+    int j = 0;
+    for (;; ++j) {
+      double base[N], diff[N];
+      modified_midpoint<N>(f, y, dy, H, n(j), base, evals);
+      double e = 0.0;
+      for (int i = 0; i < N; ++i) {
+        double cur = base[i];
+        for (int k = 0; k < j; ++k) {
+          const double old = T[k][i];
+          T[k][i] = cur;
+          const double r = static_cast<double>(n(j)) / n(j - k - 1);
+          cur = cur + (cur - old) / (r * r - 1.0);
+        }
+        if (j > 0) diff[i] = cur - T[j - 1][i];
+        T[j][i] = cur;
+      }
+      if (j > 0) e = tol.norm<N>(diff, y);
+      if (j == last_row && !adaptive_) break;
+      if (j == 0) continue;
+      // Step proposal from this row: H_j = H·0.94·(0.65/err)^(1/(2j+1)) (ODEX safety factors).
+      const double expo = 1.0 / (2 * j + 1);
+      double fac = 0.02;  // NaN or infinite error
+      if (e == 0) fac = 4.0;
+      else if (e > 0 && std::isfinite(e)) fac = 0.94 * std::pow(0.65 / e, expo);
+      h_row_[j] = std::fabs(H) * std::clamp(fac, 0.02, 4.0);
+      err = e;
+      if (j == last_row || (j >= kopt_ - 1 && e <= 1.0)) break;
+      // Early rejection (ODEX's convergence monitor): with the error dropping like (n_0/n_l)² per row, it
+      // cannot be expected to fall below 1 by row kopt+1.
+      if (j >= kopt_ - 1) {
+        double expect = 1.0;
+        for (int l = j + 1; l <= last_row; ++l) {
+          const double r = static_cast<double>(n(l)) / n(0);
+          expect *= r * r;
+        }
+        if (e > expect) break;
+      }
+    }
+    last_row_ = j;
+    for (int i = 0; i < N; ++i) yout[i] = T[j][i];
+    if (!adaptive_) err = 0.0;
+    return false;
+  }
+
+  double next_step(double h, double err, bool accepted, bool after_reject) {
+    if (!adaptive_) return std::fabs(h);
+    const int j = std::max(1, last_row_);
+    if (!accepted) {
+      // Reduce the step with the proposal of the last row computed; lower the order if possible.
+      kopt_ = std::clamp(std::min(kopt_, j), 2, kMaxRows - 2);
+      const double hr = h_row_[j] > 0 ? h_row_[j] : 0.25 * std::fabs(h);
+      return std::min(hr, 0.9 * std::fabs(h));
+    }
+    (void)err;
+    // Order selection by work per unit step W_j = A_j / H_j.
+    double hnew;
+    const double w_j = work(j) / h_row_[j];
+    const double w_jm = j >= 2 ? work(j - 1) / h_row_[j - 1] : INFINITY;
+    if (j >= 2 && w_jm < 0.8 * w_j) {
+      kopt_ = j - 1;
+      hnew = h_row_[j - 1];
+    } else if (w_j < 0.9 * w_jm && j + 1 <= kMaxRows - 1) {
+      kopt_ = j + 1;
+      hnew = h_row_[j] * work(j + 1) / work(j);
+    } else {
+      kopt_ = j;
+      hnew = h_row_[j];
+    }
+    kopt_ = std::clamp(kopt_, 2, kMaxRows - 2);
+    if (after_reject) hnew = std::min(hnew, std::fabs(h));
+    return hnew;
+  }
+
+ private:
+  /// Gragg's modified midpoint rule with smoothing (HNW I §II.9): z_0 = y,
+  /// z_1 = y + h f(y), z_{m+1} = z_{m−1} + 2h f(z_m), result ½(z_{n−1} + z_n + h f(z_n)), h = H/n.
+  template <int N, class F>
+  static void modified_midpoint(F& f, const double* y, const double* dy, double H, int nsub, double* out,
+                                long& evals) {
+    const double h = H / nsub;
+    double zprev[N], z[N], fz[N];
+    for (int i = 0; i < N; ++i) {
+      zprev[i] = y[i];
+      z[i] = y[i] + h * dy[i];
+    }
+    for (int m = 1; m < nsub; ++m) {
+      f(z, fz);
+      for (int i = 0; i < N; ++i) {
+        const double znew = zprev[i] + 2.0 * h * fz[i];
+        zprev[i] = z[i];
+        z[i] = znew;
+      }
+    }
+    f(z, fz);
+    evals += nsub;
+    for (int i = 0; i < N; ++i) out[i] = 0.5 * (zprev[i] + z[i] + h * fz[i]);
+  }
+  bool adaptive_;
+  int kopt_ = 4;       ///< target row: accept at kopt−1, kopt or kopt+1
+  int last_row_ = 1;   ///< row at which the last attempt ended
+  double h_row_[kMaxRows] = {};
+};
+
+// ---- systems as seen by the driver ---------------------------------------------------------------
+
+/// A geodesic system (GeodesicRHS, TransportRHS, JacobiRHS) on metric M: the state starts with
+/// x^μ, k^μ; the metric's validity domain and the normalization constraint g(k,k) = target apply.
+template <class M, class F>
+struct MetricSystem {
+  static constexpr int N = F::N;
+  static constexpr bool kHasConstraint = true;
+  const M& m;
+  F& f;
+  void operator()(const double* y, double* dy) const { f(y, dy); }
+  bool valid(const double* y) const { return m.is_valid_inline(Vec4{{y[0], y[1], y[2], y[3]}}); }
+  /// Inside the scene's bounding box (GeoViS boundBoxLL/UR, in the metric's coordinates).
+  static bool inside(const SolverConfig& c, const double* y) {
+    for (int i = 0; i < 4; ++i)
+      if (!(y[i] >= c.box_ll[i] && y[i] <= c.box_ur[i])) return false;
+    return true;
+  }
+  /// value = g(k,k) − target; scale = Σ_{μν} |g_μν k^μ k^ν| (the size of the terms that cancel in
+  /// g(k,k)), so the constraint test is relative and stays meaningful where k^0 diverges (horizons).
+  void constraint(const double* y, GeodesicType type, double& value, double& scale) const {
+    Mat4 g;
+    m.metric_tensor_inline(Vec4{{y[0], y[1], y[2], y[3]}}, g);
+    const double* k = y + 4;
+    double s = 0, sa = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const double t = g[i][j] * k[i] * k[j];
+        s += t;
+        sa += std::fabs(t);
+      }
+    value = s - constraint_target(type);
+    scale = std::max(sa, std::fabs(constraint_target(type)));
+  }
+  /// Re-projects k onto g(k,k) = target by solving the quadratic in k^0 (root closest to the
+  /// current k^0); leaves k unchanged when no real root exists.
+  void reproject(double* y, GeodesicType type) const {
+    Mat4 g;
+    m.metric_tensor_inline(Vec4{{y[0], y[1], y[2], y[3]}}, g);
+    const double* k = y + 4;
+    const double A = g[0][0];
+    double B = 0, C = -constraint_target(type);
+    for (int i = 1; i < 4; ++i) {
+      B += 2 * g[0][i] * k[i];
+      for (int j = 1; j < 4; ++j) C += g[i][j] * k[i] * k[j];
+    }
+    if (std::fabs(A) < 1e-300) {
+      if (std::fabs(B) > 1e-300) y[4] = -C / B;
+      return;
+    }
+    const double disc = B * B - 4 * A * C;
+    if (disc < 0) return;
+    // Numerically stable roots (Numerical Recipes §5.6): q = −½(B + sign(B)·√disc).
+    const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+    const double r1 = q / A, r2 = q != 0 ? C / q : r1;
+    y[4] = std::fabs(r1 - k[0]) < std::fabs(r2 - k[0]) ? r1 : r2;
+  }
+};
+
+/// A plain autonomous ODE y' = f(y) (tests, other layers): valid while finite, no constraint.
+template <class F>
+struct PlainSystem {
+  static constexpr int N = F::N;
+  static constexpr bool kHasConstraint = false;
+  F& f;
+  void operator()(const double* y, double* dy) const { f(y, dy); }
+  bool valid(const double* y) const {
+    for (int i = 0; i < N; ++i)
+      if (!std::isfinite(y[i])) return false;
+    return true;
+  }
+  static bool inside(const SolverConfig&, const double*) { return true; }
+  void constraint(const double*, GeodesicType, double& value, double& scale) const { value = 0, scale = 1; }
+  void reproject(double*, GeodesicType) const {}
 };
 
 // ---- driver --------------------------------------------------------------------------------------
 
-/// Target of the normalization constraint and helpers shared by the driver.
-template <class M>
-inline double constraint_value(const M& m, const double* y, GeodesicType type) {
-  const Vec4 x{{y[0], y[1], y[2], y[3]}};
-  const Vec4 k{{y[4], y[5], y[6], y[7]}};
-  Mat4 g;
-  m.metric_tensor_inline(x, g);
-  return dot(g, k, k) - constraint_target(type);
-}
+/// Checks the solver configuration once per geodesic (throws Error with the offending value).
+void validate_solver_config(const SolverConfig& cfg);
 
-/// Re-projects k onto g(k,k) = target by solving the quadratic for k^0 (root closest to the
-/// current k^0); leaves k unchanged when no real root exists.
-template <class M>
-inline void reproject_constraint(const M& m, double* y, GeodesicType type) {
-  const Vec4 x{{y[0], y[1], y[2], y[3]}};
-  Mat4 g;
-  m.metric_tensor_inline(x, g);
-  const double* k = y + 4;
-  const double A = g[0][0];
-  double B = 0, C = -constraint_target(type);
-  for (int i = 1; i < 4; ++i) {
-    B += 2 * g[0][i] * k[i];
-    for (int j = 1; j < 4; ++j) C += g[i][j] * k[i] * k[j];
-  }
-  if (std::fabs(A) < 1e-300) {
-    if (std::fabs(B) > 1e-300) y[4] = -C / B;
-    return;
-  }
-  const double disc = B * B - 4 * A * C;
-  if (disc < 0) return;
-  const double s = std::sqrt(disc);
-  const double r1 = (-B + s) / (2 * A), r2 = (-B - s) / (2 * A);
-  y[4] = std::fabs(r1 - k[0]) < std::fabs(r2 - k[0]) ? r1 : r2;
-}
-
-inline bool inside_box(const SolverConfig& c, const double* y) {
-  for (int i = 0; i < 4; ++i)
-    if (y[i] < c.box_ll[i] || y[i] > c.box_ur[i]) return false;
-  return true;
-}
-
-/// Integrates y' = f(y) with stepper St, stopping at the first of: callback stop, invalid
-/// coordinates, leaving the bounding box, |λ| ≥ lambda_max, max_steps accepted steps,
-/// constraint violation, step underflow, non-finite state.
-template <class St, class M, class F>
-GeodesicResult integrate_with(const M& m, F& f, const SolverConfig& cfg, double* y_io, double lambda0,
+/// Integrates y' = f(y) with stepper St. Per attempt: a trial state that is not finite or lies
+/// outside the validity domain is rejected like a step with too large an error (adaptive: the
+/// step shrinks; fixed step: the integration stops). Per accepted step, in this order: constraint
+/// test (a step that broke the constraint is not reported), callback, bounding box, λ_max. Before
+/// each attempt: max_steps. Step underflow (|h| < step_min or |h| below the resolution of λ)
+/// stops with StepUnderflow, or with Invalid / NotFinite when the rejected trials were leaving the
+/// validity domain / not finite.
+template <class St, class Sys>
+GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, double lambda0,
                               StepCallback cb) {
-  constexpr int N = F::N;
+  constexpr int N = Sys::N;
   GeodesicResult res;
-  double y[N], dy[N], y1[N], dy1[N], yerr[N];
+  double y[N], dy[N], y1[N], dy1[N];
   for (int i = 0; i < N; ++i) y[i] = y_io[i];
   double lambda = lambda0;
   const double dir = cfg.direction >= 0 ? 1.0 : -1.0;
-  const bool adaptive = cfg.step_ctrl && St::kErrOrder > 0;
-  double h = std::clamp(std::fabs(cfg.step_size), cfg.step_min, cfg.step_max);
-  const bool check_constraint = N >= 8;
+  St stepper(cfg);
+  const bool adaptive = cfg.step_ctrl && St::kHasErrorEstimate;
+  const ErrorScale tol{cfg.eps_abs, cfg.eps_rel};
+  const double hmax = std::max(cfg.step_max, cfg.step_min);
+  double h = std::clamp(std::fabs(cfg.step_size), cfg.step_min, hmax);
+  bool after_reject = false;
 
   auto finish = [&](StopReason r) {
     for (int i = 0; i < N; ++i) y_io[i] = y[i];
     res.reason = r;
     res.lambda = lambda;
-    if (check_constraint) res.constraint_drift = constraint_value(m, y, cfg.type);
+    if constexpr (Sys::kHasConstraint) {
+      double scale;
+      sys.constraint(y, cfg.type, res.constraint_drift, scale);
+    }
     return res;
   };
 
-  if (!m.is_valid(Vec4{{y[0], y[1], y[2], y[3]}})) return finish(StopReason::Invalid);
-  if (!inside_box(cfg, y)) return finish(StopReason::BoundingBox);
-  f(y, dy);
+  if (!sys.valid(y)) return finish(StopReason::Invalid);
+  if (!sys.inside(cfg, y)) return finish(StopReason::BoundingBox);
+  sys(y, dy);
   ++res.rhs_evals;
-  const double kscale0 = std::max(1.0, std::fabs(y[4]));
 
   while (true) {
     if (res.steps >= cfg.max_steps) return finish(StopReason::MaxSteps);
-    double hstep = h;
     const double remaining = cfg.lambda_max - std::fabs(lambda - lambda0);
+    if (!(remaining > 0)) return finish(StopReason::LambdaMax);
+    double hstep = h;
     bool clipped = false;
-    if (remaining <= 0) return finish(StopReason::LambdaMax);
     if (hstep >= remaining) {
       hstep = remaining;
       clipped = true;
     }
-    const bool have_dy1 = St::template attempt<N>(f, y, dy, dir * hstep, y1, yerr, dy1, res.rhs_evals);
+    double err = 0;
+    const bool have_dy1 =
+        stepper.template attempt<N>(sys, y, dy, dir * hstep, y1, dy1, tol, res.rhs_evals, err);
     bool finite = true;
     for (int i = 0; i < N; ++i) finite = finite && std::isfinite(y1[i]);
-    if (adaptive) {
-      double err = 0;
-      for (int i = 0; i < N; ++i) {
-        const double sc = cfg.eps_abs + cfg.eps_rel * std::max(std::fabs(y[i]), std::fabs(y1[i]));
-        err = std::max(err, std::fabs(yerr[i]) / sc);
+    const bool in_domain = finite && sys.valid(y1);
+    if (!in_domain || (adaptive && !(err <= 1.0))) {
+      if (!adaptive) return finish(finite ? StopReason::Invalid : StopReason::NotFinite);
+      ++res.rejected;
+      h = in_domain ? stepper.next_step(hstep, err, false, after_reject) : 0.5 * hstep;
+      after_reject = true;
+      if (h < cfg.step_min || h <= 4 * DBL_EPSILON * std::fabs(lambda)) {
+        const StopReason r = !finite ? StopReason::NotFinite
+                                     : (!in_domain ? StopReason::Invalid : StopReason::StepUnderflow);
+        return finish(r);
       }
-      if (!finite || !(err <= 1.0)) {
-        ++res.rejected;
-        const double fac = finite && std::isfinite(err)
-                               ? std::max(0.2, 0.9 * std::pow(err, -1.0 / St::kErrOrder))
-                               : 0.25;
-        h = hstep * fac;
-        if (h < cfg.step_min) return finish(StopReason::StepUnderflow);
-        continue;
-      }
-      // Grow the step for the next attempt (never more than 5x), as GSL's standard control.
-      const double fac = err > 0 ? std::min(5.0, 0.9 * std::pow(err, -1.0 / (St::kErrOrder + 1))) : 5.0;
-      if (!clipped) h = std::min(cfg.step_max, std::max(hstep * fac, cfg.step_min));
-    } else if (!finite) {
-      return finish(StopReason::NotFinite);
+      continue;
     }
-    if (!m.is_valid(Vec4{{y1[0], y1[1], y1[2], y1[3]}})) return finish(StopReason::Invalid);
-    if (cfg.reproject && N >= 8) reproject_constraint(m, y1, cfg.type);
+    // Accepted.
+    if (cfg.reproject) sys.reproject(y1, cfg.type);
     if (!have_dy1 || cfg.reproject) {
-      f(y1, dy1);
+      sys(y1, dy1);
       ++res.rhs_evals;
     }
+    if constexpr (Sys::kHasConstraint) {
+      double c, scale;
+      sys.constraint(y1, cfg.type, c, scale);
+      if (!(std::fabs(c) <= cfg.constraint_tol * scale)) return finish(StopReason::Constraint);
+    }
     ++res.steps;
-    const double lambda1 = lambda + dir * hstep;
+    const double lambda1 = clipped ? lambda0 + dir * cfg.lambda_max : lambda + dir * hstep;
     StepAction act = StepAction::Continue;
     if (cb) act = cb(StepView{lambda, lambda1, y, y1, dy, dy1, N, res.steps});
     for (int i = 0; i < N; ++i) {
@@ -256,27 +741,47 @@ GeodesicResult integrate_with(const M& m, F& f, const SolverConfig& cfg, double*
     }
     lambda = lambda1;
     if (act == StepAction::Stop) return finish(StopReason::Callback);
-    if (!inside_box(cfg, y)) return finish(StopReason::BoundingBox);
+    if (!sys.inside(cfg, y)) return finish(StopReason::BoundingBox);
     if (clipped) return finish(StopReason::LambdaMax);
-    if (check_constraint) {
-      const double c = constraint_value(m, y, cfg.type);
-      const double scale = std::max(kscale0, y[4] * y[4]);
-      if (!(std::fabs(c) <= cfg.constraint_tol * scale)) return finish(StopReason::Constraint);
-    }
+    if (adaptive) h = std::min(hmax, std::max(stepper.next_step(hstep, err, true, after_reject), cfg.step_min));
+    after_reject = false;
   }
 }
 
 /// Chooses the stepper for cfg.kind (dispatch once per geodesic).
+template <class Sys>
+GeodesicResult integrate_dispatch(Sys& sys, const SolverConfig& cfg, double* y, double lambda0,
+                                  StepCallback cb) {
+  validate_solver_config(cfg);
+  switch (cfg.kind) {
+    case SolverKind::RK2: return integrate_with<ExplicitRK<HeunEulerTableau>>(sys, cfg, y, lambda0, cb);
+    case SolverKind::RK4: return integrate_with<ExplicitRK<RK4Tableau>>(sys, cfg, y, lambda0, cb);
+    case SolverKind::CashKarp45: return integrate_with<ExplicitRK<CashKarpTableau>>(sys, cfg, y, lambda0, cb);
+    case SolverKind::Fehlberg45: return integrate_with<ExplicitRK<FehlbergTableau>>(sys, cfg, y, lambda0, cb);
+    case SolverKind::DormandPrince54:
+      return integrate_with<ExplicitRK<DormandPrince54Tableau>>(sys, cfg, y, lambda0, cb);
+    case SolverKind::DormandPrince853: return integrate_with<DOP853>(sys, cfg, y, lambda0, cb);
+    case SolverKind::BulirschStoer: return integrate_with<BulirschStoer>(sys, cfg, y, lambda0, cb);
+  }
+  return integrate_with<ExplicitRK<CashKarpTableau>>(sys, cfg, y, lambda0, cb);
+}
+
+/// Integrates geodesic system f (GeodesicRHS/TransportRHS/JacobiRHS) on metric m (used by
+/// MetricCRTP::integrate).
 template <class M, class F>
 GeodesicResult integrate_system(const M& m, F& f, const SolverConfig& cfg, double* y, double lambda0,
                                 StepCallback cb) {
-  switch (cfg.kind) {
-    case SolverKind::RK4:
-      return integrate_with<ExplicitRK<RK4Tableau>>(m, f, cfg, y, lambda0, cb);
-    case SolverKind::CashKarp45:
-    default:
-      return integrate_with<ExplicitRK<CashKarpTableau>>(m, f, cfg, y, lambda0, cb);
-  }
+  MetricSystem<M, F> sys{m, f};
+  return integrate_dispatch(sys, cfg, y, lambda0, cb);
+}
+
+/// Integrates a plain autonomous system y' = f(y): F has `static constexpr int N` and
+/// `void operator()(const double* y, double* dy) const`. cfg.type and the constraint settings are
+/// ignored; the validity domain is "finite".
+template <class F>
+GeodesicResult integrate_ode(F& f, const SolverConfig& cfg, double* y, double t0, StepCallback cb = {}) {
+  PlainSystem<F> sys{f};
+  return integrate_dispatch(sys, cfg, y, t0, cb);
 }
 
 }  // namespace geovis
