@@ -56,6 +56,10 @@ class BuildContext {
 
   /// GeoViS objID: primitives are numbered 1, 2, ... in creation order.
   int next_object_id() { return ++object_counter_; }
+  /// Number of objIDs handed out so far (the builder reuses cached primitives and keeps the
+  /// numbering of GeoViS's creation order).
+  int object_count() const { return object_counter_; }
+  void set_object_count(int n) { object_counter_ = n; }
 
  private:
   int object_counter_ = 0;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,10 @@ struct RenderJob {
   SceneObjectPtr scene;  ///< root object (compound); may be null (empty scene)
   LightManager lights;
   Color background{0, 0, 0};
+  /// GeoViS projector errcolor / cstrcolor / breakcolor: pixel colour when the ray stopped without
+  /// a hit because of an integration error (step underflow, non-finite state), a constraint
+  /// violation, or the metric's break condition (horizon, singularity). Default: background.
+  std::optional<Color> error_color, constraint_color, break_color;
   Filter filter = Filter::RGB;
   int supersample = 1;  ///< n x n samples per pixel
 };

@@ -1,0 +1,329 @@
+#include "render/local_object.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+
+namespace geovis {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+Vec3 spatial(const Vec4& v) { return {v[1], v[2], v[3]}; }
+
+int periodic_index_of(const Metric& m) {
+  switch (m.info().coord_type) {
+    case CoordType::Spherical: return 3;    // (t, r, θ, φ)
+    case CoordType::Cylindrical: return 2;  // (t, ρ, φ, z)
+    default: return -1;
+  }
+}
+
+/// Closest distance² between segment p0 -> p1 and point c.
+double segment_point_dist2(const Vec3& p0, const Vec3& p1, const Vec3& c) {
+  const Vec3 d = p1 - p0;
+  const double dd = dot(d, d);
+  double t = dd > 0 ? dot(c - p0, d) / dd : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  const Vec3 q = p0 + t * d - c;
+  return dot(q, q);
+}
+}  // namespace
+
+// ---- LocalFrame ---------------------------------------------------------------------------------
+
+LocalFrame::LocalFrame(std::shared_ptr<const Metric> metric, const LocalTetrad& tetrad)
+    : metric_(std::move(metric)) {
+  if (!metric_) throw Error("local frame: no metric");
+  fixed_.x = tetrad.pos;
+  fixed_.e = tetrad.e;
+  metric_->metric_tensor(fixed_.x, fixed_.g);
+  periodic_index_ = periodic_index_of(*metric_);
+}
+
+LocalFrame::LocalFrame(std::shared_ptr<const Metric> metric, MotionPtr motion)
+    : metric_(std::move(metric)), motion_(std::move(motion)) {
+  if (!metric_) throw Error("local frame: no metric");
+  if (!motion_ || motion_->samples().empty()) throw Error("local frame: the motion has no worldline samples");
+  periodic_index_ = periodic_index_of(*metric_);
+}
+
+LocalFrame::State LocalFrame::state(double tau) const {
+  if (!motion_) return fixed_;
+  const MotionSample ms = motion_->at_proper_time(tau);
+  State s;
+  s.tau = tau;
+  s.x = ms.x;
+  s.e = ms.e;
+  metric_->metric_tensor(s.x, s.g);
+  return s;
+}
+
+Vec4 LocalFrame::delta(const Vec4& x, const Vec4& y) const {
+  Vec4 d = x - y;
+  if (periodic_index_ >= 0) {
+    double& a = d[periodic_index_];
+    a = std::remainder(a, 2 * kPi);  // to [−π, π]
+  }
+  return d;
+}
+
+Vec4 LocalFrame::to_local(const State& s, const Vec4& x) const {
+  const Vec4 dx = delta(x, s.x);
+  Vec4 X;
+  for (int a = 0; a < 4; ++a) X[a] = (a == 0 ? -1.0 : 1.0) * dot(s.g, s.e[a], dx);
+  return X;
+}
+
+bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau) const {
+  if (!motion_) return true;
+  const bool bounded = !motion_->unbounded();
+  const double inf = std::numeric_limits<double>::infinity();
+  const double lo = bounded ? motion_->tau_min() : -inf, hi = bounded ? motion_->tau_max() : inf;
+  tau = std::clamp(tau, lo, hi);
+  for (int it = 0; it < 20; ++it) {
+    const State s = state(tau);
+    // f(τ) = g(e0, x − x_obj(τ)); df/dτ = −g(u, u) + g(∇_u e0, Δx) = 1 for geodesic or uniform
+    // motion (and 1 + O(a·Δx) otherwise), so the Newton step is τ − f.
+    const double f = dot(s.g, s.e[0], delta(x, s.x));
+    double next = tau - f;
+    if (next < lo || next > hi) {
+      // Outside the worldline: one retry from the boundary, then give up.
+      if ((next < lo && tau == lo) || (next > hi && tau == hi)) return false;
+      next = std::clamp(next, lo, hi);
+    }
+    const bool done = std::fabs(next - tau) <= 1e-12 * (1.0 + std::fabs(tau));
+    tau = next;
+    if (done) return true;
+  }
+  return true;
+}
+
+Vec4 LocalFrame::body_velocity(const State& s, const Vec3& X, const Vec4& x_hit) const {
+  Vec4 w = s.e[0];
+  if (motion_ && (X.x != 0 || X.y != 0 || X.z != 0)) {
+    // d/dτ [x_obj(τ) + X^i e_(i)(τ)] = u + X^i de_(i)/dτ, central difference.
+    const double h = 1e-4 * (1.0 + std::fabs(s.tau));
+    double ta = s.tau - h, tb = s.tau + h;
+    if (!motion_->unbounded()) ta = std::max(motion_->tau_min(), ta), tb = std::min(motion_->tau_max(), tb);
+    if (tb > ta) {
+      const MotionSample a = motion_->at_proper_time(ta), b = motion_->at_proper_time(tb);
+      for (int i = 1; i < 4; ++i)
+        for (int mu = 0; mu < 4; ++mu) w[mu] += X[i - 1] * (b.e.e[i][mu] - a.e.e[i][mu]) / (tb - ta);
+    }
+  }
+  Mat4 g;
+  metric_->metric_tensor(x_hit, g);
+  const double n2 = -dot(g, w, w);
+  if (!(n2 > 0)) return s.e[0];
+  return (1.0 / std::sqrt(n2)) * w;
+}
+
+// ---- LocalObject --------------------------------------------------------------------------------
+
+LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::move(child)), frame_(std::move(frame)) {
+  const Bounds3 cb = child_->bounds();
+  bool finite = !cb.empty();
+  for (int i = 0; i < 3 && finite; ++i) finite = std::isfinite(cb.lo[i]) && std::isfinite(cb.hi[i]);
+  if (!finite) throw Error("local object: the object inside a local frame must be bounded");
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 c{(k & 1) ? cb.hi.x : cb.lo.x, (k & 2) ? cb.hi.y : cb.lo.y, (k & 4) ? cb.hi.z : cb.lo.z};
+    radius_local_ = std::max(radius_local_, norm(c));
+  }
+  const Metric& m = frame_.metric();
+  if (!frame_.moving()) {
+    const LocalFrame::State s = frame_.state(0);
+    m.to_pseudo_cartesian(s.x, center_pc_);
+    radius_pc_ = pseudo_cartesian_radius(s);
+    bounds_.expand(center_pc_ - Vec3{radius_pc_, radius_pc_, radius_pc_});
+    bounds_.expand(center_pc_ + Vec3{radius_pc_, radius_pc_, radius_pc_});
+    return;
+  }
+  if (frame_.motion()->unbounded()) {
+    // Analytic motion defined for all times (ConstVelocity): the tube is built per segment from
+    // the worldline at the segment's times; the object may be anywhere.
+    radius_pc_ = pseudo_cartesian_radius(frame_.state(0.0));
+    // The lab-simultaneous slice of the body lies within radius_pc_ of the origin event at the
+    // same time (Lorentz contraction only shrinks it); one radius of time margin is ample.
+    tube_margin_t_ = radius_pc_;
+    bounds_ = Bounds3::infinite();
+    return;
+  }
+  const auto& samples = frame_.motion()->samples();
+  double dt_max = 0;
+  for (size_t i = 0; i + 1 < samples.size() || (samples.size() == 1 && i == 0); ++i) {
+    const size_t j = std::min(i + 1, samples.size() - 1);
+    const LocalFrame::State a = frame_.state(samples[i].tau), b = frame_.state(samples[j].tau),
+                            mid = frame_.state(0.5 * (samples[i].tau + samples[j].tau));
+    const double r = std::max({pseudo_cartesian_radius(a), pseudo_cartesian_radius(b), pseudo_cartesian_radius(mid)});
+    dt_max = std::max({dt_max, time_extent(a), time_extent(b), time_extent(mid)});
+    TubeBox tb;
+    tb.t0 = std::min(a.x[0], b.x[0]);
+    tb.t1 = std::max(a.x[0], b.x[0]);
+    for (const auto* st : {&a, &b, &mid}) {
+      Vec3 p;
+      m.to_pseudo_cartesian(st->x, p);
+      tb.box.expand(p - Vec3{r, r, r});
+      tb.box.expand(p + Vec3{r, r, r});
+    }
+    // Straight chord between samples vs. curved worldline: widen by a quarter of the chord.
+    const Vec3 ext = tb.box.hi - tb.box.lo;
+    const double w = 0.25 * std::max({ext.x, ext.y, ext.z}) - 0.5 * r;
+    if (w > 0) {
+      tb.box.lo = tb.box.lo - Vec3{w, w, w};
+      tb.box.hi = tb.box.hi + Vec3{w, w, w};
+    }
+    tube_.push_back(tb);
+    bounds_.expand(tb.box);
+  }
+  // An event of the body (local time 0, |X| <= R) lies at coordinate time t_obj + X^i e_(i)^0:
+  // the worldline piece to look at is the segment's time range widened by max |X^i e_(i)^0|.
+  tube_margin_t_ = dt_max;
+  // Coarse level: unions of kChunk consecutive boxes, tested first.
+  for (size_t i = 0; i < tube_.size(); i += kChunk) {
+    TubeBox c = tube_[i];
+    for (size_t j = i + 1; j < std::min(tube_.size(), i + kChunk); ++j) {
+      c.t0 = std::min(c.t0, tube_[j].t0);
+      c.t1 = std::max(c.t1, tube_[j].t1);
+      c.box.expand(tube_[j].box);
+    }
+    chunks_.push_back(c);
+  }
+}
+
+double LocalObject::time_extent(const LocalFrame::State& s) const {
+  // max over |X| <= R of |X^i e_(i)^0| = R ‖(e_(1)^0, e_(2)^0, e_(3)^0)‖, widened by 25% like
+  // the spatial radius.
+  const double e = std::sqrt(s.e[1][0] * s.e[1][0] + s.e[2][0] * s.e[2][0] + s.e[3][0] * s.e[3][0]);
+  return 1.25 * radius_local_ * e;
+}
+
+double LocalObject::pseudo_cartesian_radius(const LocalFrame::State& s) const {
+  // ‖J E‖_F bounds the stretch of a local displacement X (|X| <= R) into pseudo-Cartesian
+  // coordinates, J = ∂(pseudo-Cartesian)/∂(coordinates), E = (e_(1), e_(2), e_(3)); finite
+  // differences, widened by 25% for the variation of J across the object.
+  const Metric& m = frame_.metric();
+  double sum = 0;
+  for (int i = 1; i < 4; ++i) {
+    const Vec4& e = s.e[i];
+    const double en = std::sqrt(e[1] * e[1] + e[2] * e[2] + e[3] * e[3]);
+    if (en == 0) continue;
+    const double h = 1e-6 * (1.0 + std::sqrt(s.x[1] * s.x[1] + s.x[2] * s.x[2] + s.x[3] * s.x[3])) / en;
+    Vec4 xa = s.x, xb = s.x;
+    for (int mu = 1; mu < 4; ++mu) {
+      xa[mu] += h * e[mu];
+      xb[mu] -= h * e[mu];
+    }
+    Vec3 pa, pb;
+    m.to_pseudo_cartesian(xa, pa);
+    m.to_pseudo_cartesian(xb, pb);
+    const Vec3 je = (pa - pb) / (2 * h);
+    sum += dot(je, je);
+  }
+  return 1.25 * radius_local_ * std::sqrt(sum);
+}
+
+bool LocalObject::world_tube_test(const Segment& seg) const {
+  if (!frame_.moving()) return segment_point_dist2(seg.p0, seg.p1, center_pc_) <= radius_pc_ * radius_pc_;
+  if (frame_.motion()->unbounded()) {
+    // Box around the worldline between the segment's times (± margin), widened by the object's
+    // radius. Analytic unbounded motions are inertial for the origin (ConstVelocity: rotations
+    // turn the axes only), so the chord between the two end events is the worldline.
+    const double ta = std::min(seg.x0[0], seg.x1[0]) - tube_margin_t_;
+    const double tb = std::max(seg.x0[0], seg.x1[0]) + tube_margin_t_;
+    const Motion& m = *frame_.motion();
+    Bounds3 box;
+    for (double t : {ta, tb}) {
+      Vec3 p;
+      frame_.metric().to_pseudo_cartesian(m.at_coordinate_time(t).x, p);
+      box.expand(p);
+    }
+    const double w = radius_pc_;
+    box.lo = box.lo - Vec3{w, w, w};
+    box.hi = box.hi + Vec3{w, w, w};
+    const Vec3 d = seg.p1 - seg.p0;
+    double t0 = 0, t1 = 1;
+    return segment_box(seg.p0, Vec3{1.0 / d.x, 1.0 / d.y, 1.0 / d.z}, box, t0, t1);
+  }
+  const double ta = std::min(seg.x0[0], seg.x1[0]) - tube_margin_t_;
+  const double tb = std::max(seg.x0[0], seg.x1[0]) + tube_margin_t_;
+  // Boxes are ordered along the worldline (coordinate time increases with proper time); test
+  // the chunk unions first, then the boxes of the chunks that pass.
+  const Vec3 d = seg.p1 - seg.p0;
+  const Vec3 inv{1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
+  auto it = std::lower_bound(chunks_.begin(), chunks_.end(), ta, [](const TubeBox& b, double t) { return b.t1 < t; });
+  for (; it != chunks_.end() && it->t0 <= tb; ++it) {
+    double t0 = 0, t1 = 1;
+    if (!segment_box(seg.p0, inv, it->box, t0, t1)) continue;
+    const size_t first = static_cast<size_t>(it - chunks_.begin()) * kChunk;
+    const size_t last = std::min(tube_.size(), first + kChunk);
+    for (size_t j = first; j < last; ++j) {
+      const TubeBox& b = tube_[j];
+      if (b.t1 < ta || b.t0 > tb) continue;
+      double u0 = 0, u1 = 1;
+      if (segment_box(seg.p0, inv, b.box, u0, u1)) return true;
+    }
+  }
+  return false;
+}
+
+bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
+  if (seg.chart0 != chart || seg.chart1 != chart) return false;
+  if (!world_tube_test(seg)) return false;
+  const Vec4 dseg = frame_.delta(seg.x1, seg.x0);
+  Vec4 x_ref = seg.x0 + 0.5 * dseg;
+  double tau = 0;
+  if (frame_.moving() && frame_.motion()->unbounded()) {
+    tau = frame_.motion()->at_coordinate_time(x_ref[0]).tau;
+  } else if (frame_.moving()) {
+    // Initial guess: the sample whose coordinate time is closest to the event's.
+    const auto& samples = frame_.motion()->samples();
+    auto it = std::lower_bound(samples.begin(), samples.end(), x_ref[0],
+                               [](const MotionSample& s, double t) { return s.x[0] < t; });
+    tau = (it == samples.end() ? samples.back() : *it).tau;
+  }
+  Hit best;
+  bool found = false;
+  LocalFrame::State best_state;
+  for (int iter = 0; iter < 12; ++iter) {
+    double tau_new = tau;
+    if (!frame_.simultaneous_tau(x_ref, tau_new)) break;
+    if (found && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) break;
+    tau = tau_new;
+    const LocalFrame::State st = frame_.state(tau);
+    const Vec4 X0 = frame_.to_local(st, seg.x0), X1 = frame_.to_local(st, seg.x1);
+    Segment ls;
+    ls.x0 = seg.x0;  // world coordinate times for Hit::time
+    ls.x1 = seg.x1;
+    ls.p0 = spatial(X0);
+    ls.p1 = spatial(X1);
+    ls.chart0 = ls.chart1 = child_->chart;
+    ls.metric = seg.metric;
+    Hit h = hit;
+    if (!child_->intersect(ls, h)) break;  // keep the previous estimate when refinement loses it
+    best = h;
+    best_state = st;
+    found = true;
+    if (!frame_.moving()) break;
+    x_ref = seg.x0 + h.s * dseg;
+  }
+  if (!found) return false;
+  const Vec4 x_hit = seg.x0 + best.s * dseg;
+  // The local coordinates are first-order in x − x_obj: only trust a hit whose event lies near
+  // the worldline (within the pseudo-Cartesian radius of the body at τ), not a spurious
+  // intersection of the linearised map of far-away events.
+  if (frame_.moving()) {
+    Vec3 pc_obj;
+    frame_.metric().to_pseudo_cartesian(best_state.x, pc_obj);
+    const Vec3 pc_hit = seg.p0 + best.s * (seg.p1 - seg.p0);
+    const double r = pseudo_cartesian_radius(best_state);
+    if (dot(pc_hit - pc_obj, pc_hit - pc_obj) > r * r) return false;
+  }
+  best.emitter_u = frame_.body_velocity(best_state, best.point, x_hit);
+  hit = best;
+  return true;
+}
+
+}  // namespace geovis

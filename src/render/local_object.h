@@ -1,0 +1,100 @@
+// Objects described in a local reference frame (paper §2.3): GeoViS local-comp-object (an object
+// of gpObjTypeLocal in the Euclidean frame of a static local tetrad or of a tetrad moving along a
+// Motion) and primitives with '(motion id) (e.g. the ConstVelocity rolling wheel of paper §4.6).
+//
+// Intersection (paper §2.3): first the segment against the world tube (the bounding sphere of the
+// object swept along the worldline, in pseudo-Cartesian coordinates); then both events of the
+// segment are expressed in the local frame of the tetrad at the proper time τ whose event is
+// simultaneous, in that frame, with the segment's event: to first order around x_obj(τ)
+//     X^a = η^{ab} g(e_(b), x − x_obj(τ))
+// (exact in Minkowski for an inertial frame: a Lorentz transformation). The segment becomes a
+// straight 4D segment in local coordinates, its local time X^0 varying along it: the spatial
+// path is tested against the object at rest in that frame, which accounts for the light travel
+// time across the object. For a rotating or accelerated frame τ is re-evaluated at the hit event
+// and the test repeated until τ is stable. The hit's point/normal/ray_dir are in the local frame.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "render/build_context.h"
+#include "render/shapes.h"
+#include "render/object.h"
+#include "spacetime/metric.h"
+#include "spacetime/motion.h"
+
+namespace geovis {
+
+/// A local frame: a static tetrad (fixed event and base vectors) or a moving tetrad (Motion).
+class LocalFrame {
+ public:
+  struct State {
+    double tau = 0;
+    Vec4 x{{0, 0, 0, 0}};  ///< worldline event x_obj(τ)
+    Tetrad e{};            ///< tetrad at τ
+    Mat4 g{};              ///< metric at x_obj(τ)
+  };
+  LocalFrame(std::shared_ptr<const Metric> metric, const LocalTetrad& tetrad);
+  LocalFrame(std::shared_ptr<const Metric> metric, MotionPtr motion);
+
+  bool moving() const { return motion_ != nullptr; }
+  const Metric& metric() const { return *metric_; }
+  const Motion* motion() const { return motion_.get(); }
+  /// The frame at proper time τ (static frames ignore τ).
+  State state(double tau) const;
+  /// Proper time of the worldline event simultaneous with x in the local frame, i.e. the root of
+  /// f(τ) = g(e_(0)(τ), x − x_obj(τ)) (Newton; f' = 1 + O(acceleration)). False when it lies
+  /// outside the motion's proper-time range. Static frames: true, τ unchanged.
+  bool simultaneous_tau(const Vec4& x, double& tau) const;
+  /// Local coordinates X^a = η^{ab} g(e_(b), x − x_obj) of event x.
+  Vec4 to_local(const State& s, const Vec4& x) const;
+  /// x − y in coordinates, the periodic angle (φ of spherical/cylindrical charts) wrapped to
+  /// (−π, π].
+  Vec4 delta(const Vec4& x, const Vec4& y) const;
+  /// Four-velocity of the body point at local position X (at rest in the frame): the derivative
+  /// of x_obj(τ) + X^i e_(i)(τ), normalised with the metric at x_hit (u when not timelike).
+  Vec4 body_velocity(const State& s, const Vec3& X, const Vec4& x_hit) const;
+
+ private:
+  std::shared_ptr<const Metric> metric_;
+  MotionPtr motion_;
+  State fixed_;
+  int periodic_index_ = -1;
+};
+
+/// An object (usually a compound or primitive of gpObjTypeLocal) seen through a local frame.
+class LocalObject final : public SceneObject {
+ public:
+  LocalObject(SceneObjectPtr child, LocalFrame frame);
+  bool intersect(const Segment& seg, Hit& hit) const override;
+  Bounds3 bounds() const override { return bounds_; }
+  const LocalFrame& frame() const { return frame_; }
+  const SceneObjectPtr& child() const { return child_; }
+  /// Radius of the object's bounding sphere about the local origin (local length units).
+  double local_radius() const { return radius_local_; }
+
+ private:
+  struct TubeBox {
+    double t0, t1;  ///< coordinate-time interval of the worldline piece
+    Bounds3 box;    ///< pseudo-Cartesian box of the swept sphere
+  };
+  bool world_tube_test(const Segment& seg) const;
+  /// Pseudo-Cartesian radius covering a local sphere of radius_local_ at frame state s.
+  double pseudo_cartesian_radius(const LocalFrame::State& s) const;
+  /// Coordinate-time spread of the body's simultaneous events at frame state s.
+  double time_extent(const LocalFrame::State& s) const;
+  static constexpr size_t kChunk = 16;
+  SceneObjectPtr child_;
+  LocalFrame frame_;
+  double radius_local_ = 0;
+  // static frame: sphere in pseudo-Cartesian coordinates
+  Vec3 center_pc_;
+  double radius_pc_ = 0;
+  // moving frame: boxes along the worldline, increasing in time
+  std::vector<TubeBox> tube_;
+  std::vector<TubeBox> chunks_;  ///< unions of kChunk consecutive tube_ boxes
+  double tube_margin_t_ = 0;
+  Bounds3 bounds_;
+};
+
+}  // namespace geovis

@@ -1,0 +1,18 @@
+// The renderer: the film is split into tiles (16x16 by default) that `threads` worker threads take
+// from an atomic counter; every pixel is computed independently of which thread traces it, so the
+// output does not depend on the schedule. Types in render/render_job.h.
+#pragma once
+
+#include "render/render_job.h"
+
+namespace geovis {
+
+/// Renders one image (and the filter data). Throws Error for an inconsistent job; an error thrown
+/// while tracing stops all workers and is rethrown.
+RenderResult render(const RenderJob& job, const RenderOptions& options = {});
+
+/// Sample positions of n x n supersampling inside the unit pixel square (stratified centres
+/// ((a + .5)/n, (b + .5)/n)); n = 1 gives the pixel centre (.5, .5).
+void supersample_offsets(int n, int a, int b, double& ox, double& oy);
+
+}  // namespace geovis

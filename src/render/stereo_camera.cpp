@@ -1,0 +1,37 @@
+#include "render/stereo_camera.h"
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace geovis {
+
+PinholeStereoCamera::PinholeStereoCamera(const Vec3& dir, const Vec3& vup, double fov_h_deg, double fov_v_deg,
+                                         int width, int height, double eye_separation)
+    : PinholeCamera(dir, vup, fov_h_deg, fov_v_deg, width, height), sep_(eye_separation) {
+  if (!(sep_ >= 0) || !std::isfinite(sep_))
+    throw Error("PinHoleStereoCam: sep: expected a non-negative number, found " + std::to_string(sep_));
+}
+
+void PinholeStereoCamera::set_param(std::string_view name, const Value& value) {
+  if (to_lower(name) == "eyesep") {
+    const double s = value_as_number(value, "PinHoleStereoCam: eyesep");
+    if (!(s >= 0) || !std::isfinite(s))
+      throw Error("PinHoleStereoCam: eyesep: expected a non-negative number, found " + value.describe());
+    sep_ = s;
+    return;
+  }
+  PinholeCamera::set_param(name, value);
+}
+
+Vec3 PinholeStereoCamera::eye_offset(Eye eye) const {
+  // GeoViS places the eyes at ∓sep/2 times its horizontal half-vector |dir| tan(fov_h/2) ĥ; we use
+  // the unit horizontal axis so that `sep` is the actual eye separation.
+  switch (eye) {
+    case Eye::Left: return (-0.5 * sep_) * frame_.horiz;
+    case Eye::Right: return (0.5 * sep_) * frame_.horiz;
+    default: return {0, 0, 0};
+  }
+}
+
+}  // namespace geovis

@@ -1,0 +1,178 @@
+#include "render/textures.h"
+
+#include <cmath>
+#include <map>
+#include <mutex>
+
+namespace geovis {
+
+UVTransform UVTransform::from(const Transform& t) {
+  UVTransform r;
+  r.a00 = t(0, 0);
+  r.a01 = t(0, 1);
+  r.a10 = t(1, 0);
+  r.a11 = t(1, 1);
+  r.b0 = t(0, 3);
+  r.b1 = t(1, 3);
+  return r;
+}
+
+// ---- CheckerT2D ---------------------------------------------------------------------------------
+
+bool CheckerTexture::selects_first(double ut, double vt) {
+  // GeoViS: ((int)floor(u) % 2) == ((int)floor(v) % 2) with C's truncating remainder, so e.g.
+  // floor = -1 gives -1, which differs from floor = 1 (gives 1).
+  const long long iu = static_cast<long long>(std::floor(ut));
+  const long long iv = static_cast<long long>(std::floor(vt));
+  return (iu % 2) == (iv % 2);
+}
+
+Color CheckerTexture::sample_part(double u, double v, double time, int part) const {
+  double ut, vt;
+  uv_transform.apply(u, v, ut, vt);
+  // The sub-textures see the original (u, v) and apply their own transforms (GeoViS passes the
+  // same intersection record on).
+  return selects_first(ut, vt) ? tex0->sample_part(u, v, time, part) : tex1->sample_part(u, v, time, part);
+}
+
+// ---- ChequeredT2D -------------------------------------------------------------------------------
+
+Color ChequeredTexture::sample_part(double u, double v, double time, int part) const {
+  double ut, vt;
+  uv_transform.apply(u, v, ut, vt);
+  const double qu = std::fabs(ut) - std::floor(std::fabs(ut));
+  const double qv = std::fabs(vt) - std::floor(std::fabs(vt));
+  const bool inside = qu > width && qu < 1.0 - width && qv > width && qv < 1.0 - width;
+  return inside ? tex0->sample_part(u, v, time, part) : tex1->sample_part(u, v, time, part);
+}
+
+// ---- ChequeredTimeT2D ---------------------------------------------------------------------------
+
+Color ChequeredTimeTexture::sample_part(double u, double v, double time, int part) const {
+  const double x = time / delta_t;
+  const double fac = std::floor(x - std::floor(x) + 0.5);
+  return fac * tex0->sample_part(u, v, time, part) + (1.0 - fac) * tex1->sample_part(u, v, time, part);
+}
+
+// ---- DieT2D -------------------------------------------------------------------------------------
+
+namespace {
+// Eye centres of the faces with 1..6 eyes (GeoViS GvsDieT2D table), n eyes start at n(n-1)/2.
+constexpr double kEyes[21][2] = {
+    {0.5, 0.5},
+    {0.25, 0.25}, {0.75, 0.75},
+    {0.25, 0.75}, {0.5, 0.5}, {0.75, 0.25},
+    {0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75},
+    {0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}, {0.5, 0.5},
+    {0.25, 0.25}, {0.25, 0.5}, {0.25, 0.75}, {0.75, 0.27}, {0.75, 0.5}, {0.75, 0.75}};
+constexpr double kEyeRadius = 0.1;
+}  // namespace
+
+int DieTexture::eyes_on_face(int part) {
+  // Opposite faces (-x/+x, -y/+y, -z/+z) sum to 7.
+  static constexpr int kEyesOnFace[6] = {6, 1, 4, 3, 2, 5};
+  return (part >= 0 && part < 6) ? kEyesOnFace[part] : 0;
+}
+
+bool DieTexture::in_eye(double u, double v, int part) {
+  const int n = eyes_on_face(part);
+  if (n == 0) return false;
+  const int first = n * (n - 1) / 2;
+  for (int i = 0; i < n; ++i) {
+    const double du = kEyes[first + i][0] - u, dv = kEyes[first + i][1] - v;
+    if (du * du + dv * dv <= kEyeRadius * kEyeRadius) return true;
+  }
+  return false;
+}
+
+Color DieTexture::sample_part(double u, double v, double time, int part) const {
+  return in_eye(u, v, part) ? tex0->sample_part(u, v, time, part) : tex1->sample_part(u, v, time, part);
+}
+
+// ---- ColorGradTex -------------------------------------------------------------------------------
+
+ColorGradTexture::ColorGradTexture(Color c1, Color c2, double su, double sv, double eu, double ev, Kind k)
+    : color1(c1), color2(c2), start_u(su), start_v(sv), end_u(eu), end_v(ev), kind(k) {}
+
+const std::vector<std::string>& ColorGradTexture::kind_names() {
+  static const std::vector<std::string> names = {"linear", "radial", "hsv", "texCoords"};
+  return names;
+}
+
+Color hsv_to_rgb(double h, double s, double v) {
+  h = std::fmod(h, 360.0);
+  if (h < 0) h += 360.0;
+  const double c = v * s;
+  const double hp = h / 60.0;
+  const double x = c * (1.0 - std::fabs(std::fmod(hp, 2.0) - 1.0));
+  double r = 0, g = 0, b = 0;
+  if (hp < 1) r = c, g = x;
+  else if (hp < 2) r = x, g = c;
+  else if (hp < 3) g = c, b = x;
+  else if (hp < 4) g = x, b = c;
+  else if (hp < 5) r = x, b = c;
+  else r = c, b = x;
+  const double m = v - c;
+  return {r + m, g + m, b + m};
+}
+
+Color ColorGradTexture::sample(double u, double v, double) const {
+  double qu, qv;
+  uv_transform.apply(u, v, qu, qv);
+  const double du = end_u - start_u, dv = end_v - start_v;
+  const double len = std::hypot(du, dv);
+  auto clamp01 = [](double x) { return std::clamp(x, 0.0, 1.0); };
+  switch (kind) {
+    case Kind::Linear: {
+      // Projection of q - start onto the unit gradient direction, in units of its length.
+      const double lambda = len > 0 ? clamp01(((qu - start_u) * du + (qv - start_v) * dv) / (len * len)) : 0.0;
+      return color1 * (1.0 - lambda) + color2 * lambda;
+    }
+    case Kind::Radial: {
+      const double lambda = len > 0 ? clamp01(std::hypot(qu - start_u, qv - start_v) / len) : 0.0;
+      return color1 * (1.0 - lambda) + color2 * lambda;
+    }
+    case Kind::HSV: {
+      const double lambda = len > 0 ? clamp01(((qu - start_u) * du + (qv - start_v) * dv) / (len * len)) : 0.0;
+      return hsv_to_rgb(lambda * 360.0, 1.0, 1.0);
+    }
+    case Kind::TexCoords: return {qu, qv, 0.0};
+  }
+  return {};
+}
+
+// ---- Image --------------------------------------------------------------------------------------
+
+Color ImageTexture::sample(double u, double v, double) const {
+  double ut, vt;
+  uv_transform.apply(u, v, ut, vt);
+  const Image& img = *image;
+  const int w = img.width, h = img.height;
+  // Continuous pixel coordinates with pixel centres at integers; periodic in both directions.
+  const double x = ut * w, y = vt * h;
+  const double fx = std::floor(x), fy = std::floor(y);
+  const double tx = x - fx, ty = y - fy;
+  auto wrap = [](long long i, int n) { long long r = i % n; return static_cast<int>(r < 0 ? r + n : r); };
+  const int x0 = wrap(static_cast<long long>(fx), w), x1 = wrap(static_cast<long long>(fx) + 1, w);
+  const int y0 = wrap(static_cast<long long>(fy), h), y1 = wrap(static_cast<long long>(fy) + 1, h);
+  auto px = [&](int i, int j) {
+    const float* p = img.at(i, j);
+    return img.channels >= 3 ? Color{p[0], p[1], p[2]} : Color{p[0], p[0], p[0]};
+  };
+  return (1 - tx) * (1 - ty) * px(x0, y0) + tx * (1 - ty) * px(x1, y0) + (1 - tx) * ty * px(x0, y1) +
+         tx * ty * px(x1, y1);
+}
+
+std::shared_ptr<const Image> load_image_cached(const std::string& path) {
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const Image>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto it = cache.find(path);
+  if (it != cache.end()) return it->second;
+  auto img = std::make_shared<const Image>(read_image(path));
+  if (img->width <= 0 || img->height <= 0) throw Error("image \"" + path + "\" is empty");
+  cache.emplace(path, img);
+  return img;
+}
+
+}  // namespace geovis

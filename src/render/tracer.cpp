@@ -1,0 +1,307 @@
+#include "render/tracer.h"
+
+#include <cmath>
+
+#include "core/error.h"
+#include "spacetime/jacobi.h"
+#include "spacetime/metric.h"
+
+namespace geovis {
+
+namespace {
+
+inline Vec4 vec4_at(const double* y) { return Vec4{{y[0], y[1], y[2], y[3]}}; }
+
+bool is_zero(const Vec4& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0 && v[3] == 0; }
+
+/// Two local unit vectors spanning the screen orthogonal to the viewing direction n: a Sachs basis
+/// at the observer (Perlick, Living Rev. Relativ. 7 (2004) 9, §4: s_a ⟂ k and ⟂ u_obs, unit).
+void screen_basis(const Vec3& n, Vec3& s1, Vec3& s2) {
+  const Vec3 a = std::fabs(n.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+  s1 = normalize(a - dot(a, n) * n);
+  s2 = cross(n, s1);
+}
+
+/// State of the hit search inside one accepted step.
+struct RayState {
+  const RenderJob* job;
+  const Metric* metric;
+  const SceneObject* scene;
+  bool hit = false;
+  Hit best;
+  double frac = 0;          ///< refined hit position as fraction of the step
+  double lambda0 = 0, lambda1 = 0;
+  double y0[kMaxSystemDim], y1[kMaxSystemDim], dy0[kMaxSystemDim], dy1[kMaxSystemDim];
+  int dim = 8;
+  // Pseudo-Cartesian end of the previous step = start of the next one (saves one transformation).
+  bool have_prev = false;
+  Vec3 prev_p;
+  int prev_chart = 0;
+};
+
+/// Refines a hit found on the chord of step `st` (fraction `s0` of the chord, hit `h`): the curved
+/// step (cubic Hermite dense output of the integrator, geodesic.h) is split into 4 sub-chords, the
+/// first one that hits becomes the new interval, until the curve deviates from the chord by less
+/// than the tolerance. Returns the hit and its fraction of the step.
+void refine_hit(const StepView& st, const Segment& chord, const SceneObject& scene, const Metric& m, Hit& best,
+                double& frac) {
+  double a = 0, b = 1;
+  Vec4 xa = chord.x0, xb = chord.x1;
+  Vec3 pa = chord.p0, pb = chord.p1;
+  int ca = chord.chart0, cb = chord.chart1;
+  frac = best.s;
+  for (int level = 0; level < Tracer::kMaxRefineLevels; ++level) {
+    // Deviation of the curve from the chord at the middle of the interval (sagitta).
+    Vec4 xm, km;
+    hermite_interpolate(st, 0.5 * (a + b), xm, km);
+    Vec3 pm;
+    m.to_pseudo_cartesian(xm, pm);
+    const double sag = norm(pm - 0.5 * (pa + pb));
+    const double tol = Tracer::kRefineTolerance * (1.0 + norm(pm));
+    if (!(sag > tol)) break;
+    bool found = false;
+    Vec4 xp = xa;
+    Vec3 pp = pa;
+    int cp = ca;
+    for (int i = 1; i <= 4; ++i) {
+      const double f0 = a + (b - a) * (i - 1) / 4.0, f1 = i == 4 ? b : a + (b - a) * i / 4.0;
+      Vec4 xi, ki;
+      Vec3 pi;
+      int ci;
+      if (i == 4) {
+        xi = xb;
+        pi = pb;
+        ci = cb;
+      } else if (i == 2) {
+        xi = xm;
+        pi = pm;
+        ci = m.to_pseudo_cartesian(xi, pi);
+      } else {
+        hermite_interpolate(st, f1, xi, ki);
+        ci = m.to_pseudo_cartesian(xi, pi);
+      }
+      Segment sub{xp, xi, pp, pi, cp, ci, &st, &m};
+      Hit h;
+      if (scene.intersect(sub, h)) {
+        best = h;
+        frac = f0 + h.s * (f1 - f0);
+        a = f0;
+        b = f1;
+        xa = xp;
+        pa = pp;
+        ca = cp;
+        xb = xi;
+        pb = pi;
+        cb = ci;
+        found = true;
+        break;
+      }
+      xp = xi;
+      pp = pi;
+      cp = ci;
+    }
+    // The chord hit but no sub-chord does (grazing ray): the coarser hit stands.
+    if (!found) break;
+  }
+}
+
+}  // namespace
+
+Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
+  if (!job.metric) throw Error("render: the job has no metric");
+  if (!job.camera) throw Error("render: the job has no camera");
+  if (job.supersample < 1)
+    throw Error("render: supersample: expected a positive integer, found " + std::to_string(job.supersample));
+  if (cfg_.max_steps < 1) throw Error("render: maxNumPoints: expected a positive number of steps");
+  // Light rays start with the past-directed tangent k = −e_(0) + d^i e_(i) (eq. 7) and are
+  // integrated forward in the affine parameter: GeoViS forces a raygen's solver to
+  // lightlike/backward, which is this.
+  cfg_.type = GeodesicType::Lightlike;
+  cfg_.direction = 1.0;
+  system_ = job.filter == Filter::RGBjac ? GeodesicSystem::Jacobi : GeodesicSystem::Geodesic;
+  point_lights_ = job.metric->name() == "Minkowski" && job.lights.shadows && !job.lights.lights.empty();
+}
+
+TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
+  TraceResult res;
+  res.traced = true;
+  ++stats.rays;
+  const Metric& m = *job_.metric;
+  const Observer& obs = job_.observer;
+  const Vec3 n = normalize(d_in);
+
+  double y[kMaxSystemDim] = {};
+  const Vec4 k0 = local_null_direction(obs.e, n, true);
+  for (int i = 0; i < 4; ++i) {
+    y[i] = obs.pos[i];
+    y[4 + i] = k0[i];
+  }
+  if (system_ == GeodesicSystem::Jacobi) {
+    Vec3 s1, s2;
+    screen_basis(n, s1, s2);
+    const Vec4 c1 = local_to_coord(obs.e, Vec4{{0, s1.x, s1.y, s1.z}});
+    const Vec4 c2 = local_to_coord(obs.e, Vec4{{0, s2.x, s2.y, s2.z}});
+    for (int i = 0; i < 4; ++i) {
+      y[8 + i] = c1[i];
+      y[12 + i] = c2[i];
+    }
+    // J(0) = 0, dJ/dλ(0) = 1: a bundle with its vertex at the observer (jacobi.h).
+    y[20] = 1;
+    y[23] = 1;
+  }
+
+  RayState rs;
+  rs.job = &job_;
+  rs.metric = &m;
+  rs.scene = job_.scene.get();
+  auto on_step = [&rs](const StepView& st) -> StepAction {
+    if (!rs.scene) return StepAction::Continue;
+    const Metric& mm = *rs.metric;
+    Segment seg;
+    seg.x0 = vec4_at(st.y0);
+    seg.x1 = vec4_at(st.y1);
+    if (rs.have_prev) {
+      seg.p0 = rs.prev_p;
+      seg.chart0 = rs.prev_chart;
+    } else {
+      seg.chart0 = mm.to_pseudo_cartesian(seg.x0, seg.p0);
+    }
+    seg.chart1 = mm.to_pseudo_cartesian(seg.x1, seg.p1);
+    seg.step = &st;
+    seg.metric = &mm;
+    rs.prev_p = seg.p1;
+    rs.prev_chart = seg.chart1;
+    rs.have_prev = true;
+    Hit h;
+    if (!rs.scene->intersect(seg, h)) return StepAction::Continue;
+    rs.best = h;
+    refine_hit(st, seg, *rs.scene, mm, rs.best, rs.frac);
+    rs.hit = true;
+    rs.lambda0 = st.lambda0;
+    rs.lambda1 = st.lambda1;
+    rs.dim = st.dim;
+    for (int i = 0; i < st.dim; ++i) {
+      rs.y0[i] = st.y0[i];
+      rs.y1[i] = st.y1[i];
+      rs.dy0[i] = st.dy0[i];
+      rs.dy1[i] = st.dy1[i];
+    }
+    return StepAction::Stop;
+  };
+  const GeodesicResult gr = m.integrate(cfg_, system_, y, 0.0, on_step);
+  stats.steps += gr.steps;
+  stats.rhs_evals += gr.rhs_evals;
+  res.reason = gr.reason;
+
+  if (!rs.hit) {
+    res.pos = vec4_at(y);
+    res.k = vec4_at(y + 4);
+    res.lambda = gr.lambda;
+    res.color = job_.background;
+    return res;
+  }
+
+  // The refined hit event and tangent on the curved step.
+  res.hit = true;
+  res.hit_info = rs.best;
+  const StepView st{rs.lambda0, rs.lambda1, rs.y0, rs.y1, rs.dy0, rs.dy1, rs.dim, 0};
+  hermite_interpolate(st, rs.frac, res.pos, res.k);
+  res.lambda = rs.lambda0 + rs.frac * (rs.lambda1 - rs.lambda0);
+
+  // Frequency ratio ω_src/ω_obs with ω = −g(p, u) for the future-directed photon momentum
+  // p = −k (e.g. Misner-Thorne-Wheeler eq. 2.34 / Catalogue of Spacetimes §1.3).
+  {
+    Mat4 g;
+    m.metric_tensor(obs.pos, g);
+    const double w_obs = dot(g, k0, obs.e[0]);  // = 1 for the normalised k of eq. 7
+    Vec4 u_src = rs.best.emitter_u;
+    bool have_u = !is_zero(u_src);
+    if (!have_u) {
+      try {
+        u_src = m.natural_tetrad(res.pos, TetradKind::Default)[0];
+        have_u = true;
+      } catch (const Error&) {
+        have_u = false;  // no static observer there (e.g. inside an ergoregion): no shift known
+      }
+    }
+    if (have_u && w_obs != 0) {
+      m.metric_tensor(res.pos, g);
+      res.freqshift = dot(g, res.k, u_src) / w_obs;
+    }
+  }
+  if (system_ == GeodesicSystem::Jacobi) {
+    // J and λ at the hit, linearly interpolated inside the step (as GeoViS).
+    double J[4];
+    for (int i = 0; i < 4; ++i) J[i] = rs.y0[16 + i] + rs.frac * (rs.y1[16 + i] - rs.y0[16 + i]);
+    const JacobiParams jp = jacobi_params(J, res.lambda);
+    res.jacobi[0] = jp.d_plus;
+    res.jacobi[1] = jp.d_minus;
+    res.jacobi[2] = jp.mu;
+    res.jacobi[3] = jp.angle;
+    res.jacobi[4] = jp.ellipticity;
+  }
+
+  // Shading (paper §2.4).
+  const Hit& hit = rs.best;
+  if (!hit.shader) {
+    res.color = Color{1, 1, 1};
+    return res;
+  }
+  const bool at_rest = is_zero(hit.emitter_u);
+  if (point_lights_ && at_rest) {
+    // Minkowski and an object at rest: a straight shadow ray from the hit point to the light.
+    const SceneObject* scene = job_.scene.get();
+    const double t = res.pos[0];
+    auto visible = [scene, &m, t](const Vec3& p, const PointLight& light) -> bool {
+      const Vec3 lp{light.pos[1], light.pos[2], light.pos[3]};
+      const Vec3 dl = lp - p;
+      const double len = norm(dl);
+      if (!(len > 0)) return true;
+      // Start just off the surface so that the surface itself does not shadow the point.
+      const double eps = 1e-9 * (1.0 + norm(p)) + 1e-9 * len;
+      const Vec3 p0 = p + (eps / len) * dl;
+      Segment seg{Vec4{{t, p0.x, p0.y, p0.z}}, Vec4{{t, lp.x, lp.y, lp.z}}, p0, lp, 0, 0, nullptr, &m};
+      Hit h;
+      return !(scene->intersect(seg, h) && h.s <= 1.0);
+    };
+    ShadeContext ctx{&job_.lights, visible};
+    res.color = hit.shader->shade(hit, ctx);
+  } else {
+    ShadeContext ctx{&job_.lights, {}};
+    res.color = hit.shader->shade(hit, ctx);
+  }
+  return res;
+}
+
+void Tracer::fill_data(const TraceResult& r, PixelData& d) const {
+  d = PixelData{};
+  if (!r.hit) return;  // GeoViS: pixels without intersection are all zero
+  const Filter f = job_.filter;
+  for (int i = 0; i < 4; ++i) d.pos[i] = r.pos[i];
+  if (f == Filter::RGBpt || f == Filter::RGBIntersec) {
+    d.uv[0] = r.hit_info.u;
+    d.uv[1] = r.hit_info.v;
+    if (f == Filter::RGBpt) d.object_id = r.hit_info.object_id;
+    return;  // Intersec: only pos and uv (catalogue §3)
+  }
+  // dir = future-directed light direction at the hit (minus the past-directed tangent).
+  for (int i = 0; i < 4; ++i) d.dir[i] = -r.k[i];
+  d.object_id = r.hit_info.object_id;
+  d.freqshift = r.freqshift;
+  if (f == Filter::RGBjac)
+    for (int i = 0; i < 5; ++i) d.jacobi[i] = r.jacobi[i];
+}
+
+void Tracer::trace_pixel(double px, double py, Color& color, PixelData* data, TraceStats& stats) const {
+  Vec3 d;
+  if (!job_.camera->direction(px, py, d)) {
+    color = job_.background;
+    if (data) *data = PixelData{};
+    return;
+  }
+  const TraceResult r = trace_direction(d, stats);
+  color = r.color;
+  if (data) fill_data(r, *data);
+}
+
+}  // namespace geovis

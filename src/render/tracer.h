@@ -1,0 +1,66 @@
+// Per-pixel light-ray tracing (paper §2.2-2.4): camera direction -> initial null direction at the
+// observer (eq. 7) -> backward geodesic integration with the metric's inlined integrator -> every
+// accepted step is a straight Segment in pseudo-Cartesian coordinates tested against the scene ->
+// the first hit is refined on the curved step (Hermite dense output) -> shading and the filter data
+// (catalogue §3).
+//
+// A Tracer is immutable after construction and shared by all render threads; tracing allocates
+// nothing (all state lives on the stack, the step callback is a FunctionRef).
+#pragma once
+
+#include "render/camera.h"
+#include "render/render_job.h"
+
+namespace geovis {
+
+struct TraceStats {
+  long rays = 0;
+  long steps = 0;
+  long rhs_evals = 0;
+  void operator+=(const TraceStats& o) {
+    rays += o.rays;
+    steps += o.steps;
+    rhs_evals += o.rhs_evals;
+  }
+};
+
+/// Everything known about one traced ray (tests and the calc-proj-ray style tools use it).
+struct TraceResult {
+  bool traced = false;  ///< false: the camera has no ray there (dome corner)
+  bool hit = false;
+  StopReason reason = StopReason::None;
+  Hit hit_info;         ///< the refined hit (valid when hit)
+  Vec4 pos{{0, 0, 0, 0}};  ///< hit event in metric coordinates (or the end of the ray)
+  Vec4 k{{0, 0, 0, 0}};    ///< past-directed tangent there
+  double lambda = 0;       ///< affine parameter there (0 at the observer)
+  double freqshift = 0;    ///< ω_src/ω_obs (0 when it cannot be computed)
+  double jacobi[5] = {0, 0, 0, 0, 0};
+  Color color;
+};
+
+class Tracer {
+ public:
+  /// Checks the job (metric, camera present; solver settings sane) and throws Error otherwise.
+  explicit Tracer(const RenderJob& job);
+
+  /// Traces the ray through continuous image position (px, py) (pixel centre of (i, j) is
+  /// (i + .5, j + .5)). Writes the colour and, when `data` is not null, the filter data.
+  void trace_pixel(double px, double py, Color& color, PixelData* data, TraceStats& stats) const;
+
+  /// Traces the ray leaving the observer in local direction `d` (need not be unit).
+  TraceResult trace_direction(const Vec3& d, TraceStats& stats) const;
+
+  /// Hit refinement stops once the curved sub-step deviates from its chord by less than this
+  /// fraction of the distance from the origin (plus an absolute floor of the same size).
+  static constexpr double kRefineTolerance = 1e-9;
+  static constexpr int kMaxRefineLevels = 16;
+
+ private:
+  void fill_data(const TraceResult& r, PixelData& d) const;
+  const RenderJob& job_;
+  SolverConfig cfg_;
+  GeodesicSystem system_;
+  bool point_lights_;  ///< shadow rays possible: Minkowski, lights with shadows on
+};
+
+}  // namespace geovis

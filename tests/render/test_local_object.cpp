@@ -1,0 +1,369 @@
+// Objects in local frames: static tetrads equal the same object in coordinates; a sphere moving
+// uniformly is hit where the analytic Lorentz-contracted, light-delayed sphere is; a rotating
+// frame shows the object at the light's arrival time.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "object_test_helpers.h"
+#include "render/compound.h"
+#include "render/local_object.h"
+#include "render/plugins.h"
+#include "render/shapes.h"
+#include "spacetime/metric_registry.h"
+#include "spacetime/motion_const_velocity.h"
+
+namespace geovis {
+namespace {
+
+using testing::make_segment;
+
+std::shared_ptr<const Metric> minkowski() { return std::shared_ptr<const Metric>(make_metric("Minkowski")); }
+
+/// Inertial motion in Minkowski: origin event x_start, 3-velocity v; tetrad = boosted
+/// Cartesian axes (Jackson eq. 11.98): e_(0) = γ(1, v), e_(j) = (γ v_j, δ_jk + (γ−1) v_j v_k/v²).
+class UniformMotion final : public Motion {
+ public:
+  UniformMotion(Vec3 v, double tau_lo, double tau_hi) : v_(v) {
+    for (double tau = tau_lo; tau <= tau_hi + 1e-9; tau += 1.0) samples_.push_back(at_proper_time(tau));
+  }
+  MotionSample at_proper_time(double tau) const override {
+    const double v2 = dot(v_, v_), g = 1.0 / std::sqrt(1.0 - v2);
+    MotionSample s;
+    s.tau = tau;
+    s.e[0] = Vec4{{g, g * v_.x, g * v_.y, g * v_.z}};
+    for (int j = 0; j < 3; ++j) {
+      Vec4 e{{g * v_[j], 0, 0, 0}};
+      for (int k = 0; k < 3; ++k) e[k + 1] = (j == k ? 1.0 : 0.0) + (v2 > 0 ? (g - 1) * v_[j] * v_[k] / v2 : 0.0);
+      s.e[j + 1] = e;
+    }
+    s.u = s.e[0];
+    s.x = tau * s.u;
+    return s;
+  }
+  MotionSample at_coordinate_time(double t) const override {
+    return at_proper_time(t * std::sqrt(1.0 - dot(v_, v_)));
+  }
+  const std::vector<MotionSample>& samples() const override { return samples_; }
+
+ private:
+  Vec3 v_;
+  std::vector<MotionSample> samples_;
+};
+
+/// At rest at the origin, axes turning about z with angular velocity ω (defined for all τ).
+class SpinningMotion final : public Motion {
+ public:
+  explicit SpinningMotion(double omega) : omega_(omega) { samples_.push_back(at_proper_time(0)); }
+  MotionSample at_proper_time(double tau) const override {
+    MotionSample s;
+    s.tau = tau;
+    s.x = Vec4{{tau, 0, 0, 0}};
+    const double c = std::cos(omega_ * tau), sn = std::sin(omega_ * tau);
+    s.e[0] = Vec4{{1, 0, 0, 0}};
+    s.e[1] = Vec4{{0, c, sn, 0}};
+    s.e[2] = Vec4{{0, -sn, c, 0}};
+    s.e[3] = Vec4{{0, 0, 0, 1}};
+    s.u = s.e[0];
+    return s;
+  }
+  MotionSample at_coordinate_time(double t) const override { return at_proper_time(t); }
+  const std::vector<MotionSample>& samples() const override { return samples_; }
+  bool unbounded() const override { return true; }
+
+ private:
+  double omega_;
+  std::vector<MotionSample> samples_;
+};
+
+TEST(ObjLocal, StaticTetradEqualsObjectInCoordinates) {
+  auto metric = minkowski();
+  LocalTetrad lt;
+  lt.pos = Vec4{{0, 1, 2, 3}};
+  for (int a = 0; a < 4; ++a) {
+    lt.e[a] = Vec4{{0, 0, 0, 0}};
+    lt.e[a][a] = 1;
+  }
+  auto local_sphere = std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0.5});
+  LocalObject obj(local_sphere, LocalFrame(metric, lt));
+  Ellipsoid world({1, 2, 3}, {0.5, 0.5, 0.5});
+  // Rotated tetrad: local x -> world y, local y -> world −x; a local box vs the rotated world box.
+  LocalTetrad rt = lt;
+  rt.e[1] = Vec4{{0, 0, 1, 0}};
+  rt.e[2] = Vec4{{0, -1, 0, 0}};
+  LocalObject rbox(std::make_shared<Box>(Vec3{-1, -0.5, -0.2}, Vec3{1, 0.5, 0.2}), LocalFrame(metric, rt));
+  Box wbox({0.5, 1, 2.8}, {1.5, 3, 3.2});
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-3, 6);
+  int hits = 0;
+  for (int k = 0; k < 2000; ++k) {
+    // From anywhere towards the neighbourhood of the objects (most segments hit).
+    const Vec3 target = Vec3{1, 2, 3} + 0.4 * Vec3{u(rng), u(rng), u(rng)};
+    const Vec3 from{u(rng), u(rng), u(rng)};
+    const Segment seg = make_segment(from, from + 2.0 * (target - from), 5, 0);
+    Hit hl, hw;
+    const bool fl = obj.intersect(seg, hl), fw = world.intersect(seg, hw);
+    ASSERT_EQ(fl, fw) << k;
+    if (fl) {
+      ++hits;
+      EXPECT_NEAR(hl.s, hw.s, 1e-12);
+      EXPECT_NEAR(hl.point.x + 1, hw.point.x, 1e-12);  // local frame point
+      EXPECT_NEAR(hl.normal.z, hw.normal.z, 1e-12);
+      EXPECT_NEAR(hl.time, hw.time, 1e-12);
+      EXPECT_NEAR(hl.emitter_u[0], 1.0, 1e-15);
+    }
+    Hit rl, rw;
+    const bool gl = rbox.intersect(seg, rl), gw = wbox.intersect(seg, rw);
+    ASSERT_EQ(gl, gw) << k;
+    if (gl) {
+      EXPECT_NEAR(rl.s, rw.s, 1e-12);
+      // World normal = R · local normal: (x, y) -> (−y, x).
+      EXPECT_NEAR(-rl.normal.y, rw.normal.x, 1e-12);
+      EXPECT_NEAR(rl.normal.x, rw.normal.y, 1e-12);
+    }
+  }
+  EXPECT_GT(hits, 50);
+}
+
+/// First root λ >= 0 of the lab-frame condition for a sphere of radius R moving with velocity
+/// v x̂ (centre v t x̂): γ²(x − v t)² + y² + z² = R², on the backward ray x = p + λ n, t = t_o − λ.
+bool analytic_moving_sphere(double v, double R, double t_o, const Vec3& p, const Vec3& n, double& lambda) {
+  const double g2 = 1.0 / (1.0 - v * v);
+  const double a = p.x - v * t_o, b = n.x + v;
+  const double A = g2 * b * b + n.y * n.y + n.z * n.z;
+  const double B = 2 * (g2 * a * b + p.y * n.y + p.z * n.z);
+  const double C = g2 * a * a + p.y * p.y + p.z * p.z - R * R;
+  const double disc = B * B - 4 * A * C;
+  if (disc < 0) return false;
+  lambda = (-B - std::sqrt(disc)) / (2 * A);
+  return lambda >= 0;
+}
+
+TEST(ObjLocal, MovingSphereIsContractedAndLightDelayed) {
+  auto metric = minkowski();
+  const double v = 0.6, R = 1.0;
+  auto motion = std::make_shared<UniformMotion>(Vec3{v, 0, 0}, -40, 40);
+  auto sphere = std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{R, R, R});
+  LocalObject obj(sphere, LocalFrame(metric, motion));
+  const double L = 20, t_o = 10;
+  const Vec3 p{0, -10, 0};
+  int hits = 0;
+  for (double ax = -0.2; ax <= 0.2; ax += 0.02) {
+    for (double az = -0.12; az <= 0.12; az += 0.02) {
+      const Vec3 n = normalize(Vec3{ax, 1.0, az});
+      double lambda;
+      const bool expect_hit = analytic_moving_sphere(v, R, t_o, p, n, lambda) && lambda < L;
+      Hit hit;
+      const bool found = obj.intersect(testing::light_segment(t_o, p, n, L), hit);
+      ASSERT_EQ(found, expect_hit) << ax << " " << az;
+      if (!found) continue;
+      ++hits;
+      EXPECT_NEAR(hit.s, lambda / L, 1e-11) << ax << " " << az;
+      EXPECT_NEAR(hit.time, t_o - lambda, 1e-9);
+      EXPECT_NEAR(norm(hit.point), R, 1e-9);  // on the sphere in its rest frame
+      const double g = 1.0 / std::sqrt(1 - v * v);
+      EXPECT_NEAR(hit.emitter_u[0], g, 1e-9);
+      EXPECT_NEAR(hit.emitter_u[1], g * v, 1e-9);
+    }
+  }
+  EXPECT_GT(hits, 50);
+  // The worldline exists for τ in [−40, 40], i.e. t in [−50, 50]: at t ≈ −30 the sphere is at
+  // x = −18 and is seen; at t ≈ −60 (x = −36) there is no object.
+  Hit early, none;
+  double lam;
+  ASSERT_TRUE(analytic_moving_sphere(v, R, -20, Vec3{-18, -10, 0}, Vec3{0, 1, 0}, lam));
+  ASSERT_TRUE(obj.intersect(testing::light_segment(-20, Vec3{-18, -10, 0}, Vec3{0, 1, 0}, 20), early));
+  EXPECT_NEAR(early.s, lam / 20, 1e-11);
+  EXPECT_FALSE(obj.intersect(testing::light_segment(-50, Vec3{-36, -10, 0}, Vec3{0, 1, 0}, 20), none));
+}
+
+TEST(ObjLocal, SpinningPaddleSeenAtLightArrivalTime) {
+  // A thin paddle |X| <= 2, |Y| <= 0.1, |Z| <= 1 turning about z with ω = 0.2. The ray along +y
+  // at x = 1 (from y = −5 at t_o = 5) hits the face Y = −0.1 where, at the ray's time
+  // t = t_o − λ, −sin(ωt)·1 + cos(ωt)·(−5 + λ) = −0.1.
+  auto metric = minkowski();
+  const double omega = 0.2, t_o = 5;
+  LocalObject paddle(std::make_shared<Box>(Vec3{-2, -0.1, -1}, Vec3{2, 0.1, 1}),
+                     LocalFrame(metric, std::make_shared<SpinningMotion>(omega)));
+  auto f = [&](double lam) {
+    const double th = omega * (t_o - lam);
+    return -std::sin(th) * 1.0 + std::cos(th) * (-5 + lam) + 0.1;
+  };
+  double lo = 0, hi = 10;
+  for (double lam = 0; lam < 10; lam += 0.01)
+    if (f(lam) < 0 && f(lam + 0.01) >= 0) {
+      lo = lam, hi = lam + 0.01;
+      break;
+    }
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (f(mid) < 0 ? lo : hi) = mid;
+  }
+  Hit hit;
+  ASSERT_TRUE(paddle.intersect(testing::light_segment(t_o, {1, -5, 0}, {0, 1, 0}, 10), hit));
+  EXPECT_NEAR(hit.s, lo / 10, 1e-9);
+  EXPECT_NEAR(hit.point.y, -0.1, 1e-9);
+  // The paddle's material point moves with ω × r: |v| = ω |X| (slow here, γ ≈ 1).
+  const double r = std::hypot(hit.point.x, hit.point.y);
+  const double vmag = std::hypot(hit.emitter_u[1], hit.emitter_u[2]) / hit.emitter_u[0];
+  EXPECT_NEAR(vmag, omega * r, 1e-6);
+}
+
+TEST(ObjLocal, FactoryLocalCompObjectAndMovingPrimitive) {
+  BuildContext ctx;
+  ctx.metric = minkowski();
+  ctx.motions["m"] = std::make_shared<UniformMotion>(Vec3{0.6, 0, 0}, -40, 40);
+  LocalTetrad lt;
+  lt.pos = Vec4{{0, 1, 2, 3}};
+  for (int a = 0; a < 4; ++a) {
+    lt.e[a] = Vec4{{0, 0, 0, 0}};
+    lt.e[a][a] = 1;
+  }
+  ctx.tetrads["lt"] = lt;
+  ParamSet s("solid-ellipsoid", {});
+  s.add("objtype", 0);
+  s.add("axlen", std::vector<double>{0.5, 0.5, 0.5});
+  ctx.objects["sphere"] = make_object(s, ctx);
+  ParamSet l("local-comp-object", {});
+  l.add("obj", "sphere");
+  l.add("localtetrad", "lt");
+  auto lco = make_object(l, ctx);
+  Hit h;
+  ASSERT_TRUE(lco->intersect(make_segment({1, 2, 10}, {1, 2, 0}), h));
+  EXPECT_NEAR(h.s, (10 - 3.5) / 10, 1e-12);
+  EXPECT_EQ(h.object_id, 1);
+  // The local-comp-object may be placed in a compound.
+  ctx.objects["lco"] = lco;
+  ParamSet c("comp-object", {});
+  c.add("obj", "lco");
+  EXPECT_NO_THROW(make_object(c, ctx));
+  // A primitive with a motion = the same object in the motion's frame.
+  ParamSet mv("solid-ellipsoid", {});
+  mv.add("motion", "m");
+  auto moving = make_object(mv, ctx);
+  double lambda;
+  const Vec3 n = normalize(Vec3{0.1, 1, 0});
+  ASSERT_TRUE(analytic_moving_sphere(0.6, 1.0, 10, {0, -10, 0}, n, lambda));
+  Hit hm;
+  ASSERT_TRUE(moving->intersect(testing::light_segment(10, {0, -10, 0}, n, 20), hm));
+  EXPECT_NEAR(hm.s, lambda / 20, 1e-11);
+  ParamSet both("local-comp-object", {});
+  both.add("obj", "sphere");
+  both.add("localtetrad", "lt");
+  both.add("motion", "m");
+  EXPECT_THROW(make_object(both, ctx), SceneError);
+}
+
+TEST(ObjLocal, CompoundGroupsObjectsSharingAMotion) {
+  // Two spheres on one motion inside a compound are tested through one shared local frame; the
+  // result equals testing each moving sphere on its own.
+  auto metric = minkowski();
+  auto motion = std::make_shared<UniformMotion>(Vec3{0.6, 0, 0}, -40, 40);
+  auto a = std::make_shared<Ellipsoid>(Vec3{-1.5, 0, 0}, Vec3{1, 1, 1});
+  auto b = std::make_shared<Ellipsoid>(Vec3{1.5, 0, 0}, Vec3{1, 1, 1});
+  a->object_id = 1;
+  b->object_id = 2;
+  auto la = std::make_shared<LocalObject>(a, LocalFrame(metric, motion));
+  auto lb = std::make_shared<LocalObject>(b, LocalFrame(metric, motion));
+  CompoundObject both({la, lb});
+  int hits = 0;
+  for (double ax = -0.4; ax <= 0.4; ax += 0.02) {
+    const Segment seg = testing::light_segment(10, {0, -10, 0}, normalize(Vec3{ax, 1, 0.02}), 20);
+    Hit h1, h2;
+    la->intersect(seg, h1);
+    lb->intersect(seg, h2);
+    const Hit& ref = h1.s <= h2.s ? h1 : h2;
+    Hit h;
+    ASSERT_EQ(both.intersect(seg, h), ref.valid());
+    if (!ref.valid()) continue;
+    ++hits;
+    EXPECT_NEAR(h.s, ref.s, 1e-12);
+    EXPECT_EQ(h.object_id, ref.object_id);
+  }
+  EXPECT_GT(hits, 10);
+}
+
+TEST(ObjLocal, ConstVelocityBoostedSphereMatchesAnalytic) {
+  // The GeoViS ConstVelocity motion (boost only) moves a sphere exactly like the analytic
+  // Lorentz-contracted, light-delayed sphere.
+  auto metric = minkowski();
+  ConstVelocityMotion::Op boost;
+  boost.v = {0.6, 0, 0};
+  auto motion = std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{boost});
+  LocalObject obj(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{1, 1, 1}), LocalFrame(metric, motion));
+  int hits = 0;
+  for (double ax = -0.2; ax <= 0.2; ax += 0.04) {
+    const Vec3 n = normalize(Vec3{ax, 1.0, 0.03});
+    double lambda;
+    const bool expect_hit = analytic_moving_sphere(0.6, 1.0, 10, {0, -10, 0}, n, lambda) && lambda < 20;
+    Hit hit;
+    ASSERT_EQ(obj.intersect(testing::light_segment(10, {0, -10, 0}, n, 20), hit), expect_hit) << ax;
+    if (!expect_hit) continue;
+    ++hits;
+    EXPECT_NEAR(hit.s, lambda / 20, 1e-11);
+  }
+  EXPECT_GT(hits, 3);
+}
+
+/// Relativistic addition: lab velocity of a body moving with u' in a frame that moves with V
+/// (Jackson eq. 11.31): u = [u'_∥ + V + u'_⊥ / γ_V] / (1 + V·u').
+Vec3 add_velocities(const Vec3& V, const Vec3& up) {
+  const double V2 = dot(V, V), gV = 1.0 / std::sqrt(1 - V2);
+  const Vec3 par = (dot(up, V) / V2) * V, perp = up - par;
+  return (1.0 / (1.0 + dot(V, up))) * (par + V + (1.0 / gV) * perp);
+}
+
+TEST(ObjLocal, RollingWheelMaterialVelocity) {
+  // minkWheel.scm: boost v = 0.8 along −y, then rotation ω = 0.4 about +x; a wheel (cylinder of
+  // radius 2 about the x axis, |x| <= 0.15) rolls on the plane z = −2 (paper §4.6): the material
+  // point at local X moves with ω × X in the rest frame, so the contact point is at rest in the
+  // lab and the top moves with 2v/(1 + v²).
+  auto metric = minkowski();
+  ConstVelocityMotion::Op boost, rot;
+  boost.v = {0, -0.8, 0};
+  rot.is_boost = false;
+  rot.omega = 0.4;
+  rot.axis = {1, 0, 0};
+  auto motion = std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{boost, rot});
+  LocalObject wheel(std::make_shared<Cylinder>(Vec3{-0.15, 0, 0}, Vec3{0.15, 0, 0}, 2, 2),
+                    LocalFrame(metric, motion));
+  int hits = 0;
+  for (double y0 : {-1.5, -0.5, 0.0, 0.7}) {
+    for (double z0 : {-1.9, -1.0, 0.5, 1.9}) {
+      // Backward ray along −x through (y0, z0), passing the wheel's face near t = 0.
+      Hit hit;
+      const Segment seg = testing::light_segment(5, {5, y0, z0}, {-1, 0, 0}, 10);
+      if (!wheel.intersect(seg, hit)) continue;
+      ++hits;
+      const Vec3 X = hit.point;  // rest-frame point
+      EXPECT_NEAR(X.x, 0.15, 1e-9);  // on the face turned to the ray
+      // Cross-check of the frame mapping with the motion's own lab -> object transformation.
+      const Vec4 xe = seg.x0 + hit.s * (seg.x1 - seg.x0);
+      const Vec4 xo = motion->to_object_frame(xe);
+      EXPECT_NEAR(xo[1], X.x, 1e-9);
+      EXPECT_NEAR(xo[2], X.y, 1e-9);
+      EXPECT_NEAR(xo[3], X.z, 1e-9);
+      // The object axes turn by ω t' (t' = rest-frame time = γ(t − V·x), Lorentz): in the
+      // non-rotating rest frame the point sits at R(ω t') X and moves with ω × R(ω t') X.
+      const double g = 1.0 / std::sqrt(1 - 0.64);
+      const double tr = g * (xe[0] - (-0.8) * xe[2]);
+      const double c = std::cos(0.4 * tr), sn = std::sin(0.4 * tr);
+      const Vec3 Xr{X.x, c * X.y - sn * X.z, sn * X.y + c * X.z};
+      const Vec3 u_rest = cross(Vec3{0.4, 0, 0}, Xr);
+      const Vec3 u_lab = add_velocities({0, -0.8, 0}, u_rest);
+      const Vec3 got{hit.emitter_u[1] / hit.emitter_u[0], hit.emitter_u[2] / hit.emitter_u[0],
+                     hit.emitter_u[3] / hit.emitter_u[0]};
+      EXPECT_NEAR(got.x, u_lab.x, 1e-6);
+      EXPECT_NEAR(got.y, u_lab.y, 1e-6);
+      EXPECT_NEAR(got.z, u_lab.z, 1e-6);
+    }
+  }
+  EXPECT_GE(hits, 8);  // (the Lorentz-contracted wheel spans only part of the y0 grid)
+  // Analytic special cases of the formula above: contact point at rest, top at 2v/(1+v²).
+  EXPECT_NEAR(add_velocities({0, -0.8, 0}, cross(Vec3{0.4, 0, 0}, Vec3{0, 0, -2})).y, 0.0, 1e-15);
+  EXPECT_NEAR(add_velocities({0, -0.8, 0}, cross(Vec3{0.4, 0, 0}, Vec3{0, 0, 2})).y, -1.6 / 1.64, 1e-15);
+}
+
+}  // namespace
+}  // namespace geovis

@@ -1,0 +1,358 @@
+// Segment–primitive intersections against analytic hit points, normals and fractions s.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "object_test_helpers.h"
+#include "render/plugins.h"
+#include "render/shapes.h"
+#include "render/surface_shader.h"
+#include "render/textures.h"
+
+namespace geovis {
+namespace {
+
+using testing::make_segment;
+
+constexpr double kTol = 1e-12;
+
+void expect_vec(const Vec3& a, const Vec3& b, double tol = kTol) {
+  EXPECT_NEAR(a.x, b.x, tol);
+  EXPECT_NEAR(a.y, b.y, tol);
+  EXPECT_NEAR(a.z, b.z, tol);
+}
+
+Transform translate(double x, double y, double z) {
+  Transform t = Transform::identity(3);
+  t(0, 3) = x, t(1, 3) = y, t(2, 3) = z;
+  return t;
+}
+Transform scale(double x, double y, double z) {
+  Transform t = Transform::identity(3);
+  t(0, 0) = x, t(1, 1) = y, t(2, 2) = z;
+  return t;
+}
+Transform rotate_z(double deg) {
+  const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
+  Transform t = Transform::identity(3);
+  t(0, 0) = c, t(0, 1) = -s, t(1, 0) = s, t(1, 1) = c;
+  return t;
+}
+
+TEST(ShapesEllipsoid, SphereEntryHitPointNormalAndTime) {
+  Ellipsoid e({1, 0, 0}, {2, 2, 2});
+  e.object_id = 7;
+  Hit hit;
+  // x from −5 to 5 over coordinate time 10 -> 0: entry at x = −1, s = 0.4, t = 6.
+  ASSERT_TRUE(e.intersect(make_segment({-5, 0, 0}, {5, 0, 0}, 10, 0), hit));
+  EXPECT_NEAR(hit.s, 0.4, kTol);
+  expect_vec(hit.point, {-1, 0, 0});
+  expect_vec(hit.normal, {-1, 0, 0});
+  expect_vec(hit.ray_dir, {1, 0, 0});
+  EXPECT_NEAR(hit.time, 6.0, kTol);
+  EXPECT_EQ(hit.object_id, 7);
+}
+
+TEST(ShapesEllipsoid, TriaxialNormalIsGradient) {
+  // Semi-axes (1, 2, 3); the line y = 1 along +x meets x² + y²/4 = 1 at x = −√3/2.
+  Ellipsoid e({0, 0, 0}, {1, 2, 3});
+  Hit hit;
+  ASSERT_TRUE(e.intersect(make_segment({-5, 1, 0}, {5, 1, 0}), hit));
+  const double x = -std::sqrt(3.0) / 2;
+  EXPECT_NEAR(hit.s, (x + 5) / 10, kTol);
+  expect_vec(hit.normal, normalize(Vec3{x, 1.0 / 4.0, 0}));
+}
+
+TEST(ShapesEllipsoid, StartsInsideReportsExit) {
+  Ellipsoid e({0, 0, 0}, {2, 2, 2});
+  Hit hit;
+  ASSERT_TRUE(e.intersect(make_segment({0, 0, 0}, {4, 0, 0}), hit));
+  EXPECT_NEAR(hit.s, 0.5, kTol);
+  expect_vec(hit.normal, {1, 0, 0});  // outward
+}
+
+TEST(ShapesEllipsoid, ShortSegmentAndCloserHitAreRespected) {
+  Ellipsoid e({0, 0, 0}, {1, 1, 1});
+  Hit hit;
+  EXPECT_FALSE(e.intersect(make_segment({-5, 0, 0}, {-3, 0, 0}), hit));
+  hit.s = 0.3;  // a closer hit exists already (sphere entry would be at s = 0.4)
+  EXPECT_FALSE(e.intersect(make_segment({-5, 0, 0}, {5, 0, 0}), hit));
+  EXPECT_EQ(hit.s, 0.3);
+}
+
+TEST(ShapesEllipsoid, GeoViSTextureCoordinates) {
+  // Point on the unit sphere at polar angle θ, azimuth φ: v = acos(−cos θ)/π = 1 − θ/π and
+  // u = φ/2π (acos(n_x/sin θ)/2π, mirrored to 1 − u for n_y < 0).
+  Ellipsoid e({0, 0, 0}, {3, 3, 3});
+  for (double th : {0.3, 1.0, 1.5707963, 2.5}) {
+    for (double ph : {0.2, 1.4, 3.0, 3.5, 5.0, 6.1}) {
+      const Vec3 n{std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
+      Hit hit;
+      ASSERT_TRUE(e.intersect(make_segment(10.0 * n, {0, 0, 0}), hit));
+      EXPECT_NEAR(hit.u, ph / (2 * M_PI), 1e-9) << th << " " << ph;
+      EXPECT_NEAR(hit.v, 1.0 - th / M_PI, 1e-9) << th << " " << ph;
+    }
+  }
+}
+
+TEST(ShapesBox, FacesNormalsPartsAndUV) {
+  Box b({5, -9, -5}, {-5, 9, -2});  // corners in any order (minkWheel.scm)
+  Hit hit;
+  ASSERT_TRUE(b.intersect(make_segment({0, 0, 10}, {0, 0, -10}), hit));
+  EXPECT_NEAR(hit.s, 0.6, kTol);
+  expect_vec(hit.normal, {0, 0, 1});
+  EXPECT_EQ(hit.part, 5);
+  EXPECT_NEAR(hit.u, 0.5, kTol);
+  EXPECT_NEAR(hit.v, 0.5, kTol);
+  Hit side;
+  ASSERT_TRUE(b.intersect(make_segment({-10, 0, -3}, {10, 0, -3}), side));
+  EXPECT_NEAR(side.s, 0.25, kTol);
+  expect_vec(side.normal, {-1, 0, 0});
+  EXPECT_EQ(side.part, 0);
+  EXPECT_NEAR(side.u, 0.5, kTol);          // 1 − q_y
+  EXPECT_NEAR(side.v, 2.0 / 3.0, kTol);    // q_z = (−3 − (−5)) / 3
+  Hit miss;
+  EXPECT_FALSE(b.intersect(make_segment({-10, 10, -3}, {10, 10, -3}), miss));
+}
+
+TEST(ShapesCylinder, SideAndCapHits) {
+  Cylinder c({0, 0, 0}, {0, 0, 2}, 1, 1);
+  Hit side;
+  ASSERT_TRUE(c.intersect(make_segment({-5, 0, 1}, {5, 0, 1}), side));
+  EXPECT_NEAR(side.s, 0.4, kTol);
+  expect_vec(side.normal, {-1, 0, 0});
+  EXPECT_EQ(side.part, 0);
+  EXPECT_NEAR(side.v, 0.5, kTol);
+  Hit cap;
+  ASSERT_TRUE(c.intersect(make_segment({0.5, 0, 5}, {0.5, 0, -5}), cap));
+  EXPECT_NEAR(cap.s, 0.3, kTol);
+  expect_vec(cap.normal, {0, 0, 1});
+  EXPECT_EQ(cap.part, 2);
+  Hit miss;
+  EXPECT_FALSE(c.intersect(make_segment({-5, 0, 2.5}, {5, 0, 2.5}), miss));
+}
+
+TEST(ShapesCylinder, EllipticCrossSection) {
+  // Axis z: radius 2 along x, 1 along y. The line x = 1 along +y meets x²/4 + y² = 1 at
+  // y = −√3/2, normal ∝ (x/4, y, 0).
+  Cylinder c({0, 0, -1}, {0, 0, 1}, 2, 1);
+  Hit hit;
+  ASSERT_TRUE(c.intersect(make_segment({1, -5, 0}, {1, 5, 0}), hit));
+  const double y = -std::sqrt(3.0) / 2;
+  EXPECT_NEAR(hit.s, (y + 5) / 10, kTol);
+  expect_vec(hit.normal, normalize(Vec3{0.25, y, 0}));
+}
+
+TEST(ShapesRing, OuterInnerAndAnnulusHits) {
+  Ring r({0, 0, 0}, {0, 0, 1}, 2, 2, 1, 1);
+  Hit outer;
+  ASSERT_TRUE(r.intersect(make_segment({-5, 0, 0.5}, {5, 0, 0.5}), outer));
+  EXPECT_NEAR(outer.s, 0.3, kTol);
+  expect_vec(outer.normal, {-1, 0, 0});
+  Hit inner;  // from the hole outwards: the inner wall, normal towards the axis
+  ASSERT_TRUE(r.intersect(make_segment({0, 0, 0.5}, {5, 0, 0.5}), inner));
+  EXPECT_NEAR(inner.s, 0.2, kTol);
+  expect_vec(inner.normal, {-1, 0, 0});
+  EXPECT_EQ(inner.part, 3);
+  Hit top;
+  ASSERT_TRUE(r.intersect(make_segment({1.5, 0, 5}, {1.5, 0, -5}), top));
+  EXPECT_NEAR(top.s, 0.4, kTol);
+  expect_vec(top.normal, {0, 0, 1});
+  EXPECT_NEAR(top.v, 0.5, kTol);
+  Hit hole;
+  EXPECT_FALSE(r.intersect(make_segment({0.5, 0, 5}, {0.5, 0, -5}), hole));
+}
+
+TEST(ShapesTransform, TranslatedScaledSphere) {
+  // Unit sphere, object-to-coordinates M = T(3,0,0)·S(2): a sphere of radius 2 at (3,0,0).
+  Ellipsoid e({0, 0, 0}, {1, 1, 1});
+  e.set_transform(translate(3, 0, 0) * scale(2, 2, 2));
+  Hit hit;
+  ASSERT_TRUE(e.intersect(make_segment({-5, 0, 0}, {5, 0, 0}), hit));
+  EXPECT_NEAR(hit.s, 0.6, kTol);
+  expect_vec(hit.point, {1, 0, 0});
+  expect_vec(hit.normal, {-1, 0, 0});
+  const Bounds3 b = e.bounds();
+  expect_vec(b.lo, {1, -2, -2});
+  expect_vec(b.hi, {5, 2, 2});
+}
+
+TEST(ShapesTransform, RotatedBoxAndNonUniformScaleNormal) {
+  // Cube [−1,1]³ turned 45° about z: at y = 0.5 the ray along +x enters the rotated +y face
+  // −x + y = √2 at x = 0.5 − √2, normal (−1, 1, 0)/√2.
+  Box b({-1, -1, -1}, {1, 1, 1});
+  b.set_transform(rotate_z(45));
+  Hit hit;
+  ASSERT_TRUE(b.intersect(make_segment({-5, 0.5, 0}, {5, 0.5, 0}), hit));
+  EXPECT_NEAR(hit.s, (0.5 - std::sqrt(2.0) + 5) / 10, 1e-12);
+  expect_vec(hit.normal, normalize(Vec3{-1, 1, 0}), 1e-12);
+  // Unit sphere scaled to semi-axes (1, 2, 3) equals the ellipsoid with those axes (normals
+  // transform with M⁻ᵀ).
+  Ellipsoid s({0, 0, 0}, {1, 1, 1}), ref({0, 0, 0}, {1, 2, 3});
+  s.set_transform(scale(1, 2, 3));
+  Hit a, c;
+  const Segment seg = make_segment({-4, 0.7, 1.1}, {4, 0.3, -0.2});
+  ASSERT_TRUE(s.intersect(seg, a));
+  ASSERT_TRUE(ref.intersect(seg, c));
+  EXPECT_NEAR(a.s, c.s, 1e-12);
+  expect_vec(a.normal, c.normal, 1e-12);
+}
+
+TEST(ShapesPlaneRing, AccretionDiskUVAndTwoSidedNormal) {
+  PlaneRing disk({0, 0, 0}, {0, 0, 1}, 3, 15);
+  Hit hit;
+  ASSERT_TRUE(disk.intersect(make_segment({5, 0, 10}, {5, 0, -10}), hit));
+  EXPECT_NEAR(hit.s, 0.5, kTol);
+  expect_vec(hit.point, {5, 0, 0});
+  expect_vec(hit.normal, {0, 0, 1});
+  EXPECT_NEAR(hit.u, 0.0, kTol);
+  EXPECT_NEAR(hit.v, (5.0 - 3.0) / 12.0, kTol);
+  Hit below;
+  ASSERT_TRUE(disk.intersect(make_segment({0, -5, -10}, {0, -5, 10}), below));
+  expect_vec(below.normal, {0, 0, -1});  // faces the ray coming from below
+  EXPECT_NEAR(below.u, 0.75, kTol);      // φ = 3π/2
+  Hit side;
+  ASSERT_TRUE(disk.intersect(make_segment({0, 5, 1}, {0, 5, -1}), side));
+  EXPECT_NEAR(side.u, 0.25, kTol);
+  Hit miss;
+  EXPECT_FALSE(disk.intersect(make_segment({2, 0, 1}, {2, 0, -1}), miss));   // in the hole
+  EXPECT_FALSE(disk.intersect(make_segment({16, 0, 1}, {16, 0, -1}), miss));  // outside
+}
+
+TEST(ShapesPlanar, TriangleAndParallelogram) {
+  Triangle t({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  Parallelogram p({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  Hit h;
+  ASSERT_TRUE(t.intersect(make_segment({0.25, 0.5, 1}, {0.25, 0.5, -1}), h));
+  EXPECT_NEAR(h.s, 0.5, kTol);
+  EXPECT_NEAR(h.u, 0.25, kTol);
+  EXPECT_NEAR(h.v, 0.5, kTol);
+  expect_vec(h.normal, {0, 0, 1});
+  Hit miss;
+  EXPECT_FALSE(t.intersect(make_segment({0.75, 0.75, 1}, {0.75, 0.75, -1}), miss));
+  Hit hp;
+  ASSERT_TRUE(p.intersect(make_segment({0.75, 0.75, 1}, {0.75, 0.75, -1}), hp));
+  EXPECT_NEAR(hp.u, 0.75, kTol);
+  EXPECT_NEAR(hp.v, 0.75, kTol);
+  EXPECT_FALSE(p.intersect(make_segment({1.1, 0.5, 1}, {1.1, 0.5, -1}), miss));
+}
+
+TEST(ShapesChart, ObjectOnlyInItsChart) {
+  Ellipsoid e({0, 0, 0}, {1, 1, 1});
+  e.chart = 1;
+  Segment seg = make_segment({-5, 0, 0}, {5, 0, 0});
+  Hit hit;
+  EXPECT_FALSE(e.intersect(seg, hit));
+  seg.chart0 = seg.chart1 = 1;
+  EXPECT_TRUE(e.intersect(seg, hit));
+}
+
+// ---- factories ----------------------------------------------------------------------------------
+
+ParamSet params(const std::string& cmd) { return ParamSet(cmd, SourceLoc{"scene.scm", 12}); }
+
+TEST(ShapesFactory, PrimitivesGetObjectIdsShaderAndTransform) {
+  BuildContext ctx;
+  Diagnostics diag;
+  ctx.diag = &diag;
+  ctx.shaders["sh"] = std::make_shared<SurfaceShader>();
+  ParamSet a = params("solid-ellipsoid");
+  a.add("center", std::vector<double>{0, 0, 0});
+  a.add("axlen", std::vector<double>{1, 1, 1});
+  a.add("shader", "sh");
+  a.add("transform", translate(0, 0, 3));
+  a.add("id", "ball");
+  auto ball = make_object(a, ctx);
+  ParamSet b = params("solid-box");
+  b.add("cornerll", std::vector<double>{-1, -1, -1});
+  b.add("cornerur", std::vector<double>{1, 1, 1});
+  auto box = make_object(b, ctx);
+  Hit h1, h2;
+  ASSERT_TRUE(ball->intersect(make_segment({0, 0, 10}, {0, 0, 0}), h1));
+  EXPECT_NEAR(h1.s, 0.6, kTol);  // sphere top at z = 4
+  EXPECT_EQ(h1.object_id, 1);
+  EXPECT_EQ(h1.shader, ctx.shaders["sh"].get());
+  ASSERT_TRUE(box->intersect(make_segment({0, 0, -10}, {0, 0, 0}), h2));
+  EXPECT_EQ(h2.object_id, 2);
+  EXPECT_TRUE(diag.warnings().empty());
+}
+
+TEST(ShapesFactory, ClearErrors) {
+  BuildContext ctx;
+  Diagnostics diag;
+  ctx.diag = &diag;
+  ctx.shaders["ballShader"] = std::make_shared<SurfaceShader>();
+  ParamSet a = params("solid-ellipsoid");
+  a.add("shader", "ballShadr");
+  try {
+    make_object(a, ctx);
+    FAIL() << "expected an error";
+  } catch (const SceneError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("scene.scm:12: solid-ellipsoid: shader:"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("ballShader"), std::string::npos) << msg;  // did you mean
+  }
+  ParamSet b = params("solid-box");
+  b.add("cornerll", std::vector<double>{0, 0});
+  b.add("cornerur", std::vector<double>{1, 1, 1});
+  EXPECT_THROW(make_object(b, ctx), SceneError);
+  ParamSet c = params("plane-ring");
+  c.add("rout", 2.0);
+  c.add("rin", 3.0);
+  EXPECT_THROW(make_object(c, ctx), SceneError);
+  ParamSet d = params("solid-elipsoid");
+  try {
+    make_object(d, ctx);
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("solid-ellipsoid"), std::string::npos) << e.what();
+  }
+  ParamSet w = params("solid-ellipsoid");
+  w.add("axlenn", std::vector<double>{1, 1, 1});
+  make_object(w, ctx);
+  ASSERT_EQ(diag.warnings().size(), 1u);
+  EXPECT_NE(diag.warnings()[0].find("axlen"), std::string::npos);
+}
+
+TEST(ShapesFactory, LocalObjectsMustBeWrapped) {
+  BuildContext ctx;
+  ParamSet a = params("solid-ellipsoid");
+  a.add("objtype", 0);
+  ctx.objects["local"] = make_object(a, ctx);
+  ParamSet c = params("comp-object");
+  c.add("obj", "local");
+  try {
+    make_object(c, ctx);
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("local-comp-object"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ShapesFactory, AddObjectAppendsToCompound) {
+  BuildContext ctx;
+  ParamSet a = params("solid-ellipsoid");
+  a.add("center", std::vector<double>{0, 0, 0});
+  ctx.objects["a"] = make_object(a, ctx);
+  ParamSet b = params("solid-ellipsoid");
+  b.add("center", std::vector<double>{5, 0, 0});
+  ctx.objects["b"] = make_object(b, ctx);
+  ParamSet c = params("comp-object");
+  c.add("obj", "a");
+  ctx.objects["scene"] = make_object(c, ctx);
+  Hit h;
+  EXPECT_FALSE(ctx.objects["scene"]->intersect(make_segment({5, 0, 10}, {5, 0, -10}), h));
+  ParamSet add = params("add-object");
+  add.add("add-to", "scene");
+  add.add("obj", "b");
+  add_objects(add, ctx);
+  ASSERT_TRUE(ctx.objects["scene"]->intersect(make_segment({5, 0, 10}, {5, 0, -10}), h));
+  EXPECT_EQ(h.object_id, 2);
+  ParamSet bad = params("add-object");
+  bad.add("add-to", "a");
+  bad.add("obj", "b");
+  EXPECT_THROW(add_objects(bad, ctx), SceneError);
+}
+
+}  // namespace
+}  // namespace geovis

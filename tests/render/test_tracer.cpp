@@ -1,0 +1,495 @@
+// Tracer tests with independent, analytic expectations (issue 3 item 10): flat-space projection of
+// a sphere, the Schwarzschild shadow radius, the 4π sky mapping, frequency shift and Jacobi
+// parameters against closed forms, and the hit refinement against the exact surface.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "render/camera.h"
+#include "render/fullsky_camera.h"
+#include "render/pinhole_camera.h"
+#include "render/plugins.h"
+#include "render/renderer.h"
+#include "render/tracer.h"
+#include "spacetime/metric_registry.h"
+
+namespace geovis {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct FlatShader : Shader {
+  Color c{1, 1, 1};
+  Color shade(const Hit&, const ShadeContext&) const override { return c; }
+};
+
+/// Encodes the unit direction of the hit point from the origin as a colour: (n + 1)/2.
+struct DirectionShader : Shader {
+  Color shade(const Hit& h, const ShadeContext&) const override {
+    const Vec3 n = normalize(h.point);
+    return {0.5 * (n.x + 1), 0.5 * (n.y + 1), 0.5 * (n.z + 1)};
+  }
+};
+
+/// A celestial sphere |p| = R (pseudo-Cartesian) that catches rays crossing it.
+struct SkySphere : SceneObject {
+  double R;
+  const Shader* shader;
+  SkySphere(double r, const Shader* s) : R(r), shader(s) {}
+  bool intersect(const Segment& seg, Hit& hit) const override {
+    const Vec3 d = seg.p1 - seg.p0;
+    const double a = dot(d, d), b = 2 * dot(seg.p0, d), c = dot(seg.p0, seg.p0) - R * R;
+    const double disc = b * b - 4 * a * c;
+    if (a == 0 || disc < 0) return false;
+    const double q = std::sqrt(disc);
+    for (double s : {(-b - q) / (2 * a), (-b + q) / (2 * a)}) {
+      if (s >= 0 && s <= 1 && s < hit.s) {
+        hit.s = s;
+        hit.point = seg.p0 + s * d;
+        hit.normal = normalize(hit.point);
+        hit.ray_dir = normalize(d);
+        hit.shader = shader;
+        hit.object_id = 99;
+        hit.time = seg.x0[0] + s * (seg.x1[0] - seg.x0[0]);
+        return true;
+      }
+    }
+    return false;
+  }
+  Bounds3 bounds() const override { return {Vec3{-R, -R, -R}, Vec3{R, R, R}}; }
+};
+
+Tetrad identity_tetrad() {
+  Tetrad e{};
+  for (int a = 0; a < 4; ++a)
+    for (int m = 0; m < 4; ++m) e[a][m] = a == m ? 1.0 : 0.0;
+  return e;
+}
+
+/// A real GeoViS solid-ellipsoid (render/plugins.h) of radius R at `c` with a flat white shader.
+SceneObjectPtr make_sphere(BuildContext& ctx, const Vec3& c, double R) {
+  ctx.shaders["white"] = std::make_shared<FlatShader>();
+  ParamSet ps("solid-ellipsoid", {});
+  ps.add("objtype", 1);
+  ps.add("center", std::vector<double>{c.x, c.y, c.z});
+  ps.add("axlen", std::vector<double>{R, R, R});
+  ps.add("shader", "white");
+  ps.add("id", "sphere");
+  return make_object(ps, ctx);
+}
+
+bool lit(const Image& img, int x, int y) { return img.at(x, y)[0] > 0.5f; }
+
+// ---- Minkowski: a sphere's image is its analytic projection --------------------------------------
+
+TEST(Tracer, MinkowskiSphereProjectsToAnalyticDisk) {
+  auto metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
+  BuildContext ctx;
+  Diagnostics diag;
+  ctx.diag = &diag;
+  ctx.metric = metric;
+  const double D = 20, R = 3;
+  RenderJob job;
+  job.metric = metric;
+  job.observer.pos = Vec4{{0, 0, 0, 0}};
+  job.observer.e = identity_tetrad();
+  const int W = 160, H = 120;
+  const double fov_h = 50, fov_v = 40;
+  job.camera = std::make_shared<PinholeCamera>(Vec3{1, 0, 0}, Vec3{0, 0, 1}, fov_h, fov_v, W, H);
+  job.scene = make_sphere(ctx, Vec3{D, 0, 0}, R);
+  job.solver.box_ll = Vec4{{-1e300, -100, -100, -100}};
+  job.solver.box_ur = Vec4{{1e300, 100, 100, 100}};
+  RenderOptions opt;
+  opt.progress = false;
+  opt.threads = 2;
+  const RenderResult res = render(job, opt);
+
+  // Hit pixels and centroid in continuous image coordinates.
+  double n = 0, cx = 0, cy = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      if (lit(res.image, x, y)) {
+        n += 1;
+        cx += x + 0.5;
+        cy += y + 0.5;
+      }
+  ASSERT_GT(n, 100);
+  cx /= n;
+  cy /= n;
+  // The silhouette cone has half-angle α, sin α = R/D; on the optical axis the image is the circle
+  // of radius tan α in the image plane at unit distance, i.e. tan α / tan(fov_v/2) · H/2 pixels
+  // vertically and tan α / tan(fov_h/2) · W/2 horizontally (an ellipse in pixels when the pixels
+  // are not square); its area in pixels is π r_x r_y.
+  const double ta = std::tan(std::asin(R / D));
+  const double rx = ta / std::tan(fov_h * kPi / 360) * W / 2, ry = ta / std::tan(fov_v * kPi / 360) * H / 2;
+  EXPECT_NEAR(cx, W / 2.0, 0.5);
+  EXPECT_NEAR(cy, H / 2.0, 0.5);
+  EXPECT_NEAR(std::sqrt(n / kPi), std::sqrt(rx * ry), 0.5);
+  // Horizontal and vertical extent through the centre row/column.
+  int left = W, right = -1, top = H, bottom = -1;
+  for (int x = 0; x < W; ++x)
+    if (lit(res.image, x, H / 2)) left = std::min(left, x), right = std::max(right, x);
+  for (int y = 0; y < H; ++y)
+    if (lit(res.image, W / 2, y)) top = std::min(top, y), bottom = std::max(bottom, y);
+  // The first/last lit pixel has its centre inside: each edge is off by < 1/2 px.
+  EXPECT_NEAR((right + 1 - left) / 2.0, rx, 0.5);
+  EXPECT_NEAR((bottom + 1 - top) / 2.0, ry, 0.5);
+}
+
+TEST(Tracer, MinkowskiOffAxisSpherePixelClassificationIsExact) {
+  // Every pixel whose centre ray lies clearly inside (outside) the silhouette cone of an off-axis
+  // sphere is (is not) hit: cos∠(d, c) > cos α  ⟺  hit.
+  auto metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
+  BuildContext ctx;
+  Diagnostics diag;
+  ctx.diag = &diag;
+  ctx.metric = metric;
+  const Vec3 c{15, -4, 3};
+  const double R = 2.5;
+  RenderJob job;
+  job.metric = metric;
+  job.observer.e = identity_tetrad();
+  auto cam = std::make_shared<PinholeCamera>(Vec3{1, 0, 0}, Vec3{0, 0, 1}, 60, 48, 80, 64);
+  job.camera = cam;
+  job.scene = make_sphere(ctx, c, R);
+  job.solver.box_ll = Vec4{{-1e300, -100, -100, -100}};
+  job.solver.box_ur = Vec4{{1e300, 100, 100, 100}};
+  RenderOptions opt;
+  opt.progress = false;
+  const RenderResult res = render(job, opt);
+  const double cos_alpha = std::sqrt(1 - R * R / dot(c, c));
+  int checked = 0, hits = 0;
+  for (int y = 0; y < cam->height(); ++y)
+    for (int x = 0; x < cam->width(); ++x) {
+      Vec3 d;
+      ASSERT_TRUE(cam->direction(x + 0.5, y + 0.5, d));
+      const double cang = dot(d, normalize(c));
+      if (std::fabs(cang - cos_alpha) < 1e-6) continue;  // grazing
+      ++checked;
+      hits += cang > cos_alpha;
+      EXPECT_EQ(lit(res.image, x, y), cang > cos_alpha) << x << "," << y;
+    }
+  EXPECT_GT(hits, 50);
+  EXPECT_GT(checked, 5000);
+}
+
+// ---- Schwarzschild shadow ----------------------------------------------------------------------
+
+/// Renders the shadow seen by a static observer at r_obs (400x400 pinhole looking at the hole)
+/// and returns the equivalent radius sqrt(N/π) of the dark region in pixels, and the analytic one.
+void shadow_radius(double r_obs, double fov_deg, double& measured, double& expected) {
+  auto metric = std::shared_ptr<const Metric>(make_metric("Schwarzschild"));
+  const double M = 1.0;
+  RenderJob job;
+  job.metric = metric;
+  job.observer.pos = Vec4{{0, r_obs, kPi / 2, 0}};
+  job.observer.e = metric->natural_tetrad(job.observer.pos, TetradKind::Static);
+  const int N = 400;
+  // Look along −e_(1) = −e_r, towards the hole.
+  job.camera = std::make_shared<PinholeCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, fov_deg, fov_deg, N, N);
+  static FlatShader white;
+  job.scene = std::make_shared<SkySphere>(2 * r_obs + 20, &white);
+  job.solver.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
+  job.solver.box_ur = Vec4{{1e300, 4 * r_obs + 100, 1e300, 1e300}};
+  job.solver.max_steps = 5000;
+  RenderOptions opt;
+  opt.progress = false;
+  const RenderResult res = render(job, opt);
+  double dark = 0, cx = 0, cy = 0;
+  for (int y = 0; y < N; ++y)
+    for (int x = 0; x < N; ++x)
+      if (!lit(res.image, x, y)) {
+        dark += 1;
+        cx += x + 0.5;
+        cy += y + 0.5;
+      }
+  EXPECT_NEAR(cx / dark, N / 2.0, 0.5);
+  EXPECT_NEAR(cy / dark, N / 2.0, 0.5);
+  measured = std::sqrt(dark / kPi);
+  // Shadow of a Schwarzschild black hole for a static observer (Synge 1966; Perlick & Tsupko,
+  // Phys. Rep. 947 (2022) eq. 32): sin α = (3√3 M / r_obs) sqrt(1 − 2M/r_obs).
+  const double sin_alpha = 3 * std::sqrt(3.0) * M / r_obs * std::sqrt(1 - 2 * M / r_obs);
+  expected = std::tan(std::asin(sin_alpha)) / std::tan(fov_deg * kPi / 360) * N / 2;
+}
+
+TEST(Tracer, SchwarzschildShadowRadiusAt15M) {
+  double measured, expected;
+  shadow_radius(15, 60, measured, expected);
+  std::printf("shadow r_obs=15: measured %.3f px, analytic %.3f px\n", measured, expected);
+  EXPECT_NEAR(measured, expected, 1.0);
+}
+
+TEST(Tracer, SchwarzschildShadowRadiusAt50M) {
+  double measured, expected;
+  shadow_radius(50, 20, measured, expected);
+  std::printf("shadow r_obs=50: measured %.3f px, analytic %.3f px\n", measured, expected);
+  EXPECT_NEAR(measured, expected, 1.0);
+}
+
+// ---- 4π sky: pixel (i, j) sees the direction of eq. (4) -----------------------------------------
+
+TEST(Tracer, FullSkyImageOfMinkowskiSkyMatchesEquation4) {
+  auto metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
+  RenderJob job;
+  job.metric = metric;
+  job.observer.e = identity_tetrad();
+  const int W = 72, H = 36;
+  const double angle = 30;
+  job.camera = std::make_shared<FullSkyCamera>(angle, W, H);
+  static DirectionShader dir_shader;
+  job.scene = std::make_shared<SkySphere>(100, &dir_shader);
+  job.solver.box_ll = Vec4{{-1e300, -200, -200, -200}};
+  job.solver.box_ur = Vec4{{1e300, 200, 200, 200}};
+  RenderOptions opt;
+  opt.progress = false;
+  const RenderResult res = render(job, opt);
+  for (int j = 0; j < H; ++j)
+    for (int i = 0; i < W; ++i) {
+      // Eq. (4) with GeoViS's pixel centres: θ = (j+.5)/H π, φ = (1 − 2(i+.5)/W) π + angle.
+      const double th = (j + 0.5) / H * kPi, ph = (1 - 2 * (i + 0.5) / W) * kPi + angle * kPi / 180;
+      const double e[3] = {std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)};
+      const float* p = res.image.at(i, j);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(2.0 * p[c] - 1.0, e[c], 1e-6) << i << "," << j;
+    }
+}
+
+// ---- frequency shift and hit refinement in Schwarzschild ----------------------------------------
+
+TEST(Tracer, SchwarzschildStaticSphereFreqShiftAndRefinedHit) {
+  // A static sphere r = 6 around the hole seen by a static observer at r = 30: the hit lies on the
+  // sphere to integration precision (the refined hit, not the chord's), and the frequency ratio is
+  // ω_src/ω_obs = sqrt(1 − 2M/r_obs)/sqrt(1 − 2M/r_src) (gravitational redshift, MTW §25.4).
+  auto metric = std::shared_ptr<const Metric>(make_metric("Schwarzschild"));
+  BuildContext ctx;
+  Diagnostics diag;
+  ctx.diag = &diag;
+  ctx.metric = metric;
+  const double r_obs = 30, r_src = 6;
+  RenderJob job;
+  job.metric = metric;
+  job.observer.pos = Vec4{{0, r_obs, kPi / 2, 0}};
+  job.observer.e = metric->natural_tetrad(job.observer.pos, TetradKind::Static);
+  job.camera = std::make_shared<PinholeCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, 30, 30, 24, 24);
+  job.scene = make_sphere(ctx, Vec3{0, 0, 0}, r_src);
+  job.filter = Filter::RGBpdz;
+  job.solver.eps_abs = 1e-10;
+  job.solver.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
+  job.solver.box_ur = Vec4{{1e300, 100, 1e300, 1e300}};
+  RenderOptions opt;
+  opt.progress = false;
+  const RenderResult res = render(job, opt);
+  ASSERT_EQ(res.data.size(), 24u * 24u);
+  int hits = 0;
+  const double expected = std::sqrt(1 - 2 / r_obs) / std::sqrt(1 - 2 / r_src);
+  for (const auto& d : res.data) {
+    if (d.object_id == 0) continue;
+    ++hits;
+    EXPECT_NEAR(d.pos[1], r_src, 1e-7);
+    EXPECT_NEAR(d.freqshift, expected, 1e-6);
+    // dir is future-directed: positive time component, pointing outwards (towards the observer).
+    EXPECT_GT(d.dir[0], 0);
+    EXPECT_GT(d.dir[1], 0);
+  }
+  EXPECT_GT(hits, 100);
+}
+
+// ---- Jacobi parameters in flat space: J = λ·1 -------------------------------------------------
+
+TEST(Tracer, MinkowskiJacobiParametersAreFlatSpace) {
+  // In Minkowski the Jacobi equation d²J/dλ² = 0 with J(0) = 0, J'(0) = 1 gives J = λ·1, so
+  // d+ = d- = λ, μ = λ²/(d+ d-) = 1, ellipticity 0; λ equals the Euclidean distance for k^0 = −1.
+  auto metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
+  BuildContext ctx;
+  Diagnostics diag;
+  ctx.diag = &diag;
+  ctx.metric = metric;
+  RenderJob job;
+  job.metric = metric;
+  job.observer.e = identity_tetrad();
+  job.camera = std::make_shared<PinholeCamera>(Vec3{1, 0, 0}, Vec3{0, 0, 1}, 20, 20, 6, 6);
+  job.scene = make_sphere(ctx, Vec3{12, 0, 0}, 4);
+  job.filter = Filter::RGBjac;
+  job.solver.box_ll = Vec4{{-1e300, -100, -100, -100}};
+  job.solver.box_ur = Vec4{{1e300, 100, 100, 100}};
+  RenderOptions opt;
+  opt.progress = false;
+  const RenderResult res = render(job, opt);
+  int hits = 0;
+  for (const auto& d : res.data) {
+    if (d.object_id == 0) continue;
+    ++hits;
+    const double dist = std::sqrt(d.pos[1] * d.pos[1] + d.pos[2] * d.pos[2] + d.pos[3] * d.pos[3]);
+    EXPECT_NEAR(d.jacobi[0], dist, 1e-6);
+    EXPECT_NEAR(d.jacobi[1], dist, 1e-6);
+    EXPECT_NEAR(d.jacobi[2], 1.0, 1e-6);
+    EXPECT_NEAR(d.jacobi[4], 0.0, 1e-6);
+    EXPECT_NEAR(d.freqshift, 1.0, 1e-12);  // both at rest in flat space
+    EXPECT_NEAR(d.pos[0], -dist, 1e-9);    // the light left the surface dist earlier
+  }
+  EXPECT_EQ(hits, 36);
+}
+
+// ---- Kerr a = 0.9 thin disk seen face-on: centred and symmetric --------------------------------
+
+TEST(Tracer, KerrThinDiskFaceOnIsCentredAndSymmetric) {
+  const auto names = metric_names();
+  if (std::find(names.begin(), names.end(), "KerrBL") == names.end())
+    GTEST_SKIP() << "metric KerrBL is not registered yet";
+  std::shared_ptr<Metric> kerr = make_metric("KerrBL");
+  kerr->set_param("angmom", 0.9);  // Motion4D: a = angmom
+  auto metric = std::shared_ptr<const Metric>(kerr);
+  BuildContext ctx;
+  Diagnostics diag;
+  ctx.diag = &diag;
+  ctx.metric = metric;
+  ctx.shaders["white"] = std::make_shared<FlatShader>();
+  ParamSet ps("plane-ring", {});
+  ps.add("objtype", 1);
+  ps.add("center", std::vector<double>{0, 0, 0});
+  ps.add("normal", std::vector<double>{0, 0, 1});
+  ps.add("rin", 6.0);
+  ps.add("rout", 15.0);
+  ps.add("shader", "white");
+  RenderJob job;
+  job.metric = metric;
+  // Observer on (nearly) the spin axis: θ = 1e-4 (θ = 0 is a coordinate singularity).
+  job.observer.pos = Vec4{{0, 60, 1e-4, 0}};
+  job.observer.e = metric->natural_tetrad(job.observer.pos, TetradKind::Default);
+  const int N = 64;
+  job.camera = std::make_shared<PinholeCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, 36, 36, N, N);
+  job.scene = make_object(ps, ctx);
+  job.solver.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
+  job.solver.box_ur = Vec4{{1e300, 200, 1e300, 1e300}};
+  RenderOptions opt;
+  opt.progress = false;
+  const RenderResult res = render(job, opt);
+  double n = 0, cx = 0, cy = 0;
+  int asym = 0;
+  for (int y = 0; y < N; ++y)
+    for (int x = 0; x < N; ++x) {
+      if (lit(res.image, x, y)) {
+        n += 1;
+        cx += x + 0.5;
+        cy += y + 0.5;
+      }
+      asym += lit(res.image, x, y) != lit(res.image, N - 1 - x, N - 1 - y);
+    }
+  ASSERT_GT(n, 200);
+  EXPECT_NEAR(cx / n, N / 2.0, 0.5);
+  EXPECT_NEAR(cy / n, N / 2.0, 0.5);
+  // Face-on the image is invariant under rotations about the axis; frame dragging only twists it.
+  // Allow the boundary pixels of a discretised annulus (its circumference in pixels is ~2π·r).
+  EXPECT_LT(asym, int(0.02 * n));
+}
+
+// ---- point lights: straight shadow rays in Minkowski ---------------------------------------------
+
+/// White where the first point light is visible according to the tracer's shadow ray, black
+/// where it is not, grey when no shadow test is offered.
+struct LightProbeShader : Shader {
+  Color shade(const Hit& h, const ShadeContext& ctx) const override {
+    if (!ctx.light_visible) return {0.5, 0.5, 0.5};
+    return ctx.light_visible(h.point, ctx.lights->lights[0]) ? Color{1, 1, 1} : Color{0, 0, 0};
+  }
+};
+
+/// First parameter s in (eps, 1) where segment a -> b enters the ball (c, R), or -1.
+double segment_ball(const Vec3& a, const Vec3& b, const Vec3& c, double R) {
+  const Vec3 d = b - a, f = a - c;
+  const double A = dot(d, d), B = 2 * dot(f, d), C = dot(f, f) - R * R;
+  const double disc = B * B - 4 * A * C;
+  if (disc < 0) return -1;
+  for (double s : {(-B - std::sqrt(disc)) / (2 * A), (-B + std::sqrt(disc)) / (2 * A)})
+    if (s > 1e-6 && s < 1) return s;
+  return -1;
+}
+
+TEST(Tracer, MinkowskiPointLightShadowRaysMatchGeometry) {
+  auto metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
+  BuildContext ctx;
+  Diagnostics diag;
+  ctx.diag = &diag;
+  ctx.metric = metric;
+  ctx.shaders["probe"] = std::make_shared<LightProbeShader>();
+  const Vec3 ca{20, 0, 0}, cb{17, 0, 9};
+  const double Ra = 5, Rb = 2;
+  auto ball = [&](const Vec3& c, double R, const char* id) {
+    ParamSet ps("solid-ellipsoid", {});
+    ps.add("center", std::vector<double>{c.x, c.y, c.z});
+    ps.add("axlen", std::vector<double>{R, R, R});
+    ps.add("shader", "probe");
+    ps.add("id", id);
+    return ctx.objects[id] = make_object(ps, ctx);
+  };
+  ball(ca, Ra, "a");
+  ball(cb, Rb, "b");
+  ParamSet comp("comp-object", {});
+  comp.add("obj", "a");
+  comp.add("obj", "b");
+  comp.add("id", "scene");
+  RenderJob job;
+  job.metric = metric;
+  job.observer.e = identity_tetrad();
+  auto cam = std::make_shared<PinholeCamera>(Vec3{1, 0, 0}, Vec3{0, 0, 1}, 40, 40, 60, 60);
+  job.camera = cam;
+  job.scene = make_object(comp, ctx);
+  job.lights.shadows = true;
+  const Vec3 L{15, 0, 30};
+  job.lights.lights.push_back(PointLight{Vec4{{0, L.x, L.y, L.z}}, Color{1, 1, 1}, Vec3{1, 0, 0}});
+  job.filter = Filter::RGBpdz;
+  job.solver.box_ll = Vec4{{-1e300, -100, -100, -100}};
+  job.solver.box_ur = Vec4{{1e300, 100, 100, 100}};
+  RenderOptions opt;
+  opt.progress = false;
+  const RenderResult res = render(job, opt);
+  int lit_n = 0, dark_n = 0;
+  for (int y = 0; y < 60; ++y)
+    for (int x = 0; x < 60; ++x) {
+      const PixelData& d = res.data[size_t(y) * 60 + x];
+      if (d.object_id == 0) continue;
+      const Vec3 p{d.pos[1], d.pos[2], d.pos[3]};
+      const double sa = segment_ball(p, L, ca, Ra), sb = segment_ball(p, L, cb, Rb);
+      // Skip rays grazing either ball (their classification depends on the last bits).
+      const Vec3 dl = normalize(L - p);
+      auto clearance = [&](const Vec3& c, double R) {
+        const double t = dot(c - p, dl);
+        return std::fabs(norm(c - (p + t * dl)) - R);
+      };
+      if (clearance(ca, Ra) < 1e-3 || clearance(cb, Rb) < 1e-3) continue;
+      const bool visible = sa < 0 && sb < 0;
+      (visible ? lit_n : dark_n)++;
+      EXPECT_EQ(res.image.at(x, y)[0], visible ? 1.0f : 0.0f) << x << "," << y;
+    }
+  EXPECT_GT(lit_n, 50);
+  EXPECT_GT(dark_n, 50);
+  // No shadow test outside Minkowski.
+  auto schw = std::shared_ptr<const Metric>(make_metric("Schwarzschild"));
+  RenderJob sj = job;
+  sj.metric = schw;
+  sj.observer.pos = Vec4{{0, 40, kPi / 2, 0}};
+  sj.observer.e = schw->natural_tetrad(sj.observer.pos, TetradKind::Static);
+  sj.camera = std::make_shared<PinholeCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, 30, 30, 8, 8);
+  sj.solver.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
+  sj.solver.box_ur = Vec4{{1e300, 100, 1e300, 1e300}};
+  const RenderResult sr = render(sj, opt);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x)
+      if (sr.data[size_t(y) * 8 + x].object_id != 0) {
+        EXPECT_EQ(sr.image.at(x, y)[0], 0.5f);
+      }
+}
+
+TEST(Tracer, RejectsIncompleteJob) {
+  RenderJob job;
+  EXPECT_THROW(Tracer t(job), Error);
+  job.metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
+  EXPECT_THROW(Tracer t(job), Error);
+  job.camera = std::make_shared<FullSkyCamera>(0, 8, 4);
+  job.supersample = 0;
+  EXPECT_THROW(Tracer t(job), Error);
+}
+
+}  // namespace
+}  // namespace geovis
