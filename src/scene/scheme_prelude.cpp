@@ -1,0 +1,367 @@
+// The GeoViS prelude: the constants and helpers of GeoViS's Parser/init.scm (catalogue §1
+// "Constants from Parser/init.scm"), the command syntax of the scene language (catalogue §1), a
+// TinyScheme-compatible `do`, scene-relative `load`, and the evaluation driver.
+//
+// This text is evaluated once per process in the module (geovis prelude); every scene gets a fresh
+// module into which the names listed in %gv-scene-bindings are copied (so a scene redefining PI or
+// init-metric changes only its own module). It is read with symbols folded to lower case, like a
+// scene, so `PIhalf` here is the symbol `pihalf`.
+#include "scene/scheme_internal.h"
+
+namespace geovis::scheme_detail {
+
+const char* const kPreludeSource = R"SCM(
+(use-modules (system syntax) (system vm vm))
+
+;; ---------------------------------------------------------------------------------------------
+;; Constants and helpers of GeoViS Parser/init.scm (catalogue §1).
+(define gpObjTypeLocal 0)     ; object given in a local (tetrad) frame, wrapped by local-comp-object
+(define gpObjTypeInCoords 1)  ; object given in the metric's pseudo-Cartesian coordinates
+
+(define gpCSGDifferObj 1)
+(define gpCSGUnifiedObj 2)
+(define gpCSGIntersecObj 3)
+
+;; Index into Motion4D's enum_nat_tetrad_type (catalogue §1), used as '(localframe N).
+(define gpTetradDefault    0)
+(define gpTetradStatic     1)
+(define gpTetradLNRF       2)
+(define gpTetradFreefall   3)
+(define gpTetradComoving   4)
+(define gpTetradCylinder   5)
+(define gpTetradCartesian  6)
+
+;; The values of init.scm, digit for digit (PIhalf and PI2 are rounded there as here).
+(define PI     3.141592653589793)
+(define PIhalf 1.570796326794897)
+(define PI2    6.283185307179586)
+(define gpDBLMAX 1.844674407370955616e19)
+(define DEG_TO_RAD  0.017453292519943295770)
+(define RAD_TO_DEG 57.295779513082320875)
+
+(define (radians val) (* val DEG_TO_RAD))
+(define (degrees val) (* val RAD_TO_DEG))
+
+;; Horizontal field of view (degrees) of a pinhole camera with square pixels, resolution
+;; resX x resY and vertical field of view vfov (degrees): the image-plane half extents at unit
+;; distance are tan(hfov/2) and tan(vfov/2) and their ratio is resX/resY.
+(define (calcHFoV resX resY vfov)
+  (* 2.0 RAD_TO_DEG (atan (* (/ resX resY) (tan (* 0.5 vfov DEG_TO_RAD))))))
+
+;; ---------------------------------------------------------------------------------------------
+;; `do` as TinyScheme's: the body may contain definitions (minkWheel.scm does
+;; (do (...) (...) (define angle ...) ...)), which R7RS `do` forbids.
+(define-syntax gv-do
+  (syntax-rules ()
+    ((_ ((var init step ...) ...) (test expr ...) command ...)
+     (let loop ((var init) ...)
+       (if test
+           (begin (if #f #f) expr ...)
+           (begin
+             (let () command ... (if #f #f))
+             (loop (gv-do "step" var step ...) ...)))))
+    ((_ "step" x) x)
+    ((_ "step" x y) y)))
+
+;; ---------------------------------------------------------------------------------------------
+;; Command syntax. Each GeoViS command is a macro so that the call records where it was made:
+;; (init-metric '(type "Kerr") ...) expands to
+;; (%gv-call "init-metric" '#(file line line-of-arg1 ...) (list '(type "Kerr") ...)).
+;; Used as a value (e.g. (map init-texture ...)) it is a procedure without location.
+(define (%gv-source-line s)
+  (let ((src (syntax-source s)))
+    (if (and src (assq-ref src 'line)) (+ 1 (assq-ref src 'line)) 0)))
+
+(define (%gv-source-file s)
+  (let ((src (syntax-source s)))
+    (and src (assq-ref src 'filename))))
+
+(define (%gv-form-locations form args)
+  (list->vector (cons* (%gv-source-file form) (%gv-source-line form) (map %gv-source-line args))))
+
+(define-syntax %gv-define-command
+  (syntax-rules ()
+    ((_ name str)
+     (define-syntax name
+       (lambda (x)
+         (syntax-case x ()
+           ((_ arg (... ...))
+            (with-syntax ((locs (datum->syntax x (%gv-form-locations x #'(arg (... ...))))))
+              #'(%gv-call str 'locs (list arg (... ...)))))
+           (id (identifier? #'id)
+            #'(lambda args (%gv-call str #f args)))))))))
+
+;; Commands that record a call (scene/description.h).
+(%gv-define-command init-metric "init-metric")
+(%gv-define-command init-solver "init-solver")
+(%gv-define-command init-camera "init-camera")
+(%gv-define-command init-raygen "init-raygen")
+(%gv-define-command init-projector "init-projector")
+(%gv-define-command local-tetrad "local-tetrad")
+(%gv-define-command init-light-mgr "init-light-mgr")
+(%gv-define-command init-light "init-light")
+(%gv-define-command init-texture "init-texture")
+(%gv-define-command init-shader "init-shader")
+(%gv-define-command solid-ellipsoid "solid-ellipsoid")
+(%gv-define-command solid-box "solid-box")
+(%gv-define-command solid-cylinder "solid-cylinder")
+(%gv-define-command solid-ring "solid-ring")
+(%gv-define-command solid-background "solid-background")
+(%gv-define-command plane-ring "plane-ring")
+(%gv-define-command plane-triangle "plane-triangle")
+(%gv-define-command mesh-obj "mesh-obj")
+(%gv-define-command csg-object "csg-object")
+(%gv-define-command comp-object "comp-object")
+(%gv-define-command comp-octree-object "comp-octree-object")
+(%gv-define-command local-comp-object "local-comp-object")
+(%gv-define-command add-object "add-object")
+(%gv-define-command init-motion "init-motion")
+(%gv-define-command init-device "init-device")
+(%gv-define-command set-parameter "set-parameter")
+(%gv-define-command set-changeobj "set-changeobj")
+(%gv-define-command gvs-print-motion "gvs-print-motion")
+(%gv-define-command calc-ray "calc-ray")
+(%gv-define-command calc-proj-ray "calc-proj-ray")
+(%gv-define-command gvs-print "gvs-print")
+;; Immediate commands (return a value, record nothing).
+(%gv-define-command get-parameter "get-parameter")
+(%gv-define-command vec3 "vec3")
+(%gv-define-command vec4 "vec4")
+(%gv-define-command translate-obj "translate-obj")
+(%gv-define-command rotate-obj "rotate-obj")
+(%gv-define-command scale-obj "scale-obj")
+(%gv-define-command m4d-metriclist "m4d-metriclist")
+(%gv-define-command m4d-solverlist "m4d-solverlist")
+(%gv-define-command gv-exit "exit")
+(%gv-define-command gv-getenv "getenv")
+
+;; Transform matrices (translate-obj, rotate-obj, scale-obj): dim 2 or 3 and the 16 entries of
+;; the homogeneous 4x4 matrix, row-major (core/params.h Transform).
+(define <gv-matrix>
+  (make-record-type 'gv-matrix '(dim elements)
+    (lambda (m port)
+      (format port "#<~aD transform ~a>" ((record-accessor <gv-matrix> 'dim) m)
+              ((record-accessor <gv-matrix> 'elements) m)))))
+(define %gv-make-matrix (record-constructor <gv-matrix>))
+(define %gv-matrix? (record-predicate <gv-matrix>))
+(define %gv-matrix-dim (record-accessor <gv-matrix> 'dim))
+(define %gv-matrix-elements (record-accessor <gv-matrix> 'elements))
+
+;; ---------------------------------------------------------------------------------------------
+;; Evaluation driver.
+(define %gv-scene-module #f)
+(define %gv-overrides '())     ; ((symbol . datum) ...) from --define NAME=VALUE
+(define %gv-current-form #f)   ; top-level form being evaluated (for locating unbound names)
+
+;; ice-9/read.scm keeps per-port reader options in 2-bit fields (#b11 = inherit the global
+;; option); field 2 is case-insensitive. #xFFF7 = inherit everything, fold case on.
+(define %gv-fold-case-options #xFFF7)
+
+(define (%gv-fold-case! port)
+  (%set-port-property! port 'port-read-options %gv-fold-case-options))
+
+;; (define NAME expr) with NAME overridden by --define becomes (define NAME 'VALUE).
+(define (%gv-apply-override form)
+  (let ((d (syntax->datum form)))
+    (if (and (pair? d) (eq? (car d) 'define) (pair? (cdr d)) (symbol? (cadr d)))
+        (let ((name (cadr d)))
+          (%gv-note-define (symbol->string name))
+          (let ((o (assq name %gv-overrides)))
+            (if o
+                (begin
+                  (%gv-note-override-used (symbol->string name))
+                  (list 'define name (list 'quote (cdr o))))
+                form)))
+        form)))
+
+(define (%gv-eval-port port)
+  (%gv-fold-case! port)
+  (let loop ()
+    (let ((form (read-syntax port)))
+      (unless (eof-object? form)
+        (set! %gv-current-form form)
+        (%gv-set-form-line! (%gv-source-line form))
+        (eval (%gv-apply-override form) %gv-scene-module)
+        (loop)))))
+
+(define (%gv-eval-file path)
+  (call-with-input-file path %gv-eval-port #:encoding "UTF-8"))
+
+(define (%gv-eval-string text name)
+  (let ((port (open-input-string text)))
+    (set-port-filename! port name)
+    (%gv-eval-port port)))
+
+;; `load` relative to the folder of the file containing the call.
+(define (gv-load file)
+  (let ((path (%gv-enter-file file))
+        (outer-form %gv-current-form))
+    (%gv-eval-file path)
+    (set! %gv-current-form outer-form)
+    (%gv-leave-file)
+    (if #f #f)))
+
+(define (gv-quit . args) (apply gv-exit args))
+
+;; Reads the --define values: ((name-string . text) ...) -> ((symbol . datum) ...).
+(define (%gv-read-overrides defs)
+  (map (lambda (d)
+         (let* ((port (open-input-string (cdr d)))
+                (_ (%gv-fold-case! port))
+                (datum (read port))
+                (rest (read port)))
+           (when (eof-object? datum)
+             (%gv-define-error (car d) (cdr d) "the value is empty"))
+           (unless (eof-object? rest)
+             (%gv-define-error (car d) (cdr d) "the value must be a single Scheme datum (a number, \"a string\", #t or #f)"))
+           (cons (string->symbol (string-downcase (car d))) datum)))
+       defs))
+
+;; Innermost occurrence (with a source position) of identifier `sym` in form `x`, as a line.
+;; read-syntax gives syntax objects whose expressions are lists of syntax objects.
+(define (%gv-find-identifier-line x sym)
+  (let walk ((x x) (depth 0))
+    (and (< depth 100000)
+         (cond
+          ((pair? x) (or (walk (car x) (+ depth 1)) (walk (cdr x) (+ depth 1))))
+          ((syntax? x)
+           (syntax-case x ()
+             (id (identifier? #'id)
+                 (and (eq? (syntax->datum #'id) sym)
+                      (let ((l (%gv-source-line #'id))) (and (> l 0) l))))
+             ((a . b) (or (walk #'a (+ depth 1)) (walk #'b (+ depth 1))))
+             (_ #f)))
+          (else #f)))))
+
+(define (%gv-safe-format fmt args)
+  (catch #t
+    (lambda () (if (and (string? fmt) (list? args)) (apply format #f fmt args) (format #f "~s" fmt)))
+    (lambda _ (format #f "~s ~s" fmt args))))
+
+;; Turns a caught exception into (kind message line column name):
+;;   kind: geovis (a C++ error of a primitive), exit, read, syntax, unbound, stack, other.
+(define (%gv-describe-exception key args)
+  (case key
+    ((geovis-error) (list 'geovis "" 0 0 #f))
+    ((geovis-exit) (list 'exit (if (pair? args) (car args) 0) 0 0 #f))
+    ((gv-time-limit) (list 'time "" 0 0 #f))
+    ((gv-stack-overflow)
+     (list 'stack "stack overflow (infinite recursion?)" 0 0 #f))
+    ((read-error)
+     ;; args: (subr message format-args rest); the message starts with file:line:column.
+     (list 'read (if (and (pair? args) (pair? (cdr args)) (pair? (cddr args)))
+                     (%gv-safe-format (cadr args) (caddr args))
+                     (%gv-safe-format "~s" (list args)))
+           0 0 #f))
+    ((syntax-error)
+     ;; args: (who message source form subform)
+     (let* ((who (and (pair? args) (car args)))
+            (msg (if (and (pair? args) (pair? (cdr args))) (cadr args) "syntax error"))
+            (src (and (pair? args) (pair? (cdr args)) (pair? (cddr args)) (caddr args)))
+            (form (and (pair? args) (pair? (cdr args)) (pair? (cddr args)) (pair? (cdddr args))
+                       (cadddr args)))
+            (line (if (and (pair? src) (assq-ref src 'line)) (+ 1 (assq-ref src 'line)) 0))
+            (col (if (and (pair? src) (assq-ref src 'column)) (+ 1 (assq-ref src 'column)) 0)))
+       (list 'syntax
+             (string-append
+              (if (and who (symbol? who)) (string-append (symbol->string who) ": ") "")
+              (if (string? msg) msg (%gv-safe-format "~s" (list msg)))
+              (if form (string-append " in " (%gv-safe-format "~s" (list (syntax->datum form)))) ""))
+             line col #f)))
+    ((unbound-variable)
+     (let ((name (and (pair? args) (pair? (cdr args)) (pair? (cddr args)) (pair? (caddr args))
+                      (car (caddr args)))))
+       (list 'unbound ""
+             (or (and name (symbol? name) %gv-current-form
+                      (%gv-find-identifier-line %gv-current-form name))
+                 0)
+             0
+             (if (symbol? name) (symbol->string name) (%gv-safe-format "~s" (list name))))))
+    (else
+     (let* ((subr (and (pair? args) (car args)))
+            (msg (if (and (pair? args) (pair? (cdr args)) (pair? (cddr args)))
+                     (%gv-safe-format (cadr args) (caddr args))
+                     (%gv-safe-format "~s" (list args)))))
+       (list 'other
+             (string-append
+              (if (or (string? subr) (symbol? subr))
+                  (string-append "in procedure " (if (symbol? subr) (symbol->string subr) subr) ": ")
+                  "")
+              msg
+              (if (memq key '(misc-error wrong-type-arg out-of-range wrong-number-of-args
+                              unbound-variable system-error numerical-overflow))
+                  ""
+                  (string-append " (" (%gv-safe-format "~s" (list key)) ")")))
+             0 0 #f)))))
+
+;; The expander names an anonymous module when it first expands code in it (boot-9
+;; `module-name`: a gensym, registered in the module root so that `resolve-module` finds it);
+;; unregister the finished scene's module so that it and everything it holds can be collected.
+(define (%gv-forget-scene-module)
+  (let ((m %gv-scene-module))
+    (set! %gv-scene-module #f)
+    (set! %gv-current-form #f)
+    (when (module? m)
+      (let ((name (module-name m))
+            (root (resolve-module '() #f)))
+        (when (and (pair? name) (null? (cdr name))
+                   (eq? (hashq-ref (module-submodules root) (car name)) m))
+          (hashq-remove! (module-submodules root) (car name)))))))
+
+;; Runs thunk; returns #t or the description of the exception that stopped it. The stack limit
+;; turns runaway recursion into an error instead of exhausting memory.
+(define (%gv-run thunk stack-limit)
+  (let ((result
+         (catch #t
+           (lambda ()
+             (call-with-stack-overflow-handler stack-limit thunk
+               (lambda () (throw 'gv-stack-overflow)))
+             #t)
+           (lambda (key . args) (%gv-describe-exception key args)))))
+    (%gv-forget-scene-module)
+    ;; What the scene displayed appears now, before anything the program prints next.
+    (false-if-exception (force-output (current-output-port)))
+    (false-if-exception (force-output (current-error-port)))
+    result))
+
+;; Names every scene module gets: (scene-name . prelude-name).
+(define %gv-scene-bindings
+  '((gpobjtypelocal . gpobjtypelocal) (gpobjtypeincoords . gpobjtypeincoords)
+    (gpcsgdifferobj . gpcsgdifferobj) (gpcsgunifiedobj . gpcsgunifiedobj)
+    (gpcsgintersecobj . gpcsgintersecobj)
+    (gptetraddefault . gptetraddefault) (gptetradstatic . gptetradstatic)
+    (gptetradlnrf . gptetradlnrf) (gptetradfreefall . gptetradfreefall)
+    (gptetradcomoving . gptetradcomoving) (gptetradcylinder . gptetradcylinder)
+    (gptetradcartesian . gptetradcartesian)
+    (pi . pi) (pihalf . pihalf) (pi2 . pi2) (gpdblmax . gpdblmax)
+    (deg_to_rad . deg_to_rad) (rad_to_deg . rad_to_deg)
+    (radians . radians) (degrees . degrees) (calchfov . calchfov)
+    (do . gv-do) (load . gv-load) (exit . gv-exit) (quit . gv-quit)
+    (primitive-exit . gv-exit) (primitive-_exit . gv-exit) (getenv . gv-getenv)
+    (init-metric . init-metric) (init-solver . init-solver) (init-camera . init-camera)
+    (init-raygen . init-raygen) (init-projector . init-projector) (local-tetrad . local-tetrad)
+    (init-light-mgr . init-light-mgr) (init-light . init-light) (init-texture . init-texture)
+    (init-shader . init-shader) (solid-ellipsoid . solid-ellipsoid) (solid-box . solid-box)
+    (solid-cylinder . solid-cylinder) (solid-ring . solid-ring)
+    (solid-background . solid-background) (plane-ring . plane-ring)
+    (plane-triangle . plane-triangle) (mesh-obj . mesh-obj) (csg-object . csg-object)
+    (comp-object . comp-object) (comp-octree-object . comp-octree-object)
+    (local-comp-object . local-comp-object) (add-object . add-object)
+    (init-motion . init-motion) (init-device . init-device) (set-parameter . set-parameter)
+    (set-changeobj . set-changeobj) (gvs-print-motion . gvs-print-motion)
+    (calc-ray . calc-ray) (calc-proj-ray . calc-proj-ray) (gvs-print . gvs-print)
+    (get-parameter . get-parameter) (vec3 . vec3) (vec4 . vec4)
+    (translate-obj . translate-obj) (rotate-obj . rotate-obj) (scale-obj . scale-obj)
+    (m4d-metriclist . m4d-metriclist) (m4d-solverlist . m4d-solverlist)))
+
+(define %gv-prelude-module (current-module))  ; evaluated while (geovis prelude) is being defined
+
+(define (%gv-make-scene-module)
+  (let ((m (make-fresh-user-module))
+        (here %gv-prelude-module))
+    (for-each (lambda (b) (module-define! m (car b) (module-ref here (cdr b))))
+              %gv-scene-bindings)
+    m))
+)SCM";
+
+}  // namespace geovis::scheme_detail
