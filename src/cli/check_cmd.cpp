@@ -1,0 +1,90 @@
+// `geovis check SCENE [--define NAME=VALUE]... [--texture-path DIR]... [--strict] [--res WxH]`:
+// evaluates the scene and builds every device without rendering (so every error a render would
+// meet while setting up a frame is found), then prints a summary. Exit status 0 when fine.
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+#include "cli/command.h"
+#include "core/error.h"
+#include "scene/builder.h"
+#include "scene/scheme.h"
+
+namespace geovis::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CheckArgs {
+  std::string scene;
+  std::vector<std::string> texture_paths;
+  std::vector<std::string> defines;
+  bool strict = false;
+  bool quiet = false;
+};
+
+int run_check(const CheckArgs& a, const GlobalOptions& g) {
+  const bool quiet = a.quiet || g.quiet;
+  Diagnostics diag;
+  diag.strict = a.strict;
+  SchemeOptions sopts;
+  sopts.diag = &diag;
+  for (const auto& d : a.defines) {
+    const size_t eq = d.find('=');
+    if (eq == std::string::npos || eq == 0) throw Error("--define: expected NAME=VALUE, found \"" + d + "\"");
+    sopts.defines.emplace_back(d.substr(0, eq), d.substr(eq + 1));
+  }
+  for (const auto& dir : a.texture_paths)
+    if (!fs::is_directory(dir)) throw Error("--texture-path: \"" + dir + "\" is not a directory");
+  if (!fs::exists(a.scene)) throw Error("scene file \"" + a.scene + "\" does not exist");
+  SceneDescription scene = evaluate_scene_file(a.scene, sopts);
+
+  BuildOptions bopts;
+  const std::string dir = fs::path(a.scene).parent_path().string();
+  bopts.search_paths.push_back(dir.empty() ? "." : dir);
+  for (const auto& t : a.texture_paths) bopts.search_paths.push_back(t);
+  bopts.search_paths.push_back(".");
+  bopts.diag = &diag;
+  SceneBuilder builder(std::move(scene), bopts);
+  int images = 0;
+  for (int d = 0; d < builder.device_count(); ++d) images += static_cast<int>(builder.build(d).size());
+  if (!quiet) {
+    std::set<std::string> printed;  // a camera rebuilt for every frame repeats its warnings
+    for (const auto& w : diag.warnings())
+      if (printed.insert(w).second) std::cerr << w << "\n";
+    std::cout << builder.summary();
+    std::cout << "images:   " << images << "\n";
+    std::cout << "ok\n";
+  }
+  return 0;
+}
+
+void setup(CLI::App& app, GlobalOptions& g) {
+  auto a = std::make_shared<CheckArgs>();
+  CLI::App* sub = app.add_subcommand("check", "evaluate a scene and build every frame without rendering");
+  sub->add_option("scene", a->scene, "GeoViS scene file (.scm)")->required();
+  sub->add_option("--texture-path", a->texture_paths, "extra folder to search for textures and meshes")
+      ->allow_extra_args(false);
+  sub->add_option("--define", a->defines, "override a top-level (define NAME ...) of the scene")
+      ->allow_extra_args(false);
+  sub->add_flag("--strict", a->strict, "treat warnings (unknown keys, ...) as errors");
+  sub->add_flag("-q,--quiet", a->quiet, "print nothing but errors");
+  sub->callback([a, &g]() {
+    try {
+      g.exit_code = run_check(*a, g);
+    } catch (const Error& e) {
+      std::cerr << "geovis: error: " << e.what() << "\n";
+      g.exit_code = 1;
+    } catch (const std::exception& e) {
+      std::cerr << "geovis: internal error: " << e.what() << "\n";
+      g.exit_code = 2;
+    }
+  });
+}
+
+const bool registered = register_command("check", &setup);
+
+}  // namespace
+
+}  // namespace geovis::cli

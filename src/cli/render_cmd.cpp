@@ -1,0 +1,417 @@
+// `geovis render [SCENE] [-o OUT] [--frames A:B] [--res WxH] [--threads N] [--supersample N]
+//                [--texture-path DIR]... [--define NAME=VALUE]... [--strict] [--resume]
+//                [--movie out.mp4] [--quiet] [--verbose]`
+//
+// Evaluates the scene (the built-in one without SCENE), builds each device (= frame) and renders
+// it. Every finished frame is written atomically (io/image.h) before the next one starts, so a
+// failure in frame N never loses frames < N, and --resume continues an interrupted sequence.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include "cli/command.h"
+#include "core/error.h"
+#include "io/image.h"
+#include "render/data_files.h"
+#include "render/renderer.h"
+#include "scene/builder.h"
+#include "scene/default_scene.h"
+#include "scene/scheme.h"
+
+extern char** environ;
+
+namespace geovis::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderArgs {
+  std::string scene;
+  std::string out;
+  std::string frames;
+  std::string res;
+  int threads = 0;
+  int supersample = 1;
+  std::vector<std::string> texture_paths;
+  std::vector<std::string> defines;
+  bool strict = false;
+  bool resume = false;
+  std::string movie;
+  bool quiet = false;
+  bool verbose = false;
+};
+
+// ---- output names ------------------------------------------------------------------------------
+
+/// Position and width of the single printf frame conversion (%d, %4d, %04d) in `pattern`;
+/// npos when there is none. "%%" is a literal percent sign; any other '%' use is an error.
+struct FramePattern {
+  size_t pos = std::string::npos, len = 0;
+  int width = 0;
+  bool zero = false;
+};
+
+FramePattern find_frame_pattern(const std::string& s) {
+  FramePattern fp;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (s[i] != '%') continue;
+    if (i + 1 < s.size() && s[i + 1] == '%') {
+      ++i;
+      continue;
+    }
+    size_t j = i + 1;
+    bool zero = false;
+    if (j < s.size() && s[j] == '0') {
+      zero = true;
+      ++j;
+    }
+    int width = 0;
+    while (j < s.size() && std::isdigit(static_cast<unsigned char>(s[j]))) width = width * 10 + (s[j++] - '0');
+    if (j >= s.size() || s[j] != 'd' || width > 12)
+      throw Error("-o: \"" + s + "\": expected a frame-number pattern like %d or %04d after '%'");
+    if (fp.pos != std::string::npos) throw Error("-o: \"" + s + "\": more than one frame-number pattern");
+    fp.pos = i;
+    fp.len = j + 1 - i;
+    fp.width = width;
+    fp.zero = zero;
+    i = j;
+  }
+  return fp;
+}
+
+std::string format_frame(const std::string& s, const FramePattern& fp, int frame) {
+  std::string num = std::to_string(frame);
+  if (static_cast<int>(num.size()) < fp.width) num.insert(0, fp.width - num.size(), fp.zero ? '0' : ' ');
+  std::string out;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (i == fp.pos) {
+      out += num;
+      i += fp.len - 1;
+    } else if (s[i] == '%' && i + 1 < s.size() && s[i + 1] == '%') {
+      out += '%';
+      ++i;
+    } else {
+      out += s[i];
+    }
+  }
+  return out;
+}
+
+/// "dir/name.ext" -> ("dir/name", ".ext"); the extension is that of the file name only.
+std::pair<std::string, std::string> split_ext(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot == slash + 1)
+    return {path, ""};
+  return {path.substr(0, dot), path.substr(dot)};
+}
+
+void check_image_extension(const std::string& path) {
+  const std::string ext = to_lower(split_ext(path).second);
+  static const std::vector<std::string> ok = {".png", ".tif", ".tiff", ".ppm", ".exr", ".jpg", ".jpeg"};
+  if (std::find(ok.begin(), ok.end(), ext) == ok.end())
+    throw Error("-o: \"" + path + "\": " +
+                (ext.empty() ? std::string("no file extension") : "unsupported image format \"" + ext + "\"") +
+                "; use .png, .tif or .ppm (also .exr, .jpg)");
+}
+
+/// Where frame `frame` goes: OUT's pattern filled in; without a pattern, for a sequence the frame
+/// number is inserted before the extension (out_0007.png); a single frame is OUT exactly.
+std::string frame_path(const std::string& out, int frame, bool sequence) {
+  const FramePattern fp = find_frame_pattern(out);
+  if (fp.pos != std::string::npos) return format_frame(out, fp, frame);
+  if (!sequence) return out;
+  auto [base, ext] = split_ext(out);
+  char num[32];
+  std::snprintf(num, sizeof num, "_%04d", frame);
+  return base + num + ext;
+}
+
+/// The ffmpeg input pattern of the frames (printf style, as ffmpeg's image2 demuxer reads it).
+std::string movie_pattern(const std::string& out, bool sequence) {
+  const FramePattern fp = find_frame_pattern(out);
+  if (fp.pos != std::string::npos) return out;
+  if (!sequence) return out;
+  auto [base, ext] = split_ext(out);
+  return base + "_%04d" + ext;
+}
+
+/// Stereo images: name.left.ext / name.right.ext.
+std::string eye_path(const std::string& path, const std::string& eye) {
+  if (eye.empty()) return path;
+  auto [base, ext] = split_ext(path);
+  return base + "." + eye + ext;
+}
+
+bool exists(const std::string& p) {
+  std::error_code ec;
+  return fs::exists(p, ec);
+}
+
+// ---- argument parsing --------------------------------------------------------------------------
+
+std::pair<int, int> parse_frames(const std::string& s, int count) {
+  auto parse_int = [&](const std::string& t) {
+    if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos)
+      throw Error("--frames: expected A:B or N with non-negative integers, found \"" + s + "\"");
+    try {
+      return std::stoi(t);
+    } catch (const std::exception&) {
+      throw Error("--frames: number out of range in \"" + s + "\"");
+    }
+  };
+  int a, b;
+  const size_t colon = s.find(':');
+  if (colon == std::string::npos) {
+    a = b = parse_int(s);
+  } else {
+    a = parse_int(s.substr(0, colon));
+    b = parse_int(s.substr(colon + 1));
+  }
+  if (a > b) throw Error("--frames: the first frame " + std::to_string(a) + " is after the last " + std::to_string(b));
+  if (b >= count)
+    throw Error("--frames: frame " + std::to_string(b) + " does not exist: the scene has " + std::to_string(count) +
+                " frame(s), numbered 0 to " + std::to_string(count - 1));
+  return {a, b};
+}
+
+std::pair<int, int> parse_res(const std::string& s) {
+  const size_t x = s.find_first_of("xX");
+  auto bad = [&]() -> std::pair<int, int> { throw Error("--res: expected WIDTHxHEIGHT (e.g. 640x480), found \"" + s + "\""); };
+  if (x == std::string::npos) return bad();
+  const std::string w = s.substr(0, x), h = s.substr(x + 1);
+  if (w.empty() || h.empty() || w.find_first_not_of("0123456789") != std::string::npos ||
+      h.find_first_not_of("0123456789") != std::string::npos || w.size() > 6 || h.size() > 6)
+    return bad();
+  const int wi = std::stoi(w), hi = std::stoi(h);
+  if (wi <= 0 || hi <= 0) throw Error("--res: width and height must be positive, found \"" + s + "\"");
+  return {wi, hi};
+}
+
+std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector<std::string>& defs) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& d : defs) {
+    const size_t eq = d.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw Error("--define: expected NAME=VALUE, found \"" + d + "\"");
+    out.emplace_back(d.substr(0, eq), d.substr(eq + 1));
+  }
+  return out;
+}
+
+/// Prints new warnings once (a camera is rebuilt for every frame and would repeat its own).
+void print_warnings(Diagnostics& diag, bool quiet, std::set<std::string>& printed) {
+  for (const auto& w : diag.warnings())
+    if (printed.insert(w).second && !quiet) std::cerr << w << "\n";
+  diag.clear();
+}
+
+// ---- ffmpeg ------------------------------------------------------------------------------------
+
+std::string find_program(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  if (!path) return {};
+  std::stringstream ss(path);
+  std::string dir;
+  while (std::getline(ss, dir, ':')) {
+    if (dir.empty()) continue;
+    const std::string p = dir + "/" + name;
+    if (::access(p.c_str(), X_OK) == 0) return p;
+  }
+  return {};
+}
+
+/// Runs a program with arguments (no shell); returns its exit status (-1 when it could not run).
+int run_program(const std::vector<std::string>& args, bool quiet) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  if (quiet) {
+    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  }
+  pid_t pid;
+  const int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+void make_movie(const RenderArgs& a, const std::string& pattern, int first, bool quiet) {
+  const std::string ffmpeg = find_program("ffmpeg");
+  if (ffmpeg.empty()) {
+    std::cerr << "geovis: --movie: ffmpeg is not installed (not found in PATH); the frames are kept, "
+                 "assemble them with e.g. ffmpeg -framerate 25 -start_number "
+              << first << " -i '" << pattern << "' -pix_fmt yuv420p " << a.movie << "\n";
+    throw Error("--movie: ffmpeg not found");
+  }
+  // yuv420p needs even dimensions: pad by one pixel when needed.
+  const std::vector<std::string> args = {ffmpeg, "-y", "-loglevel", "error", "-framerate", "25", "-start_number",
+                                         std::to_string(first), "-i", pattern, "-vf",
+                                         "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", a.movie};
+  const int rc = run_program(args, false);
+  if (rc != 0)
+    throw Error("--movie: ffmpeg failed (exit status " + std::to_string(rc) + ") making \"" + a.movie +
+                "\"; the frames are kept");
+  if (!quiet) std::cerr << "movie: " << a.movie << "\n";
+}
+
+// ---- the command -------------------------------------------------------------------------------
+
+int run_render(const RenderArgs& a, const GlobalOptions& g) {
+  const bool quiet = a.quiet || g.quiet;
+  const bool verbose = (a.verbose || g.verbose) && !quiet;
+  Diagnostics diag;
+  diag.strict = a.strict;
+  std::set<std::string> printed;
+
+  // Check the arguments that need no scene first (fail fast, before a long evaluation).
+  std::optional<std::pair<int, int>> res;
+  if (!a.res.empty()) res = parse_res(a.res);
+  if (a.threads < 0) throw Error("--threads: expected 0 (all cores) or a positive number, found " + std::to_string(a.threads));
+  if (a.supersample < 1 || a.supersample > 64)
+    throw Error("--supersample: expected 1 to 64 samples per pixel side, found " + std::to_string(a.supersample));
+  if (!a.movie.empty() && to_lower(split_ext(a.movie).second).empty())
+    throw Error("--movie: \"" + a.movie + "\": expected a file name with an extension such as .mp4");
+  for (const auto& dir : a.texture_paths)
+    if (!fs::is_directory(dir)) throw Error("--texture-path: \"" + dir + "\" is not a directory");
+
+  SchemeOptions sopts;
+  sopts.defines = parse_defines(a.defines);
+  sopts.diag = &diag;
+  SceneDescription scene;
+  std::string base;
+  if (a.scene.empty()) {
+    scene = evaluate_scene_string(default_scene_text(), default_scene_name() + ".scm", sopts);
+    base = default_scene_name();
+  } else {
+    if (!fs::exists(a.scene)) throw Error("scene file \"" + a.scene + "\" does not exist");
+    scene = evaluate_scene_file(a.scene, sopts);
+    base = fs::path(a.scene).stem().string();
+  }
+  print_warnings(diag, quiet, printed);
+
+  BuildOptions bopts;
+  const std::string scene_dir = a.scene.empty() ? std::string() : fs::path(a.scene).parent_path().string();
+  bopts.search_paths.push_back(scene_dir.empty() ? "." : scene_dir);
+  for (const auto& t : a.texture_paths) bopts.search_paths.push_back(t);
+  bopts.search_paths.push_back(".");
+  bopts.resolution = res;
+  bopts.supersample = a.supersample;
+  bopts.diag = &diag;
+  SceneBuilder builder(std::move(scene), bopts);
+  print_warnings(diag, quiet, printed);
+
+  const int count = builder.device_count();
+  if (count == 0) throw Error("the scene has no init-device: nothing to render");
+  auto [first, last] = a.frames.empty() ? std::pair<int, int>{0, count - 1} : parse_frames(a.frames, count);
+  // Several frames: OUT is a pattern or gets the frame number; one frame goes to OUT exactly.
+  // The default name is numbered whenever the scene is a sequence.
+  const bool sequence = last > first;
+  const std::string out = a.out.empty() ? base + (count > 1 ? "_%04d.png" : ".png") : a.out;
+  find_frame_pattern(out);  // validates the pattern
+  check_image_extension(out);
+
+  std::ostringstream action_log;
+  builder.run_actions(action_log);
+  if (!quiet) std::cout << action_log.str();
+
+  int rendered = 0, skipped = 0;
+  bool stereo = false;
+  for (int f = first; f <= last; ++f) {
+    const std::string path = frame_path(out, f, sequence);
+    if (a.resume && (exists(path) || (exists(eye_path(path, "left")) && exists(eye_path(path, "right"))))) {
+      ++skipped;
+      if (verbose) std::cerr << "frame " << f << ": " << path << " exists, skipped (--resume)\n";
+      continue;
+    }
+    const std::vector<FrameJob> jobs = builder.build(f);
+    stereo = stereo || jobs.size() == 2;
+    print_warnings(diag, quiet, printed);
+    for (const FrameJob& fj : jobs) {
+      const std::string img = eye_path(path, fj.eye);
+      const fs::path parent = fs::path(img).parent_path();
+      if (!parent.empty()) {
+        std::error_code ec;
+        fs::create_directories(parent, ec);
+        if (ec) throw Error("cannot create the output folder \"" + parent.string() + "\": " + ec.message());
+      }
+      RenderOptions ro;
+      ro.threads = a.threads;
+      ro.progress = !quiet;
+      ro.label = "frame " + std::to_string(f) + (fj.eye.empty() ? "" : " " + fj.eye) + " -> " + img;
+      const RenderResult r = render(fj.job, ro);
+      // Data files first, the image last: an existing image means a complete frame (--resume).
+      if (!fj.data_files_wanted.empty()) {
+        const std::string written =
+            write_filter_data(img, fj.job.filter, r.image.width, r.image.height, r.data);
+        if (verbose && !written.empty()) std::cerr << "  data: " << written << "\n";
+      }
+      write_image(img, r.image);
+      if (verbose)
+        std::cerr << "  " << r.stats.rays << " rays, " << r.stats.steps << " steps, " << r.stats.rhs_evals
+                  << " right-hand-side evaluations, " << r.stats.seconds << " s\n";
+    }
+    ++rendered;
+  }
+  if (!quiet && a.resume) std::cerr << rendered << " frame(s) rendered, " << skipped << " skipped (already on disk)\n";
+
+  if (!a.movie.empty()) {
+    // A stereo sequence becomes the movie of the left eye.
+    stereo = stereo || exists(eye_path(frame_path(out, first, sequence), "left"));
+    make_movie(a, eye_path(movie_pattern(out, sequence), stereo ? "left" : ""), first, quiet);
+  }
+  return 0;
+}
+
+void setup(CLI::App& app, GlobalOptions& g) {
+  auto a = std::make_shared<RenderArgs>();
+  CLI::App* sub = app.add_subcommand("render", "render a scene (the built-in scene without SCENE)");
+  sub->add_option("scene", a->scene, "GeoViS scene file (.scm)");
+  sub->add_option("-o,--output", a->out,
+                  "output image (.png, .tif, .ppm); for several frames a printf pattern like seq_%04d.png");
+  sub->add_option("--frames", a->frames, "frames to render: A:B (inclusive) or N; default all");
+  sub->add_option("--res", a->res, "override the camera resolution, WIDTHxHEIGHT (field of view kept)");
+  sub->add_option("--threads", a->threads, "worker threads (0 = all cores)");
+  sub->add_option("--supersample", a->supersample, "N x N samples per pixel");
+  sub->add_option("--texture-path", a->texture_paths, "extra folder to search for textures and meshes")
+      ->allow_extra_args(false);
+  sub->add_option("--define", a->defines, "override a top-level (define NAME ...) of the scene")
+      ->allow_extra_args(false);
+  sub->add_flag("--strict", a->strict, "treat warnings (unknown keys, ...) as errors");
+  sub->add_flag("--resume", a->resume, "skip frames whose image already exists");
+  sub->add_option("--movie", a->movie, "assemble the frames into a movie with ffmpeg (e.g. out.mp4)");
+  sub->add_flag("-q,--quiet", a->quiet, "print nothing but errors");
+  sub->add_flag("-v,--verbose", a->verbose, "print details (statistics per frame)");
+  sub->callback([a, &g]() {
+    try {
+      g.exit_code = run_render(*a, g);
+    } catch (const Error& e) {
+      std::cerr << "geovis: error: " << e.what() << "\n";
+      g.exit_code = 1;
+    } catch (const std::exception& e) {
+      std::cerr << "geovis: internal error: " << e.what() << "\n";
+      g.exit_code = 2;
+    }
+  });
+}
+
+const bool registered = register_command("render", &setup);
+
+}  // namespace
+
+}  // namespace geovis::cli

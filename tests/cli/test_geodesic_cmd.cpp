@@ -1,0 +1,178 @@
+// `geovis geodesic` and `geovis metrics`, run in-process (geovis::cli::run).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/command.h"
+#include "spacetime/metric_registry.h"
+
+namespace geovis::cli {
+namespace {
+
+struct Output {
+  int code;
+  std::string out, err;
+};
+
+Output run_args(std::vector<std::string> args) {
+  args.insert(args.begin(), "geovis");
+  std::vector<const char*> argv;
+  for (auto& a : args) argv.push_back(a.c_str());
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  const int code = run(static_cast<int>(argv.size()), argv.data());
+  Output o{code, testing::internal::GetCapturedStdout(), testing::internal::GetCapturedStderr()};
+  return o;
+}
+
+std::vector<std::string> lines(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string l;
+  while (std::getline(ss, l)) out.push_back(l);
+  return out;
+}
+
+std::vector<double> csv_numbers(const std::string& line) {
+  std::vector<double> v;
+  std::stringstream ss(line);
+  std::string item;
+  while (std::getline(ss, item, ',')) v.push_back(std::stod(item));
+  return v;
+}
+
+constexpr const char* kLambdaTo30 = "29.393876913398135";  // 24 / k^r, k^r = sqrt(1 − 2/6) = sqrt(2/3)
+
+TEST(GeodesicCmd, ReproducesRadialLightTravelTime) {
+  // Paper eq. (9): t(30) − t(6) = [r + r_s ln(r − r_s)] between the radii = 27.8918 (M = 1). For an
+  // affinely parametrized radial null ray dr/dλ = k^r is constant, so λ = 24/k^r ends at r = 30.
+  const double expected = (30.0 + 2.0 * std::log(28.0)) - (6.0 + 2.0 * std::log(4.0));
+  EXPECT_NEAR(expected, 27.8918, 1e-4);
+  EXPECT_NEAR(std::stod(kLambdaTo30), 24.0 / std::sqrt(2.0 / 3.0), 1e-14);
+  const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5707963267948966,0", "--dir",
+                             "1,0,0", "--forward", "--lambda-max", kLambdaTo30, "--eps-abs", "1e-10"});
+  ASSERT_EQ(o.code, 0) << o.err;
+  const auto ls = lines(o.out);
+  ASSERT_GE(ls.size(), 4u);
+  EXPECT_EQ(ls.front(), "lambda,x0,x1,x2,x3,k0,k1,k2,k3,constraint");
+  EXPECT_EQ(ls.back(), "# stop: lambda-max");
+  const auto first = csv_numbers(ls[1]);
+  const auto last = csv_numbers(ls[ls.size() - 2]);
+  ASSERT_EQ(first.size(), 10u);
+  ASSERT_EQ(last.size(), 10u);
+  EXPECT_EQ(first[0], 0.0);
+  EXPECT_EQ(first[2], 6.0);
+  EXPECT_NEAR(last[2], 30.0, 1e-8);
+  EXPECT_NEAR(last[1] - first[1], expected, 1e-4);
+  EXPECT_NEAR(last[1] - first[1], expected, 1e-8);  // what the tolerance actually delivers
+  for (size_t i = 1; i + 1 < ls.size(); ++i) EXPECT_LT(std::fabs(csv_numbers(ls[i])[9]), 1e-9) << ls[i];
+}
+
+TEST(GeodesicCmd, BackwardRayIsPastDirectedByDefault) {
+  // Without --forward the ray is traced backwards in time, as the renderer does: t decreases.
+  const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5707963267948966,0", "--dir",
+                             "1,0,0", "--lambda-max", "5", "--solver", "DP54"});
+  ASSERT_EQ(o.code, 0) << o.err;
+  const auto ls = lines(o.out);
+  const auto last = csv_numbers(ls[ls.size() - 2]);
+  EXPECT_LT(last[1], 0.0);
+  EXPECT_GT(last[2], 6.0);  // spatial direction along +e(r)
+}
+
+TEST(GeodesicCmd, CapturedRayStopsAtTheHorizon) {
+  const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,10,1.5707963267948966,0", "--dir",
+                             "-1,0,0", "--forward", "--eps-rel", "1e-8", "--solver", "DOP853"});
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_EQ(lines(o.out).back(), "# stop: horizon");
+}
+
+TEST(GeodesicCmd, JsonCarriesTheSame) {
+  const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--param", "mass=0.5", "--pos",
+                             "0,10,1.5707963267948966,0", "--dir", "0,0.3,0", "--type", "timelike", "--max-steps",
+                             "20", "--format", "json"});
+  ASSERT_EQ(o.code, 0) << o.err;
+  const auto j = nlohmann::json::parse(o.out);
+  EXPECT_EQ(j["metric"], "Schwarzschild");
+  EXPECT_EQ(j["params"]["mass"], 0.5);
+  EXPECT_EQ(j["type"], "timelike");
+  EXPECT_EQ(j["stop"], "max-steps");
+  EXPECT_EQ(j["steps"], 20);
+  ASSERT_EQ(j["points"].size(), 21u);
+  // u = γ(e0 + β e2) with β = 0.3: g(u,u) = −1 at the start.
+  EXPECT_NEAR(j["points"][0]["constraint"].get<double>(), 0.0, 1e-14);
+  EXPECT_EQ(j["points"][0]["x"][1], 10.0);
+}
+
+TEST(GeodesicCmd, ErrorsAreClear) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string expect;
+  };
+  const std::string eq = "1.5707963267948966";
+  const std::vector<Case> cases = {
+      {{"--metric", "Schwarzschlid", "--pos", "0,6," + eq + ",0", "--dir", "1,0,0"}, "did you mean \"Schwarzschild\""},
+      {{"--metric", "Schwarzschild", "--param", "mas=2", "--pos", "0,6," + eq + ",0", "--dir", "1,0,0"},
+       "did you mean \"mass\""},
+      {{"--metric", "Schwarzschild", "--param", "mass", "--pos", "0,6," + eq + ",0", "--dir", "1,0,0"},
+       "--param: expected KEY=VALUE"},
+      {{"--metric", "Schwarzschild", "--param", "mass=-1", "--pos", "0,6," + eq + ",0", "--dir", "1,0,0"},
+       "out of range"},
+      {{"--metric", "Schwarzschild", "--solver", "GSL_RK_Cash-Krap", "--pos", "0,6," + eq + ",0", "--dir", "1,0,0"},
+       "did you mean \"GSL_RK_Cash-Karp\""},
+      {{"--metric", "Schwarzschild", "--pos", "0,6,1.5", "--dir", "1,0,0"}, "--pos: expected 4 comma-separated"},
+      {{"--metric", "Schwarzschild", "--pos", "0,6,x,0", "--dir", "1,0,0"}, "--pos: expected 4 comma-separated"},
+      {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "1,0"}, "--dir: expected 3"},
+      {{"--metric", "Schwarzschild", "--pos", "0,1.5," + eq + ",0", "--dir", "1,0,0"}, "outside the validity domain"},
+      {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "0.6,0.8,0", "--type", "timelike"},
+       "|v| < 1"},
+      {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "0,0,0"}, "non-zero direction"},
+      {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "1,0,0", "--type", "lightlik"},
+       "did you mean \"lightlike\""},
+      {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "1,0,0", "--eps-abs", "0"}, "eps_abs"},
+      {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "1,0,0", "--format", "xml"},
+       "--format: expected csv or json"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args = {"geodesic"};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const Output o = run_args(args);
+    EXPECT_NE(o.code, 0) << c.expect;
+    EXPECT_NE(o.err.find(c.expect), std::string::npos) << "expected \"" << c.expect << "\" in: " << o.err;
+    EXPECT_TRUE(o.out.empty()) << o.out;
+  }
+}
+
+TEST(MetricsCmd, ListsEveryMetric) {
+  const Output o = run_args({"metrics"});
+  ASSERT_EQ(o.code, 0) << o.err;
+  for (const auto& n : metric_names()) EXPECT_NE(o.out.find(n + "\n"), std::string::npos) << n;
+  EXPECT_NE(o.out.find("mass"), std::string::npos);
+  EXPECT_NE(o.out.find("coordinates: t, r, theta, phi (spherical)"), std::string::npos);
+}
+
+TEST(MetricsCmd, JsonHasCoordinatesTetradsAndParameters) {
+  const Output o = run_args({"metrics", "--json"});
+  ASSERT_EQ(o.code, 0) << o.err;
+  const auto j = nlohmann::json::parse(o.out);
+  ASSERT_EQ(j.size(), metric_names().size());
+  bool found = false;
+  for (const auto& m : j) {
+    EXPECT_EQ(m["coordinates"].size(), 4u);
+    EXPECT_GE(m["tetrads"].size(), 1u);
+    if (m["name"] != "Schwarzschild") continue;
+    found = true;
+    EXPECT_EQ(m["coordinate_type"], "spherical");
+    ASSERT_EQ(m["params"].size(), 1u);
+    EXPECT_EQ(m["params"][0]["name"], "mass");
+    EXPECT_EQ(m["params"][0]["default"], 1.0);
+    EXPECT_FALSE(m["params"][0]["doc"].get<std::string>().empty());
+  }
+  EXPECT_TRUE(found);
+}
+
+}  // namespace
+}  // namespace geovis::cli
