@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs every build and run-time dependency (Debian 12 packages) and builds geovis in ./build.
+# Run as root on a fresh Debian 12 machine (or with sudo). Idempotent: re-running only rebuilds.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PACKAGES=(
+  g++ cmake ninja-build pkg-config git
+  guile-3.0-dev            # the Scheme scene language
+  libopenimageio-dev       # image input/output
+  libcli11-dev             # command line
+  nlohmann-json3-dev       # JSON output
+  libtinyobjloader-dev     # Wavefront OBJ meshes
+  libgtest-dev             # tests
+  libbenchmark-dev libgsl-dev  # benchmarks (GSL is the reference integrator)
+  ffmpeg                   # --movie (optional at run time)
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 || { cat build.log; exit 1; }
+cmake --build build -j "$(nproc)" >> build.log 2>&1 || { tail -n 80 build.log; exit 1; }
+echo "geovis built: build/geovis (build log: build.log)"
