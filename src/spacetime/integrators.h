@@ -237,28 +237,6 @@ struct ExplicitRK {
     if constexpr (kHasErrorEstimate) return control.next(h, err, accepted, after_reject);
     return std::fabs(h);
   }
-
-  /// Componentwise form for callers with their own step control (e.g. Fermi–Walker transport in
-  /// transport.cpp): writes yerr_i = h Σ_s e_s k_{s,i}; returns true when dyout = f(yout) was
-  /// written. Prefer integrate_ode(), which adds the step-size control and stop logic.
-  template <int N, class F>
-  static bool attempt(F& f, const double* y, const double* dy, double h, double* yout, double* yerr,
-                      double* dyout, long& evals) {
-    constexpr int S = Tab::S;
-    double k[S][N];
-    for (int i = 0; i < N; ++i) k[0][i] = dy[i];
-    rk_detail::all_stages<Tab>(f, y, h, k);
-    evals += S - 1;
-    for (int i = 0; i < N; ++i) {
-      yout[i] = y[i] + h * rk_detail::weighted<Tab, S, N, Tab::b>(k, i);
-      yerr[i] = h * rk_detail::weighted<Tab, S, N, Tab::e>(k, i);
-    }
-    if constexpr (Tab::kFsal) {
-      for (int i = 0; i < N; ++i) dyout[i] = k[S - 1][i];
-      return true;
-    }
-    return false;
-  }
 };
 
 /// Heun–Euler embedded pair 2(1): Heun's trapezoidal method (order 2) is propagated, explicit Euler
@@ -590,21 +568,56 @@ struct MetricSystem {
       if (!(y[i] >= c.box_ll[i] && y[i] <= c.box_ur[i])) return false;
     return true;
   }
-  /// value = g(k,k) − target; scale = Σ_{μν} |g_μν k^μ k^ν| (the size of the terms that cancel in
-  /// g(k,k)), so the constraint test is relative and stays meaningful where k^0 diverges (horizons).
+  /// value = g(k,k) − target; scale = a positive-definite size of k (never below |target|), so the
+  /// constraint test |value| <= constraint_tol·scale is relative and stays meaningful where k^0
+  /// diverges (horizons) and where the terms of g(k,k) are small or cancel (off-diagonal metrics).
+  ///
+  /// scale = h(k,k) = g(k,k) + 2 (n·k)², the Euclidean norm² of k in an orthonormal frame of the
+  /// observer n: n is the unit normal of the slices x^0 = const (the "Eulerian" observer of the
+  /// 3+1 split, n·k = −α k^0, α² = −1/g^{00} = β^T γ^{-1} β − g_00 with γ_ij = g_ij, β_i = g_0i);
+  /// for a diagonal metric this is exactly Σ_μ |g_μμ| (k^μ)², the size of the terms that cancel in
+  /// g(k,k). Where x^0 is no time coordinate (γ not positive definite, e.g. the null coordinate v
+  /// of EddFinkIn) the metric may provide `double constraint_norm(const Vec4& x, const Mat4& g,
+  /// const Vec4& k) const` (h for an observer of its own); otherwise Σ_{μν} |g_μν k^μ k^ν| is used.
   void constraint(const double* y, GeodesicType type, double& value, double& scale) const {
+    const Vec4 x{{y[0], y[1], y[2], y[3]}};
     Mat4 g;
-    m.metric_tensor_inline(Vec4{{y[0], y[1], y[2], y[3]}}, g);
-    const double* k = y + 4;
-    double s = 0, sa = 0;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        const double t = g[i][j] * k[i] * k[j];
-        s += t;
-        sa += std::fabs(t);
+    m.metric_tensor_inline(x, g);
+    const Vec4 k{{y[4], y[5], y[6], y[7]}};
+    double s = 0;
+    for (int i = 0; i < 4; ++i) {
+      s += g[i][i] * k[i] * k[i];
+      for (int j = i + 1; j < 4; ++j) s += 2.0 * g[i][j] * k[i] * k[j];
+    }
+    const double target = constraint_target(type);
+    value = s - target;
+    double h = -1.0;
+    const double b1 = g[0][1], b2 = g[0][2], b3 = g[0][3];
+    if (b1 == 0.0 && b2 == 0.0 && b3 == 0.0) {
+      if (g[0][0] < 0.0) h = s - 2.0 * g[0][0] * k[0] * k[0];  // α² = −g_00
+    } else {
+      // γ positive definite (Sylvester) and α² = β^T adj(γ) β / det γ − g_00.
+      const double g11 = g[1][1], g12 = g[1][2], g13 = g[1][3], g22 = g[2][2], g23 = g[2][3], g33 = g[3][3];
+      const double c11 = g22 * g33 - g23 * g23, c12 = g13 * g23 - g12 * g33, c13 = g12 * g23 - g13 * g22;
+      const double c22 = g11 * g33 - g13 * g13, c23 = g12 * g13 - g11 * g23, c33 = g11 * g22 - g12 * g12;
+      const double det = g11 * c11 + g12 * c12 + g13 * c13;
+      if (g11 > 0.0 && c33 > 0.0 && det > 0.0) {
+        const double q = b1 * (c11 * b1 + c12 * b2 + c13 * b3) + b2 * (c12 * b1 + c22 * b2 + c23 * b3) +
+                         b3 * (c13 * b1 + c23 * b2 + c33 * b3);
+        const double alpha2 = q / det - g[0][0];
+        if (alpha2 > 0.0) h = s + 2.0 * alpha2 * k[0] * k[0];
       }
-    value = s - constraint_target(type);
-    scale = std::max(sa, std::fabs(constraint_target(type)));
+    }
+    if (!(h > 0.0)) {
+      if constexpr (requires { m.constraint_norm(x, g, k); }) {
+        h = m.constraint_norm(x, g, k);
+      } else {
+        h = 0;
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j) h += std::fabs(g[i][j] * k[i] * k[j]);
+      }
+    }
+    scale = std::max(h, std::fabs(target));
   }
   /// Re-projects k onto g(k,k) = target by solving the quadratic in k^0 (root closest to the
   /// current k^0); leaves k unchanged when no real root exists.
@@ -657,7 +670,8 @@ void validate_solver_config(const SolverConfig& cfg);
 /// outside the validity domain is rejected like a step with too large an error (adaptive: the
 /// step shrinks; fixed step: the integration stops). Per accepted step, in this order: constraint
 /// test (a step that broke the constraint is not reported), callback, bounding box, λ_max. Before
-/// each attempt: max_steps. Step underflow (|h| < step_min or |h| below the resolution of λ)
+/// each attempt: max_steps. A ray that runs into the edge of the validity domain stops with
+/// Invalid once the edge is located to 1/1024 of the first step that crossed it. Step underflow (|h| < step_min or |h| below the resolution of λ)
 /// stops with StepUnderflow, or with Invalid / NotFinite when the rejected trials were leaving the
 /// validity domain / not finite.
 template <class St, class Sys>
@@ -675,6 +689,9 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
   const double hmax = std::max(cfg.step_max, cfg.step_min);
   double h = std::clamp(std::fabs(cfg.step_size), cfg.step_min, hmax);
   bool after_reject = false;
+  // Boundary location: |h| of the first trial that left the validity domain (0: none pending).
+  constexpr double kBoundaryRes = 1.0 / 1024;
+  double h_cross = 0.0;
 
   auto finish = [&](StopReason r) {
     for (int i = 0; i < N; ++i) y_io[i] = y[i];
@@ -711,6 +728,15 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
     if (!in_domain || (adaptive && !(err <= 1.0))) {
       if (!adaptive) return finish(finite ? StopReason::Invalid : StopReason::NotFinite);
       ++res.rejected;
+      if (finite && !in_domain) {
+        // The trial left the validity domain (horizon break radius, chart edge): halve the step
+        // until the boundary is located to kBoundaryRes of the first step that crossed it, then
+        // stop. Without this limit the ray creeps towards the boundary in ever smaller accepted
+        // steps (each one halving the distance) until the step underflows: ~2·log2(h/step_min)
+        // wasted steps per ray that ends there.
+        if (h_cross == 0.0) h_cross = hstep;
+        if (hstep <= kBoundaryRes * h_cross) return finish(StopReason::Invalid);
+      }
       h = in_domain ? stepper.next_step(hstep, err, false, after_reject) : 0.5 * hstep;
       after_reject = true;
       if (h < cfg.step_min || h <= 4 * DBL_EPSILON * std::fabs(lambda)) {
@@ -744,6 +770,7 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
     if (!sys.inside(cfg, y)) return finish(StopReason::BoundingBox);
     if (clipped) return finish(StopReason::LambdaMax);
     if (adaptive) h = std::min(hmax, std::max(stepper.next_step(hstep, err, true, after_reject), cfg.step_min));
+    if (!after_reject) h_cross = 0.0;  // two clean steps in a row: away from any boundary
     after_reject = false;
   }
 }

@@ -81,6 +81,23 @@ void Metric::set_params(const std::vector<std::pair<std::string, double>>& value
   }
 }
 
+void Metric::set_horizon_eps(double eps) {
+  if (!(eps > 0.0 && eps <= 0.1)) {
+    std::ostringstream os;
+    os << "metric " << info_.name << ": horizon break margin " << eps << " is out of range; expected 0 < eps <= 0.1";
+    throw Error(os.str());
+  }
+  const double old = horizon_eps_;
+  horizon_eps_ = eps;
+  try {
+    on_params_changed();
+  } catch (...) {
+    horizon_eps_ = old;
+    on_params_changed();
+    throw;
+  }
+}
+
 bool Metric::supports_tetrad(TetradKind kind) const {
   return std::find(info_.tetrads.begin(), info_.tetrads.end(), kind) != info_.tetrads.end();
 }

@@ -96,6 +96,20 @@ class Metric {
   /// singularity or outside the chart. The integrator stops there instead of producing NaN.
   virtual bool is_valid(const Vec4& x) const;
 
+  /// Break margin at a horizon where the chart is singular (Motion4D's breakCondition `eps`):
+  /// the ray stops where the static observer's squared redshift factor 1 − r_s/r (−g_tt for
+  /// Schwarzschild) falls below this value, i.e. at r < r_s (1 + eps) in Schwarzschild, at
+  /// r < r₊ (1 + eps) in Kerr, Reissner–Nordström and Taub–NUT. Approaching such a horizon,
+  /// k^t ∝ 1/(1 − r_s/r) and t ∝ ln(1 − r_s/r) diverge: with an absolute tolerance the steps
+  /// shrink like (eps_abs·(1 − r_s/r))^(1/(p+1)) per e-fold, and once |k^t|·DBL_EPSILON exceeds
+  /// eps_abs no step can pass the error test at all, so a margin much tighter than the tolerance
+  /// burns the whole step budget (test HorizonStopsCapturedRayPromptly). Charts that are regular
+  /// at the horizon (EddFinkIn, PainleveGullstrand) ignore it.
+  static constexpr double kDefaultHorizonEps = 1e-4;
+  double horizon_eps() const { return horizon_eps_; }
+  /// Sets the horizon break margin; throws Error unless 0 < eps <= 0.1.
+  void set_horizon_eps(double eps);
+
   /// Natural local tetrad of the given kind at x (paper eq. 2). Throws Error when the kind is not
   /// supported by this metric or not defined at x (e.g. a static observer inside the ergosphere).
   virtual Tetrad natural_tetrad(const Vec4& x, TetradKind kind = TetradKind::Default) const = 0;
@@ -120,6 +134,8 @@ class Metric {
   double p(size_t i) const { return values_[i]; }
   /// Throws Error naming the available kinds when `kind` is not supported by this metric.
   void require_tetrad_kind(TetradKind kind) const;
+
+  double horizon_eps_ = kDefaultHorizonEps;
 
  private:
   MetricInfo info_;

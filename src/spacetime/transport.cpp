@@ -103,7 +103,7 @@ Tetrad fermi_walker_transport(const Metric& m, WorldlineFn worldline, double tau
   const double dir = tau1 >= tau0 ? 1.0 : -1.0;
   const double span = std::fabs(tau1 - tau0);
   FermiWalkerSystem f{m, worldline, dir};
-  double y[N], dy[N], y1[N], dy1[N], yerr[N];
+  double y[N], dy[N], y1[N], dy1[N];
   y[0] = tau0;
   for (int a = 0; a < 4; ++a)
     for (int mu = 0; mu < 4; ++mu) y[1 + 4 * a + mu] = e0[a][mu];
@@ -117,21 +117,25 @@ Tetrad fermi_walker_transport(const Metric& m, WorldlineFn worldline, double tau
   f(y, dy);
   double s = 0, h = std::min(std::max(cfg.step_size, cfg.step_min), span);
   long evals = 0;
-  using Stepper = ExplicitRK<CashKarpTableau>;
+  // The integrators' Cash–Karp stepper and step-size control (integrators.h) with GSL's "y"
+  // error norm; the loop only adds the exact landing on tau1 and the error messages.
+  SolverConfig scfg;
+  scfg.kind = SolverKind::CashKarp45;
+  ExplicitRK<CashKarpTableau> stepper(scfg);
+  const ErrorScale tol{cfg.eps_abs, 0.0};
+  bool after_reject = false;
   for (int steps = 0; s < span;) {
     if (steps >= cfg.max_steps)
       throw Error("Fermi-Walker transport: more than " + std::to_string(cfg.max_steps) + " steps needed");
     const bool last = h >= span - s;
     const double hs = last ? span - s : h;
-    Stepper::attempt<N>(f, y, dy, hs, y1, yerr, dy1, evals);
     double err = 0;
+    stepper.attempt<N>(f, y, dy, hs, y1, dy1, tol, evals, err);
     bool finite = true;
-    for (int i = 0; i < N; ++i) {
-      finite = finite && std::isfinite(y1[i]);
-      err = std::max(err, std::fabs(yerr[i]) / cfg.eps_abs);
-    }
+    for (int i = 0; i < N; ++i) finite = finite && std::isfinite(y1[i]);
     if (!finite || !(err <= 1.0)) {
-      h = hs * (finite && std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -0.25)) : 0.25);
+      h = finite ? stepper.next_step(hs, err, false, after_reject) : 0.25 * hs;
+      after_reject = true;
       if (h < cfg.step_min)
         throw Error("Fermi-Walker transport: step size underflow at tau = " + std::to_string(y[0]) +
                     (finite ? "" : " (non-finite state: is the worldline valid there?)"));
@@ -139,13 +143,13 @@ Tetrad fermi_walker_transport(const Metric& m, WorldlineFn worldline, double tau
     }
     s = last ? span : s + hs;
     y1[0] = tau0 + dir * s;  // avoid accumulating round-off in τ
-    f(y1, dy1);
+    f(y1, dy1);               // Cash–Karp is not first-same-as-last
     std::copy(y1, y1 + N, y);
     std::copy(dy1, dy1 + N, dy);
     ++steps;
     if (cb) cb(y[0], unpack(y));
-    const double grow = err > 0 ? std::min(5.0, 0.9 * std::pow(err, -0.2)) : 5.0;
-    if (!last) h = std::min(cfg.step_max, hs * grow);
+    if (!last) h = std::min(cfg.step_max, stepper.next_step(hs, err, true, after_reject));
+    after_reject = false;
   }
   return unpack(y);
 }

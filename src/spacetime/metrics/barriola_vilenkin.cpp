@@ -56,8 +56,7 @@ class BarriolaVilenkin final : public MetricCRTP<BarriolaVilenkin> {
 
   /// r > 0 (the conical singularity at the origin) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
-    return x[1] > 1e-12 && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
-           std::sin(x[2]) != 0.0;
+    return x[1] > 1e-12 && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {

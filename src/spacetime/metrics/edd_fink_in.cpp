@@ -70,8 +70,18 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
   /// The chart is regular across the horizon: valid for r > 0 (curvature singularity; small
   /// margin) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
-    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
-           std::sin(x[2]) != 0.0;
+    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
+  }
+
+  /// Size of k for the integrator's constraint test (integrators.h, MetricSystem::constraint): v
+  /// is a null coordinate, so there is no slicing observer; use the free-falling observer u of
+  /// natural_tetrad(Freefall) below, defined for every r > 0. With w = sqrt(r_s/r),
+  /// u_μ = (−1, 1/(1 + w), 0, 0), so its energy is E = −u·k = k^v − k^r/(1 + w), and
+  /// h(k,k) = g(k,k) + 2E² is the Euclidean norm² of k in u's orthonormal frame.
+  double constraint_norm(const Vec4& x, const Mat4& g, const Vec4& k) const {
+    const double w = std::sqrt(rs_ / x[1]);
+    const double E = k[0] - k[1] / (1.0 + w);
+    return dot(g, k, k) + 2.0 * E * E;
   }
 
   /// Static observer (r > r_s), as Motion4D's m4dMetricEddFinkIn: with w = sqrt(1 − r_s/r),

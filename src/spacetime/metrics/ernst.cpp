@@ -79,8 +79,7 @@ class Ernst final : public MetricCRTP<Ernst> {
 
   /// Outside the horizon r = 2M and off the polar axis.
   bool is_valid(const Vec4& x) const override {
-    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
-           std::sin(x[2]) != 0.0;
+    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
@@ -98,7 +97,7 @@ class Ernst final : public MetricCRTP<Ernst> {
   void on_params_changed() override {
     B2_ = p(0) * p(0);
     rs_ = 2.0 * p(1);
-    r_min_ = rs_ > 0.0 ? rs_ * (1.0 + 1e-8) : 1e-300;
+    r_min_ = rs_ > 0.0 ? rs_ * (1.0 + horizon_eps_) : 1e-300;  // Metric::horizon_eps
   }
 
  private:

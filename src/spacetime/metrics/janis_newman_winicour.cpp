@@ -76,8 +76,7 @@ class JanisNewmanWinicour final : public MetricCRTP<JanisNewmanWinicour> {
   /// (Motion4D stops earlier, at its embedding-diagram radius r_s(1+γ)²/(4γ²); we follow the
   /// geometry and integrate down to the singularity.)
   bool is_valid(const Vec4& x) const override {
-    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
-           std::sin(x[2]) != 0.0;
+    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {

@@ -142,11 +142,12 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     acc[3] = -2.0 * (g.ph_tr * kt * kr + g.ph_tth * kt * kth + g.ph_rph * kr * kph + g.ph_thph * kth * kph);
   }
 
-  /// Outside the outer horizon r_+ = M + √(M² − a²) (with Motion4D's margin 1e-6 r_+) and off the
-  /// polar axis, where BL coordinates are singular.
+  /// Outside the outer horizon r_+ = M + √(M² − a²) with the break margin r_+ (1 + horizon_eps)
+  /// (Metric::horizon_eps) and off the polar axis, where BL coordinates are singular (sin θ == 0
+  /// exactly iff θ == 0 for a finite double θ).
   bool is_valid(const Vec4& x) const override {
     return x[1] > r_break_ && std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) &&
-           std::isfinite(x[3]) && std::sin(x[2]) != 0.0;
+           std::isfinite(x[3]) && x[2] != 0.0;
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
@@ -202,7 +203,7 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     rs_ = 2.0 * mass_;
     a2_ = a_ * a_;
     r_plus_ = mass_ + std::sqrt(mass_ * mass_ - a2_);
-    r_break_ = (1.0 + 1e-6) * r_plus_;
+    r_break_ = (1.0 + horizon_eps_) * r_plus_;
   }
 
  private:

@@ -65,8 +65,9 @@ class Kottler final : public MetricCRTP<Kottler> {
   /// Inside the static region f > 0 (between the horizons), r > 0, off the polar axis. The
   /// margin 1e-8 on f corresponds to Schwarzschild's r > r_s (1 + 1e-8).
   bool is_valid(const Vec4& x) const override {
-    return x[1] > 0.0 && f_of(x[1]) > 1e-8 && std::isfinite(x[0]) && std::isfinite(x[2]) &&
-           std::isfinite(x[3]) && std::sin(x[2]) != 0.0;
+    // Both horizons (f = 0) with the break margin f > Metric::horizon_eps.
+    return x[1] > 0.0 && f_of(x[1]) > horizon_eps_ && std::isfinite(x[0]) && std::isfinite(x[2]) &&
+           std::isfinite(x[3]) && x[2] != 0.0;
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {

@@ -67,8 +67,7 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
 
   /// The spacetime is regular everywhere; only the polar axis is a coordinate singularity.
   bool is_valid(const Vec4& x) const override {
-    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
-           std::sin(x[2]) != 0.0;
+    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {

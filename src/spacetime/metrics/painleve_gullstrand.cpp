@@ -81,8 +81,7 @@ class PainleveGullstrand final : public MetricCRTP<PainleveGullstrand> {
 
   /// Regular across the horizon: valid for r > 0 (small margin) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
-    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
-           std::sin(x[2]) != 0.0;
+    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
   /// Static observer (r > r_s), as Motion4D's m4dMetricPainleveGullstrand, w = sqrt(1 − r_s/r):

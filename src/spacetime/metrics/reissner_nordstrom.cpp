@@ -62,8 +62,7 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
 
   /// Outside the outer horizon (or r > 0 for a naked singularity) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
-    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
-           std::sin(x[2]) != 0.0;
+    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
@@ -85,7 +84,7 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
     // Outer horizon r+ = M + sqrt(M² − Q²) (Catalogue of Spacetimes, Reissner-Nordström);
     // no horizon when |Q| > M.
     r_plus_ = Q2_ <= M_ * M_ ? M_ + std::sqrt(M_ * M_ - Q2_) : 0.0;
-    r_min_ = r_plus_ > 0.0 ? r_plus_ * (1.0 + 1e-8) : 1e-8 * std::max(M_, std::sqrt(Q2_));
+    r_min_ = r_plus_ > 0.0 ? r_plus_ * (1.0 + horizon_eps_) : 1e-8 * std::max(M_, std::sqrt(Q2_));  // Metric::horizon_eps
     if (!(r_min_ > 0.0)) r_min_ = 1e-300;  // M = Q = 0: Minkowski, only r > 0 required
   }
 

@@ -59,10 +59,11 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
     a[3] = -2.0 / r * k[1] * k[3] - 2.0 * ct / st * k[2] * k[3];
   }
 
-  /// Outside the horizon and off the polar axis (where the coordinates are singular).
+  /// Outside the horizon break radius r_s (1 + horizon_eps) and off the polar axis (where the
+  /// coordinates are singular). For a finite double θ, sin θ == 0 exactly iff θ == 0 (no other
+  /// double is a multiple of π), so the axis test needs no sine.
   bool is_valid(const Vec4& x) const override {
-    return x[1] > rs_ * (1.0 + 1e-8) && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
-           std::sin(x[2]) != 0.0;
+    return x[1] > r_break_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
@@ -79,10 +80,13 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
   }
 
  protected:
-  void on_params_changed() override { rs_ = 2.0 * p(0); }
+  void on_params_changed() override {
+    rs_ = 2.0 * p(0);
+    r_break_ = rs_ > 0.0 ? rs_ * (1.0 + horizon_eps_) : 1e-300;
+  }
 
  private:
-  double rs_ = 2.0;
+  double rs_ = 2.0, r_break_ = 2.0;
 };
 
 std::unique_ptr<Metric> make_metric_Schwarzschild() { return std::make_unique<Schwarzschild>(); }

@@ -104,7 +104,7 @@ class SchwarzschildCart final : public MetricCRTP<SchwarzschildCart> {
  protected:
   void on_params_changed() override {
     rs_ = 2.0 * p(0);
-    r_min_ = rs_ > 0.0 ? rs_ * (1.0 + 1e-8) : 1e-300;
+    r_min_ = rs_ > 0.0 ? rs_ * (1.0 + horizon_eps_) : 1e-300;  // Metric::horizon_eps
   }
 
  private:

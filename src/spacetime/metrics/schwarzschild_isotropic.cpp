@@ -93,7 +93,10 @@ class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
  protected:
   void on_params_changed() override {
     rho_s_ = 0.5 * p(0);
-    rho_min_ = rho_s_ > 0.0 ? rho_s_ * (1.0 + 1e-8) : 1e-300;
+    // Metric::horizon_eps in terms of 1 − r_s/r = ((ρ − ρ_s)/(ρ + ρ_s))² (areal radius r), as in
+    // the Schwarzschild chart: ρ_break = ρ_s (1 + √eps)/(1 − √eps).
+    const double se = std::sqrt(horizon_eps_);
+    rho_min_ = rho_s_ > 0.0 ? rho_s_ * (1.0 + se) / (1.0 - se) : 1e-300;
   }
 
  private:

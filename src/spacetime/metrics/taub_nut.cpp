@@ -82,8 +82,7 @@ class TaubNUT final : public MetricCRTP<TaubNUT> {
 
   /// Outside the horizon r+ (Δ > 0, margin 1e-8) and off the axis (Misner strings).
   bool is_valid(const Vec4& x) const override {
-    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
-           std::sin(x[2]) != 0.0;
+    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;
   }
 
   /// Static observer (Δ > 0): e_(0) = sqrt(Σ/Δ) ∂_t, e_(1) = sqrt(Δ/Σ) ∂_r, e_(2) = ∂_θ/sqrt(Σ),
@@ -112,7 +111,7 @@ class TaubNUT final : public MetricCRTP<TaubNUT> {
     l_ = p(0);
     M_ = p(1);
     r_plus_ = M_ + std::sqrt(M_ * M_ + l_ * l_);  // root of Δ = 0
-    r_min_ = r_plus_ > 0.0 ? r_plus_ * (1.0 + 1e-8) : 1e-300;
+    r_min_ = r_plus_ > 0.0 ? r_plus_ * (1.0 + horizon_eps_) : 1e-300;  // Metric::horizon_eps
   }
 
  private:
