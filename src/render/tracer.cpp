@@ -197,7 +197,7 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
     res.pos = vec4_at(y);
     res.k = vec4_at(y + 4);
     res.lambda = gr.lambda;
-    res.color = job_.background;
+    res.color = stop_color(gr.reason);
     return res;
   }
 
@@ -271,6 +271,24 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
     res.color = hit.shader->shade(hit, ctx);
   }
   return res;
+}
+
+Color Tracer::stop_color(StopReason reason) const {
+  constexpr Color kBlack{0, 0, 0};
+  switch (reason) {
+    case StopReason::Invalid:
+      if (job_.break_color) return *job_.break_color;
+      return job_.constraint_color.value_or(kBlack);
+    case StopReason::Constraint: return job_.constraint_color.value_or(kBlack);
+    case StopReason::StepUnderflow:
+    case StopReason::NotFinite: return job_.error_color.value_or(job_.background);
+    case StopReason::None:
+    case StopReason::Callback:
+    case StopReason::BoundingBox:
+    case StopReason::LambdaMax:
+    case StopReason::MaxSteps: break;
+  }
+  return job_.background;
 }
 
 void Tracer::fill_data(const TraceResult& r, PixelData& d) const {

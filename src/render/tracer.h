@@ -53,6 +53,17 @@ class Tracer {
   /// Hit refinement stops once the curved sub-step deviates from its chord by less than this
   /// fraction of the distance from the origin (plus an absolute floor of the same size).
   static constexpr double kRefineTolerance = 1e-9;
+
+  /// Colour of a ray that stopped without a hit for `reason` (GeoViS GvsProjector::getSampleColor):
+  ///  - Invalid (the metric's break condition: horizon, singularity, edge of the chart):
+  ///    breakcolor, else cstrcolor, else black. GeoViS paints rays stopped by the break condition
+  ///    with its constraint colour (default black) and parses but never uses breakcolor; black is
+  ///    also the physics: a ray that ends at a horizon brings no light from the sky;
+  ///  - Constraint (the null constraint drifted): cstrcolor, else black (GeoViS);
+  ///  - StepUnderflow / NotFinite (integration error): errcolor, else the background (GeoViS
+  ///    gives a step-size break the background; its errcolor is for rays that cannot start);
+  ///  - BoundingBox, MaxSteps, LambdaMax (the ray escaped or ran out of budget): the background.
+  Color stop_color(StopReason reason) const;
   static constexpr int kMaxRefineLevels = 16;
 
  private:

@@ -481,6 +481,130 @@ TEST(Tracer, MinkowskiPointLightShadowRaysMatchGeometry) {
       }
 }
 
+// ---- rays that stop without a hit: breakcolor / cstrcolor / errcolor ------------------------------
+
+/// A static observer at r = 15M in Schwarzschild looking at the hole through a 40°x40° pinhole,
+/// with a white celestial sphere at r = 50 and a non-black background colour (so that black, the
+/// background and the special colours are all distinguishable).
+RenderJob schwarzschild_view_job(const Shader* sky_shader) {
+  auto metric = std::shared_ptr<const Metric>(make_metric("Schwarzschild"));
+  RenderJob job;
+  job.metric = metric;
+  job.observer.pos = Vec4{{0, 15, kPi / 2, 0}};
+  job.observer.e = metric->natural_tetrad(job.observer.pos, TetradKind::Static);
+  job.camera = std::make_shared<PinholeCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, 40, 40, 41, 41);
+  if (sky_shader) job.scene = std::make_shared<SkySphere>(50, sky_shader);
+  job.solver.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
+  job.solver.box_ur = Vec4{{1e300, 200, 1e300, 1e300}};
+  job.solver.max_steps = 5000;
+  job.background = Color{0.2, 0.3, 0.4};
+  return job;
+}
+
+TEST(Tracer, RayIntoSchwarzschildHoleGetsBreakColor) {
+  static FlatShader white;
+  RenderJob job = schwarzschild_view_job(&white);
+  job.break_color = Color{1, 0, 0};
+  const Tracer tracer(job);
+  TraceStats st;
+  // Radially inwards: the ray must end at the horizon break condition (r < r_s (1 + eps)).
+  const TraceResult in = tracer.trace_direction(Vec3{-1, 0, 0}, st);
+  EXPECT_FALSE(in.hit);
+  EXPECT_EQ(in.reason, StopReason::Invalid) << stop_reason_name(in.reason);
+  EXPECT_LT(in.pos[1], 2.0 * 1.01);
+  EXPECT_EQ(in.color, (Color{1, 0, 0}));
+  // Radially outwards: it reaches the sky sphere, unaffected by the break colour.
+  const TraceResult out = tracer.trace_direction(Vec3{1, 0, 0}, st);
+  EXPECT_TRUE(out.hit);
+  EXPECT_EQ(out.color, (Color{1, 1, 1}));
+}
+
+TEST(Tracer, HoleWithoutBreakColorIsBlackNotBackground) {
+  // GeoViS (GvsProjector::getSampleColor) paints a ray stopped by the metric's break condition
+  // with its constraint colour, default black, whatever the background colour.
+  RenderJob job = schwarzschild_view_job(nullptr);  // empty scene: escaping rays see the background
+  RenderOptions opt;
+  opt.progress = false;
+  opt.threads = 2;
+  const RenderResult res = render(job, opt);
+  const float* centre = res.image.at(20, 20);
+  EXPECT_EQ(centre[0], 0.0f);
+  EXPECT_EQ(centre[1], 0.0f);
+  EXPECT_EQ(centre[2], 0.0f);
+  // A corner ray is 28° off axis, outside the shadow (half-angle asin(3√3/15 · √(13/15)) = 18.8°):
+  // it leaves the bounding box and gets the background.
+  const float* corner = res.image.at(0, 0);
+  EXPECT_EQ(corner[0], 0.2f);
+  EXPECT_EQ(corner[1], 0.3f);
+  EXPECT_EQ(corner[2], 0.4f);
+
+  // cstrcolor alone also colours the break condition (GeoViS), breakcolor takes precedence.
+  job.constraint_color = Color{0, 1, 0};
+  EXPECT_EQ(render(job, opt).image.at(20, 20)[1], 1.0f);
+  job.break_color = Color{0, 0, 1};
+  const RenderResult rb = render(job, opt);
+  EXPECT_EQ(rb.image.at(20, 20)[0], 0.0f);
+  EXPECT_EQ(rb.image.at(20, 20)[2], 1.0f);
+  EXPECT_EQ(rb.image.at(0, 0)[2], 0.4f);  // still the background
+}
+
+TEST(Tracer, ConstraintAndErrorStopsGetTheirColours) {
+  auto metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
+  RenderJob job;
+  job.metric = metric;
+  job.observer.e = identity_tetrad();
+  job.camera = std::make_shared<FullSkyCamera>(0, 8, 4);
+  job.background = Color{0.2, 0.3, 0.4};
+  job.solver.box_ll = Vec4{{-1e300, -100, -100, -100}};
+  job.solver.box_ur = Vec4{{1e300, 100, 100, 100}};
+  TraceStats st;
+  {
+    // Escapes through the bounding box: background even with all special colours set.
+    RenderJob j = job;
+    j.error_color = Color{1, 0, 0};
+    j.constraint_color = Color{0, 1, 0};
+    j.break_color = Color{0, 0, 1};
+    const TraceResult r = Tracer(j).trace_direction(Vec3{1, 0, 0}, st);
+    EXPECT_EQ(r.reason, StopReason::BoundingBox);
+    EXPECT_EQ(r.color, j.background);
+  }
+  {
+    // A constraint tolerance below rounding: g(k,k) = 0 cannot hold to 1e-300 after a curved
+    // step (Schwarzschild, tangential ray at r = 30), so the first step breaks the constraint.
+    RenderJob j = job;
+    j.metric = std::shared_ptr<const Metric>(make_metric("Schwarzschild"));
+    j.observer.pos = Vec4{{0, 30, kPi / 2, 0}};
+    j.observer.e = j.metric->natural_tetrad(j.observer.pos, TetradKind::Static);
+    j.solver.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
+    j.solver.box_ur = Vec4{{1e300, 200, 1e300, 1e300}};
+    j.solver.constraint_tol = 1e-300;
+    const TraceResult r0 = Tracer(j).trace_direction(Vec3{0, 0, 1}, st);
+    EXPECT_EQ(r0.reason, StopReason::Constraint) << stop_reason_name(r0.reason);
+    EXPECT_EQ(r0.color, (Color{0, 0, 0}));  // default: black (GeoViS cstrcolor)
+    j.constraint_color = Color{0, 1, 0};
+    j.break_color = Color{0, 0, 1};  // not used for a constraint stop
+    EXPECT_EQ(Tracer(j).trace_direction(Vec3{0, 0, 1}, st).color, (Color{0, 1, 0}));
+  }
+  {
+    // Step underflow: a tolerance no step of at least step_min can meet.
+    RenderJob j = job;
+    j.solver.step_min = 0.5;
+    j.solver.step_size = 1.0;
+    j.solver.eps_abs = 1e-300;
+    // In flat space the RK error estimate is exactly zero; use Schwarzschild far away instead.
+    j.metric = std::shared_ptr<const Metric>(make_metric("Schwarzschild"));
+    j.observer.pos = Vec4{{0, 30, kPi / 2, 0}};
+    j.observer.e = j.metric->natural_tetrad(j.observer.pos, TetradKind::Static);
+    j.solver.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
+    j.solver.box_ur = Vec4{{1e300, 200, 1e300, 1e300}};
+    const TraceResult r0 = Tracer(j).trace_direction(Vec3{0, 1, 0}, st);
+    EXPECT_EQ(r0.reason, StopReason::StepUnderflow) << stop_reason_name(r0.reason);
+    EXPECT_EQ(r0.color, j.background);  // default: background (GeoViS: a step-size break)
+    j.error_color = Color{1, 0, 0};
+    EXPECT_EQ(Tracer(j).trace_direction(Vec3{0, 1, 0}, st).color, (Color{1, 0, 0}));
+  }
+}
+
 TEST(Tracer, RejectsIncompleteJob) {
   RenderJob job;
   EXPECT_THROW(Tracer t(job), Error);
