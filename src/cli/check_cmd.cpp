@@ -73,6 +73,11 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->callback([a, &g]() {
     try {
       g.exit_code = run_check(*a, g);
+    } catch (const SceneExit& e) {
+      // The scene called (exit [code]): GeoViS stops there without rendering. Not an error;
+      // the exit status is the scene's code.
+      if (!(a->quiet || g.quiet)) std::cerr << "geovis: " << e.what() << "\n";
+      g.exit_code = e.code();
     } catch (const Error& e) {
       std::cerr << "geovis: error: " << e.what() << "\n";
       g.exit_code = 1;

@@ -187,5 +187,43 @@ TEST_F(RenderCmd, CheckBuildsWithoutRendering) {
   EXPECT_NE(run_args({"check", path("missing.scm")}), 0);
 }
 
+TEST_F(RenderCmd, SceneCallingExitStopsWithoutErrorAndRendersNothing) {
+  // GeoViS's (exit) ends the program while the scene is read: nothing is rendered. It is not an
+  // error: the status is the scene's exit code, and no "error" is reported.
+  for (const auto& [call, code] : std::vector<std::pair<std::string, int>>{{"(exit)", 0}, {"(exit 3)", 3}}) {
+    SCOPED_TRACE(call);
+    const std::string p = write_scene(2);
+    int exit_line = 1;  // the line the call is appended on
+    {
+      std::ifstream in(p);
+      for (std::string l; std::getline(in, l);) ++exit_line;
+    }
+    { std::ofstream(p, std::ios::app) << call << "\n"; }
+    testing::internal::CaptureStderr();
+    const int rc = run_args({"render", p, "-o", path("ex_%d.png")});
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(rc, code);
+    EXPECT_FALSE(exists("ex_0.png"));
+    EXPECT_EQ(err.find("error"), std::string::npos) << err;
+    EXPECT_NE(err.find("scene.scm:" + std::to_string(exit_line) + ": exit: the scene called " +
+                       (code ? call : std::string("(exit 0)"))),
+              std::string::npos)
+        << err;
+    // -q: silent.
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(run_args({"render", p, "-o", path("ex_%d.png"), "-q"}), code);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+    // check: the same status, no summary, no error.
+    testing::internal::CaptureStderr();
+    testing::internal::CaptureStdout();
+    EXPECT_EQ(run_args({"check", p}), code);
+    const std::string out = testing::internal::GetCapturedStdout();
+    const std::string cerr = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(out.find("ok"), std::string::npos) << out;
+    EXPECT_EQ(cerr.find("error"), std::string::npos) << cerr;
+    EXPECT_NE(cerr.find("the scene called"), std::string::npos) << cerr;
+  }
+}
+
 }  // namespace
 }  // namespace geovis::cli
