@@ -109,6 +109,24 @@ double shadow_apex_deg(double r_obs, double ri) {
   return std::acos((a + sign * b) / (x * x * x - xi * x * x + p)) / kDeg;
 }
 
+TEST(PaperScenes, Fig7ExampleHasEightFramesAlongTheAnalyticFall) {
+  // examples/fig7_fall_into_blackhole.scm documents eight frames at proper times
+  // tau = 0, 15, 25, 30, 32.395, 34, 34.8, 35.09 of the fall from rest at r_i = 10 (the paper's
+  // Fig. 7 shows 0, 32.395, 35.09). Each frame's observer sits at the radius of the analytic fall
+  // (MTW eq. 31.10) at that proper time.
+  const double ri = 10.0;
+  SceneBuilder b = build_scene(std::string(GEOVIS_SOURCE_DIR) + "/examples/fig7_fall_into_blackhole.scm", {8, 2});
+  ASSERT_EQ(b.device_count(), 8);
+  const double taus[8] = {0.0, 15.0, 25.0, 30.0, 32.395, 34.0, 34.8, 35.09};
+  for (int k = 0; k < 8; ++k) {
+    SCOPED_TRACE(k);
+    const auto jobs = b.build(k);
+    ASSERT_EQ(jobs.size(), 1u);
+    const double r = jobs[0].job.observer.pos[1];
+    EXPECT_NEAR(r, taus[k] == 0.0 ? ri : fall_radius(taus[k], ri), 1e-3);
+  }
+}
+
 TEST(PaperScenes, FallingObserverSeesShadowApexAngleOfEq14) {
   // examples/fig7_fall_into_blackhole.scm (as fallEddFinkIn.scm): EddFinkIn, fall from rest at
   // r_i = 10, panorama camera 360° x 60° looking towards the hole (local x = −e_r). Rendered at
