@@ -313,7 +313,9 @@ void Tracer::fill_data(const TraceResult& r, PixelData& d) const {
 void Tracer::trace_pixel(double px, double py, Color& color, PixelData* data, TraceStats& stats) const {
   Vec3 d;
   if (!job_.camera->direction(px, py, d)) {
-    color = job_.background;
+    // No ray there (outside the dome circle): GeoViS GvsProjector::getSampleColor returns its error
+    // colour (default black), not the background.
+    color = job_.error_color.value_or(Color{0, 0, 0});
     if (data) *data = PixelData{};
     return;
   }

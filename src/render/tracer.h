@@ -44,7 +44,9 @@ class Tracer {
   explicit Tracer(const RenderJob& job);
 
   /// Traces the ray through continuous image position (px, py) (pixel centre of (i, j) is
-  /// (i + .5, j + .5)). Writes the colour and, when `data` is not null, the filter data.
+  /// (i + .5, j + .5)). Writes the colour and, when `data` is not null, the filter data. Where the
+  /// camera has no ray (outside the 2PICam dome circle) the colour is errcolor, else black (GeoViS),
+  /// and the data are zero.
   void trace_pixel(double px, double py, Color& color, PixelData* data, TraceStats& stats) const;
 
   /// Traces the ray leaving the observer in local direction `d` (need not be unit).

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "render/camera.h"
+#include "render/dome_camera.h"
 #include "render/fullsky_camera.h"
 #include "render/pinhole_camera.h"
 #include "render/plugins.h"
@@ -603,6 +604,34 @@ TEST(Tracer, ConstraintAndErrorStopsGetTheirColours) {
     j.error_color = Color{1, 0, 0};
     EXPECT_EQ(Tracer(j).trace_direction(Vec3{0, 1, 0}, st).color, (Color{1, 0, 0}));
   }
+}
+
+TEST(Tracer, PixelsWithoutARayGetErrorColorElseBlack) {
+  // 2PICam pixels outside the dome circle: GeoViS returns the projector's error colour (default
+  // black) there, whatever the background colour.
+  auto metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
+  RenderJob job;
+  job.metric = metric;
+  job.observer.e = identity_tetrad();
+  job.camera = std::make_shared<DomeCamera>(0, 0, 16);
+  job.background = Color{0.2, 0.3, 0.4};
+  job.solver.box_ll = Vec4{{-1e300, -100, -100, -100}};
+  job.solver.box_ur = Vec4{{1e300, 100, 100, 100}};
+  Vec3 d;
+  ASSERT_FALSE(job.camera->direction(0.5, 0.5, d));  // corner
+  ASSERT_TRUE(job.camera->direction(8, 8, d));       // centre
+  RenderOptions opt;
+  opt.progress = false;
+  opt.threads = 1;
+  RenderResult res = render(job, opt);
+  EXPECT_EQ(res.image.at(0, 0)[0], 0.0f);
+  EXPECT_EQ(res.image.at(0, 0)[2], 0.0f);
+  EXPECT_EQ(res.image.at(8, 8)[2], 0.4f);  // a traced ray escaping the box: the background
+  job.error_color = Color{1, 0, 0};
+  res = render(job, opt);
+  EXPECT_EQ(res.image.at(0, 0)[0], 1.0f);
+  EXPECT_EQ(res.image.at(0, 0)[2], 0.0f);
+  EXPECT_EQ(res.image.at(8, 8)[2], 0.4f);
 }
 
 TEST(Tracer, RejectsIncompleteJob) {
