@@ -10,6 +10,7 @@
 #include "render/camera.h"
 #include "render/dome_camera.h"
 #include "render/fullsky_camera.h"
+#include "render/panorama_camera.h"
 #include "render/pinhole_camera.h"
 #include "render/plugins.h"
 #include "render/renderer.h"
@@ -480,6 +481,82 @@ TEST(Tracer, MinkowskiPointLightShadowRaysMatchGeometry) {
       if (sr.data[size_t(y) * 8 + x].object_id != 0) {
         EXPECT_EQ(sr.image.at(x, y)[0], 0.5f);
       }
+}
+
+// ---- the shadow through the dome and the panorama camera -----------------------------------------
+
+/// Schwarzschild shadow half-angle for a static observer at r (Synge 1966; Perlick & Tsupko,
+/// Phys. Rep. 947 (2022) eq. 32): sin α = (3√3 M / r) sqrt(1 − 2M/r), M = 1.
+double shadow_half_angle(double r) { return std::asin(3 * std::sqrt(3.0) / r * std::sqrt(1 - 2 / r)); }
+
+RenderJob schwarzschild_static_job(double r_obs) {
+  auto metric = std::shared_ptr<const Metric>(make_metric("Schwarzschild"));
+  RenderJob job;
+  job.metric = metric;
+  job.observer.pos = Vec4{{0, r_obs, kPi / 2, 0}};
+  job.observer.e = metric->natural_tetrad(job.observer.pos, TetradKind::Static);
+  static FlatShader white;
+  job.scene = std::make_shared<SkySphere>(60, &white);
+  job.solver.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
+  job.solver.box_ur = Vec4{{1e300, 100, 1e300, 1e300}};
+  job.solver.max_steps = 5000;
+  return job;
+}
+
+TEST(Tracer, SchwarzschildShadowThroughTheDomeCamera) {
+  // 2PICam with pitch 90 looks along −e_(1) = −e_r, towards the hole (dome centre
+  // R_y(−90°) ẑ = −x̂). The dome maps the angle ψ from its centre to the image radius sin ψ (in
+  // units of half the image size), so the shadow is the disk of radius N/2 · sin α.
+  const double r_obs = 8;
+  RenderJob job = schwarzschild_static_job(r_obs);
+  const int N = 200;
+  job.camera = std::make_shared<DomeCamera>(0, 90, N);
+  RenderOptions opt;
+  opt.progress = false;
+  opt.threads = 2;
+  const RenderResult res = render(job, opt);
+  double dark = 0, cx = 0, cy = 0;
+  for (int y = 0; y < N; ++y)
+    for (int x = 0; x < N; ++x) {
+      Vec3 d;
+      if (!job.camera->direction(x + 0.5, y + 0.5, d) || lit(res.image, x, y)) continue;
+      dark += 1;
+      cx += x + 0.5;
+      cy += y + 0.5;
+    }
+  ASSERT_GT(dark, 100);
+  EXPECT_NEAR(cx / dark, N / 2.0, 0.5);
+  EXPECT_NEAR(cy / dark, N / 2.0, 0.5);
+  const double expected = N / 2.0 * std::sin(shadow_half_angle(r_obs));  // 56.25 px
+  EXPECT_NEAR(std::sqrt(dark / kPi), expected, 1.0);
+}
+
+TEST(Tracer, SchwarzschildShadowThroughThePanoramaCamera) {
+  // 360° panorama centred on the hole: on the horizon row (elevation 0) the column angle is
+  // λ = ((x + .5)/W − 1/2) 360°, and a column is dark iff |λ| < α; at elevation φ a direction is
+  // dark iff cos φ cos λ > cos α.
+  const double r_obs = 5;
+  RenderJob job = schwarzschild_static_job(r_obs);
+  const int W = 360, H = 101;
+  const double fov_v = 100;
+  job.camera = std::make_shared<PanoramaCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, 360, fov_v, W, H);
+  RenderOptions opt;
+  opt.progress = false;
+  opt.threads = 2;
+  const RenderResult res = render(job, opt);
+  const double alpha = shadow_half_angle(r_obs);  // 53.6°
+  int checked = 0;
+  for (int y : {10, 30, 50, 70, 90}) {
+    const double phi = std::asin(0.5 - (y + 0.5) / H) * fov_v * kPi / 180;
+    for (int x = 0; x < W; ++x) {
+      const double lambda = ((x + 0.5) / W - 0.5) * 2 * kPi;
+      const double c = std::cos(phi) * std::cos(lambda) - std::cos(alpha);
+      if (std::fabs(c) < 0.02) continue;  // within ~1 px of the rim
+      ++checked;
+      EXPECT_EQ(lit(res.image, x, y), c < 0) << x << "," << y;
+    }
+  }
+  EXPECT_GT(checked, 1500);
 }
 
 // ---- rays that stop without a hit: breakcolor / cstrcolor / errcolor ------------------------------
