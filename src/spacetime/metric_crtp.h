@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "spacetime/fast_math.h"
 #include "spacetime/integrators.h"
 #include "spacetime/jacobi.h"
 #include "spacetime/metric.h"
@@ -48,7 +49,7 @@ class MetricCRTP : public Metric {
       christoffel_ad(x, G);
   }
   /// a^μ = −Γ^μ_{ab} k^a k^b
-  void geodesic_acceleration(const Vec4& x, const Vec4& k, Vec4& a) const {
+  GEOVIS_HOT_INLINE void geodesic_acceleration(const Vec4& x, const Vec4& k, Vec4& a) const {
     if constexpr (kHasClosedAccel) {
       self().accel_closed(x, k, a);
     } else {

@@ -30,7 +30,7 @@ class BarriolaVilenkin final : public MetricCRTP<BarriolaVilenkin> {
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
     const T& r = x[1];
-    const T st = sin(x[2]);
+    const T st = sin_t(x[2]);
     g[0][0] = T(-1.0);
     g[1][1] = T(1.0);
     g[2][2] = k2_ * r * r;

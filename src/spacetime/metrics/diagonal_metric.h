@@ -12,6 +12,7 @@
 
 #include <cmath>
 
+#include "spacetime/fast_math.h"
 #include "spacetime/vec.h"
 
 namespace geovis {
@@ -27,7 +28,8 @@ struct DiagonalMetric {
 /// given A, B, C and their r-derivatives.
 inline void spherical_diagonal(double A, double dA, double B, double dB, double C, double dC,
                                double theta, DiagonalMetric& d) {
-  const double st = std::sin(theta), ct = std::cos(theta);
+  double st, ct;
+  fast_sincos(theta, st, ct);
   d = DiagonalMetric{};
   d.h[0] = -A;
   d.h[1] = B;

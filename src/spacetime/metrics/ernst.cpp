@@ -31,7 +31,7 @@ class Ernst final : public MetricCRTP<Ernst> {
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
     const T& r = x[1];
-    const T st = sin(x[2]);
+    const T st = sin_t(x[2]);
     const T f = 1.0 - rs_ / r;
     const T L = 1.0 + B2_ * r * r * st * st;
     const T L2 = L * L;
@@ -44,7 +44,9 @@ class Ernst final : public MetricCRTP<Ernst> {
   /// g_μμ and their r- and θ-derivatives, with Λ_r = 2B² r sin²θ, Λ_θ = 2B² r² sinθ cosθ,
   /// f_r = 2M/r² (product and quotient rule on the line element above).
   void diagonal(const Vec4& x, DiagonalMetric& d) const {
-    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double r = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     const double f = 1.0 - rs_ / r, df = rs_ / (r * r);
     const double L = 1.0 + B2_ * r * r * st * st;
     const double Lr = 2.0 * B2_ * r * st * st, Lth = 2.0 * B2_ * r * r * st * ct;

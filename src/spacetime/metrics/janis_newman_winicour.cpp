@@ -38,7 +38,7 @@ class JanisNewmanWinicour final : public MetricCRTP<JanisNewmanWinicour> {
     const T& r = x[1];
     const T alpha = 1.0 - b_ / r;
     const T ag = pow(alpha, gamma_);
-    const T st = sin(x[2]);
+    const T st = sin_t(x[2]);
     const T c = alpha / ag * r * r;  // α^(1−γ) r²
     g[0][0] = -ag;
     g[1][1] = 1.0 / ag;

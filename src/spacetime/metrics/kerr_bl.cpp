@@ -34,7 +34,8 @@ struct KerrGamma {
 };
 
 inline KerrGamma kerr_gamma(double rs, double a, double r, double theta) {
-  const double st = std::sin(theta), ct = std::cos(theta);
+  double st, ct;
+  fast_sincos(theta, st, ct);
   const double st2 = st * st, ct2 = ct * ct, stct = st * ct;
   const double r2 = r * r, a2 = a * a;
   const double sigma = r2 + a2 * ct2;         // Σ
@@ -92,7 +93,8 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
     const T& r = x[1];
-    const T st = sin(x[2]), ct = cos(x[2]);
+    T st, ct;
+    sincos_t(x[2], st, ct);
     const T st2 = st * st;
     const T sigma = r * r + a2_ * (ct * ct);
     const T delta = r * r - rs_ * r + a2_;
@@ -129,17 +131,50 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     set(3, 2, 3, k.ph_thph);
   }
 
-  /// a^μ = −Γ^μ_{ab} k^a k^b written out over the twenty non-zero symbols (hot path of every
-  /// Kerr ray; no 4x4x4 contraction).
-  void accel_closed(const Vec4& x, const Vec4& k, Vec4& acc) const {
-    const KerrGamma g = kerr_gamma(rs_, a_, x[1], x[2]);
+  /// a^μ = −Γ^μ_{ab} k^a k^b (hot path of every Kerr ray), evaluated in the covariant form
+  ///   a^μ = g^{μν} F_ν,  F_ν = ½ ∂_ν g_ab k^a k^b − k^c ∂_c g_νb k^b,
+  /// which is −Γ^μ_{ab} k^a k^b with Γ = ½ g^{μν}(∂_a g_νb + ∂_b g_νa − ∂_ν g_ab) contracted. g
+  /// depends on r and θ only, so only ∂_r g and ∂_θ g of the five non-zero components enter (ten
+  /// numbers instead of twenty Christoffel symbols), and g^{μν} is block-diagonal with the
+  /// (t, φ) block det = g_tt g_φφ − g_tφ² = −Δ sin²θ. Two divisions: 1/Σ and 1/(Δ sin²θ).
+  /// With u = r_s r/Σ:  g_tt = u − 1,  g_tφ = −a sin²θ u,  g_rr = Σ/Δ,  g_θθ = Σ,
+  /// g_φφ = (r² + a² + a² sin²θ u) sin²θ;  ∂_r u = r_s (a² cos²θ − r²)/Σ²,
+  /// ∂_θ u = 2 r_s r a² sinθ cosθ/Σ².
+  GEOVIS_HOT_INLINE void accel_closed(const Vec4& x, const Vec4& k, Vec4& acc) const {
+    const double r = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     const double kt = k[0], kr = k[1], kth = k[2], kph = k[3];
-    acc[0] = -2.0 * (g.t_tr * kt * kr + g.t_tth * kt * kth + g.t_rph * kr * kph + g.t_thph * kth * kph);
-    acc[1] = -(g.r_tt * kt * kt + 2.0 * g.r_tph * kt * kph + g.r_rr * kr * kr + 2.0 * g.r_rth * kr * kth +
-               g.r_thth * kth * kth + g.r_phph * kph * kph);
-    acc[2] = -(g.th_tt * kt * kt + 2.0 * g.th_tph * kt * kph + g.th_rr * kr * kr + 2.0 * g.th_rth * kr * kth +
-               g.th_thth * kth * kth + g.th_phph * kph * kph);
-    acc[3] = -2.0 * (g.ph_tr * kt * kr + g.ph_tth * kt * kth + g.ph_rph * kr * kph + g.ph_thph * kth * kph);
+    const double r2 = r * r, s2 = st * st, sc = st * ct, a2c2 = a2_ * ct * ct;
+    const double sigma = r2 + a2c2, delta = r2 - rs_ * r + a2_;
+    const double is = 1.0 / sigma;
+    const double u = rs_ * r * is;
+    const double ur = rs_ * (a2c2 - r2) * is * is;        // ∂_r u
+    const double uth = 2.0 * rs_ * r * a2_ * sc * is * is;  // ∂_θ u
+    // Metric components.
+    const double gtt = u - 1.0, gtp = -a_ * s2 * u, B = r2 + a2_ + a2_ * s2 * u, gpp = B * s2;
+    // r-derivatives.
+    const double idd = 1.0 / (delta * s2);  // 1/(Δ sin²θ)
+    const double id = idd * s2;             // 1/Δ
+    const double gtt_r = ur, gtp_r = -a_ * s2 * ur, grr_r = (2.0 * r - sigma * (2.0 * r - rs_) * id) * id,
+                 ghh_r = 2.0 * r, gpp_r = (2.0 * r + a2_ * s2 * ur) * s2;
+    // θ-derivatives (∂_θ Σ = −2a² sinθ cosθ).
+    const double dsig = -2.0 * a2_ * sc;
+    const double gtt_h = uth, gtp_h = -a_ * (2.0 * sc * u + s2 * uth), grr_h = dsig * id, ghh_h = dsig,
+                 gpp_h = a2_ * (2.0 * sc * u + s2 * uth) * s2 + 2.0 * B * sc;
+    // D_X[ν] = ∂_X g_νb k^b and Q_X = ∂_X g_ab k^a k^b.
+    const double Drt = gtt_r * kt + gtp_r * kph, Drr = grr_r * kr, Drh = ghh_r * kth, Drp = gtp_r * kt + gpp_r * kph;
+    const double Dht = gtt_h * kt + gtp_h * kph, Dhr = grr_h * kr, Dhh = ghh_h * kth, Dhp = gtp_h * kt + gpp_h * kph;
+    const double Qr = Drt * kt + Drr * kr + Drh * kth + Drp * kph;
+    const double Qh = Dht * kt + Dhr * kr + Dhh * kth + Dhp * kph;
+    const double Ft = -kr * Drt - kth * Dht;
+    const double Fr = 0.5 * Qr - kr * Drr - kth * Dhr;
+    const double Fh = 0.5 * Qh - kr * Drh - kth * Dhh;
+    const double Fp = -kr * Drp - kth * Dhp;
+    acc[0] = (gtp * Fp - gpp * Ft) * idd;
+    acc[1] = Fr * delta * is;
+    acc[2] = Fh * is;
+    acc[3] = (gtp * Ft - gtt * Fp) * idd;
   }
 
   /// Outside the outer horizon r_+ = M + √(M² − a²) with the break margin r_+ (1 + horizon_eps)
@@ -152,7 +187,9 @@ class KerrBL final : public MetricCRTP<KerrBL> {
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
-    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double r = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     const double sigma = r * r + a2_ * ct * ct;
     const double delta = r * r - rs_ * r + a2_;
     if (!(r > r_plus_) || !(delta > 0.0)) {

@@ -35,7 +35,7 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
     const T r2 = b02_ + x[1] * x[1];
-    const T st = sin(x[2]);
+    const T st = sin_t(x[2]);
     g[0][0] = T(-1.0);
     g[1][1] = T(1.0);
     g[2][2] = r2;
@@ -46,7 +46,9 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
   /// Γ^θ_lθ = Γ^φ_lφ = l/(b0² + l²), Γ^θ_φφ = −sinθ cosθ, Γ^φ_θφ = cotθ.
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
     G = Christoffel{};
-    const double l = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double l = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     const double lr2 = l / (b02_ + l * l);
     G.G[1][2][2] = -l;
     G.G[1][3][3] = -l * st * st;
@@ -57,7 +59,9 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
   }
 
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    const double l = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double l = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     const double lr2 = l / (b02_ + l * l);
     a[0] = 0.0;
     a[1] = l * (k[2] * k[2] + st * st * k[3] * k[3]);

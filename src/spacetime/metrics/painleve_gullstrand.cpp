@@ -30,7 +30,7 @@ class PainleveGullstrand final : public MetricCRTP<PainleveGullstrand> {
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
     const T& r = x[1];
-    const T st = sin(x[2]);
+    const T st = sin_t(x[2]);
     g[0][0] = -(1.0 - rs_ / r);
     g[0][1] = g[1][0] = sqrt(rs_ / r);
     g[1][1] = T(1.0);
@@ -45,7 +45,9 @@ class PainleveGullstrand final : public MetricCRTP<PainleveGullstrand> {
   ///   Γ^θ_rθ = Γ^φ_rφ = 1/r, Γ^θ_φφ = −sinθ cosθ, Γ^φ_θφ = cotθ.
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
     G = Christoffel{};
-    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double r = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     const double w = std::sqrt(rs_ / r);
     const double rmrs = r - rs_;
     const double q = rs_ / (2.0 * r * r);
@@ -67,7 +69,9 @@ class PainleveGullstrand final : public MetricCRTP<PainleveGullstrand> {
 
   /// −Γ^μ_{ab} k^a k^b with the symbols above written out.
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double r = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     const double w = std::sqrt(rs_ / r);
     const double rmrs = r - rs_;
     const double q = rs_ / (2.0 * r * r);

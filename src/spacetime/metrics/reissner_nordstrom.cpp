@@ -34,7 +34,7 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
       for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
     const T& r = x[1];
     const T f = 1.0 - 2.0 * M_ / r + Q2_ / (r * r);
-    const T st = sin(x[2]);
+    const T st = sin_t(x[2]);
     g[0][0] = -f;
     g[1][1] = 1.0 / f;
     g[2][2] = r * r;

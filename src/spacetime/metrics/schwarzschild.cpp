@@ -25,7 +25,7 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
       for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
     const T& r = x[1];
     const T f = 1.0 - rs_ / r;
-    const T st = sin(x[2]);
+    const T st = sin_t(x[2]);
     g[0][0] = -f;
     g[1][1] = 1.0 / f;
     g[2][2] = r * r;
@@ -34,7 +34,9 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
     G = Christoffel{};
-    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double r = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     const double rmrs = r - rs_;
     G.G[0][0][1] = G.G[0][1][0] = rs_ / (2.0 * r * rmrs);
     G.G[1][0][0] = rs_ * rmrs / (2.0 * r * r * r);
@@ -48,8 +50,10 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
   }
 
   /// −Γ^μ_{ab} k^a k^b written out (the hot path of every Schwarzschild ray).
-  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+  GEOVIS_HOT_INLINE void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
+    const double r = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     const double rmrs = r - rs_;
     const double c_ttr = rs_ / (2.0 * r * rmrs);
     a[0] = -2.0 * c_ttr * k[0] * k[1];

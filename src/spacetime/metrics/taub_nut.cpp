@@ -32,7 +32,8 @@ class TaubNUT final : public MetricCRTP<TaubNUT> {
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
     const T& r = x[1];
-    const T st = sin(x[2]), ct = cos(x[2]);
+    T st, ct;
+    sincos_t(x[2], st, ct);
     const T D = r * r - 2.0 * M_ * r - l_ * l_;
     const T S = r * r + l_ * l_;
     const T DS = D / S;
@@ -53,7 +54,9 @@ class TaubNUT final : public MetricCRTP<TaubNUT> {
   ///   Γ^φ_tθ = lΔ/(Σ² sinθ), Γ^φ_rφ = r/Σ, Γ^φ_θφ = (r⁴ + 4r²l² − 4Mrl² − l⁴) cotθ/Σ².
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
     G = Christoffel{};
-    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double r = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     const double l = l_, l2 = l_ * l_, l4 = l2 * l2, M = M_;
     const double r2 = r * r, r4 = r2 * r2;
     const double D = r2 - 2.0 * M * r - l2;
@@ -90,7 +93,9 @@ class TaubNUT final : public MetricCRTP<TaubNUT> {
   /// orthogonal to e_(0)).
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
-    const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double r = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     if (!(r > r_plus_) || st == 0.0)
       throw Error("TaubNUT: no static observer at r = " + std::to_string(r) +
                   " (needs r > r+ = " + std::to_string(r_plus_) + " and sin(theta) != 0)");

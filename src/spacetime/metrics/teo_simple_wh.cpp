@@ -46,7 +46,7 @@ class TeoSimpleWH final : public MetricCRTP<TeoSimpleWH> {
     const T r2 = b02_ + x[1] * x[1];
     const T r = sqrt(r2);
     const T omega = 0.5 * b02_ / (r2 * r);
-    const T st = sin(x[2]);
+    const T st = sin_t(x[2]);
     const T F = r2 * st * st;
     g[0][0] = -1.0 + F * omega * omega;
     g[0][3] = g[3][0] = -F * omega;
@@ -57,7 +57,9 @@ class TeoSimpleWH final : public MetricCRTP<TeoSimpleWH> {
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
     G = Christoffel{};
-    const double l = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+    const double l = x[1];
+    double st, ct;
+    fast_sincos(x[2], st, ct);
     const double r2 = b02_ + l * l, r = std::sqrt(r2);
     const double om = 0.5 * b02_ / (r2 * r);
     const double dom = -3.0 * om * l / r2;  // ω' = dω/dl
