@@ -13,6 +13,7 @@
 (define r_obs 25.0)
 (define sky_radius 45.0)
 (define fview 40.0)
+(define res 150)
 (define eps 1.0e-8)
 
 (cond ((string=? spacetime "ReissnerNordstrom")

@@ -13,6 +13,7 @@
 (define r_obs 40.0)
 (define sky_radius 150.0)
 (define fview 40.0)
+(define res 100)                     ; KastorTraschen is the slowest metric (~2 ms per ray)
 (define eps 1.0e-9)
 (if (string=? spacetime "KastorTraschen")
     (init-metric '(type "KastorTraschen") '(h 0.02) '(m1 1.0) '(m2 1.0) '(z1 4.0) '(z2 -4.0) '(id "metric"))

@@ -12,6 +12,7 @@
 (define r_obs 20.0)
 (define sky_radius 45.0)
 (define fview 50.0)
+(define res 200)
 (define eps 1.0e-8)
 (define coords (if (member spacetime '("AlcubierreWarpSimple" "RotDihole")) 'cartesian 'spherical))
 (init-metric `(type ,spacetime) '(id "metric"))

@@ -13,6 +13,7 @@
 (define r_obs 6.0)
 (define sky_radius 40.0)
 (define fview 60.0)
+(define res 200)
 (define eps 1.0e-8)
 (init-metric `(type ,spacetime) '(b0 1.0) '(id "metric"))
 (load "include/lensing_view.scm")

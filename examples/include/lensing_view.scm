@@ -5,13 +5,14 @@
 ;;    r_obs      distance of the observer (on the x axis / at theta = 90)
 ;;    sky_radius radius of the celestial sphere (bounding box: 1.2 x)
 ;;    fview      vertical field of view in degrees
+;;    res        image width = height in pixels
 ;;    eps        integration tolerance
 ;; ---------------------------------------------------------------------
 
 (init-solver '(type "GSL_RK_Cash-Karp") '(geodType "lightlike") `(eps_abs ,eps)
              '(step_size 0.01) '(id "raytracing"))
 (init-camera '(type "PinHoleCam") '(dir #(1.0 0.0 0.0)) '(vup #(0.0 0.0 1.0))
-             `(fov ,(vector fview fview)) '(res #(200 200)) '(id "cam"))
+             `(fov ,(vector fview fview)) `(res ,(vector res res)) '(id "cam"))
 (define box (* 1.2 sky_radius))
 (if (eq? coords 'spherical)
     (begin
@@ -34,6 +35,6 @@
                     '(incoords #f) '(id "observer"))))
 (init-projector '(localTetrad "observer") '(color #(0.0 0.0 0.0)) '(id "proj"))
 (init-light-mgr '(ambient #(1.0 1.0 1.0)))
-(load "include/grid_sky.scm")
+(load "grid_sky.scm")             ; relative to this file's folder (examples/include)
 (comp-object '(obj "sky") '(id "scene"))
 (init-device '(type "standard") '(obj "scene") '(camera "cam"))
