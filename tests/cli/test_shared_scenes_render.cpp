@@ -1,5 +1,5 @@
 // Issue requirement: every one of the six real GeoViS scenes (../shared/scenes/*.scm) renders
-// unchanged through `geovis render` (first frame, reduced resolution). Their texture images are
+// unchanged through `geovis render` (first frame at 32x24). Their texture images are
 // not distributed, so the test writes small stand-ins into a temporary folder at run time and
 // passes it as --texture-path; HOME points to an empty temporary folder, so nothing is read from
 // the real home directory (kastorTraschen.scm and morristhorne.scm build their texture paths from
@@ -136,7 +136,7 @@ void expect_structured(const std::string& name, const Image& img, int w, int h) 
   EXPECT_LT(s.dark, 0.95);
 }
 
-constexpr int kW = 48, kH = 36;
+constexpr int kW = 32, kH = 24;
 
 TEST_F(SharedScenesRender, SphereAroundBlackhole) {
   // 301 frames; frame 0 is the orbiting sphere straight between observer and hole
