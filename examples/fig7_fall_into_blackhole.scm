@@ -9,8 +9,10 @@
 ;;  shrinks (aberration), then grows to an apex angle of 180 deg as r -> 0
 ;;  (paper eq. 14; tests/scene/test_paper_scenes.cpp measures it).
 ;;
-;;  Rendered (8 frames, 240x40, one core: ~17 s user time) and assembled with
-;;    geovis render examples/fig7_fall_into_blackhole.scm --threads 1 -o /tmp/fig7/f_%04d.png
+;;  The default 192x32 (1.875 deg per pixel) renders all 8 frames in ~18 s
+;;  user time on one core (examples/README.md). docs/gallery/fig7.gif was
+;;  rendered at 240x40 and assembled with
+;;    geovis render examples/fig7_fall_into_blackhole.scm --threads 1 --res 240x40 -o /tmp/fig7/f_%04d.png
 ;;    ffmpeg -y -framerate 2 -i /tmp/fig7/f_%04d.png \
 ;;      -vf "scale=480:80:flags=neighbor,split[a][b];[a]palettegen[p];[b][p]paletteuse" \
 ;;      docs/gallery/fig7.gif
@@ -33,7 +35,7 @@
              '(dir #(1.0 0.0 0.0))
              '(vup #(0.0 0.0 1.0))
              '(fov #(360.0 60.0))
-             '(res #(240 40))
+             '(res #(192 32))
              '(id "pancam"))
 
 (init-raygen '(type "RayGenSimple")

@@ -9,8 +9,10 @@
 ;;  18 degrees; 11 frames at observation times t = 8.6 ... 21.6, among them
 ;;  the paper's t = 13.8 and 20.3.
 ;;
-;;  Rendered (11 frames, 160x112, one core: ~20 s user time) and assembled with
-;;    geovis render examples/fig8_rolling_wheel.scm --threads 1 -o /tmp/fig8/f_%04d.png
+;;  The default 128x90 renders all 11 frames in ~20 s user time on one
+;;  core (examples/README.md). docs/gallery/fig8.gif was rendered at
+;;  160x112 and assembled with
+;;    geovis render examples/fig8_rolling_wheel.scm --threads 1 --res 160x112 -o /tmp/fig8/f_%04d.png
 ;;    ffmpeg -y -framerate 4 -i /tmp/fig8/f_%04d.png \
 ;;      -vf "split[a][b];[a]palettegen[p];[b][p]paletteuse" docs/gallery/fig8.gif
 ;; ---------------------------------------------------------------------
@@ -31,7 +33,7 @@
              `(dir ,(vector (cos (radians viewAngle)) 0.0 (sin (radians viewAngle))))
              `(vup ,(vector (- (sin (radians viewAngle))) 0.0 (cos (radians viewAngle))))
              '(fov #(50.0 35.0))
-             '(res #(160 112))
+             '(res #(128 90))
              '(id "cam"))
 
 (init-raygen '(type "RayGenSimple")
