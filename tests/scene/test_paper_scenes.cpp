@@ -71,6 +71,19 @@ TEST(PaperScenes, OrbitingSphereFirstFrameIsCentredAtLightTravelTime) {
   EXPECT_NEAR(sy / n, N / 2.0, 1.0);
   EXPECT_NEAR(0.5 * (imin + imax + 1), N / 2.0, 1.0);
   EXPECT_NEAR(0.5 * (jmin + jmax + 1), N / 2.0, 1.0);
+  // The sphere sits straight between observer and hole: the rays of the four central pixels leave
+  // the observer (r = 30, phi = 0, theta = pi/2) towards the hole (camera dir = e1 = -e_r), stay
+  // (nearly) radial, and hit the sphere's observer-facing half, 6 <= r <= 6.5 (orbit r = 6, radius
+  // 0.5), on the line phi = 0, theta = pi/2 between observer and hole.
+  for (int j = N / 2 - 1; j <= N / 2; ++j)
+    for (int i = N / 2 - 1; i <= N / 2; ++i) {
+      const PixelData& p = r.data[size_t(j) * N + i];
+      ASSERT_NE(p.object_id, 0) << i << "," << j;
+      EXPECT_GE(p.pos[1], 6.0);
+      EXPECT_LE(p.pos[1], 6.5 + 1e-3);
+      EXPECT_NEAR(p.pos[2], kPi / 2, 0.02);  // a pixel is 2.5/64 deg; 0.02 rad at r = 6 is 0.12
+      EXPECT_NEAR(p.pos[3], 0.0, 0.02);
+    }
   std::printf("sphere image: %d pixels, centroid (%.3f, %.3f), columns %d..%d, rows %d..%d, image centre %.1f\n", n,
               sx / n, sy / n, imin, imax, jmin, jmax, N / 2.0);
 }
