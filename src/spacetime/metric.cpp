@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "spacetime/fast_math.h"
 
 namespace geovis {
 
@@ -227,12 +228,17 @@ void Metric::riemann(const Vec4& x, Riemann& out) const {
 int Metric::to_pseudo_cartesian(const Vec4& x, Vec3& p) const {
   switch (info_.coord_type) {
     case CoordType::Spherical: {
-      const double st = std::sin(x[2]);
-      p = {x[1] * st * std::cos(x[3]), x[1] * st * std::sin(x[3]), x[1] * std::cos(x[2])};
+      // Called per step by the renderer: inline sincos (spacetime/fast_math.h).
+      double st, ct, sp, cp;
+      fast_sincos(x[2], st, ct);
+      fast_sincos(x[3], sp, cp);
+      p = {x[1] * st * cp, x[1] * st * sp, x[1] * ct};
       return 0;
     }
     case CoordType::Cylindrical:
-      p = {x[1] * std::cos(x[2]), x[1] * std::sin(x[2]), x[3]};
+      double sp, cp;
+      fast_sincos(x[2], sp, cp);
+      p = {x[1] * cp, x[1] * sp, x[3]};
       return 0;
     default:
       p = {x[1], x[2], x[3]};

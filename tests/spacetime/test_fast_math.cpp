@@ -8,6 +8,7 @@
 #include <string>
 
 #include "spacetime/fast_math.h"
+#include "spacetime/integrators.h"
 
 using namespace geovis;
 
@@ -70,4 +71,15 @@ TEST(FastMath, LargeAndNonFiniteArgumentsFallBackToLibm) {
   EXPECT_TRUE(std::isnan(s) && std::isnan(c));
   fast_sincos(std::numeric_limits<double>::infinity(), s, c);
   EXPECT_TRUE(std::isnan(s) && std::isnan(c));
+}
+
+TEST(FastMath, StepControllerRootsMatchPow) {
+  double worst5 = 0, worst8 = 0;
+  for (double e = -40; e <= 40; e += 0.01) {
+    const double x = std::pow(10.0, e);
+    worst5 = std::max(worst5, std::fabs(root_q<5>(x) / std::pow(x, 0.2) - 1));
+    worst8 = std::max(worst8, std::fabs(root_q<8>(x) / std::pow(x, 0.125) - 1));
+  }
+  EXPECT_LT(worst5, 1e-9);
+  EXPECT_LT(worst8, 1e-15);
 }

@@ -98,11 +98,12 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     const T st2 = st * st;
     const T sigma = r * r + a2_ * (ct * ct);
     const T delta = r * r - rs_ * r + a2_;
-    g[0][0] = -(1.0 - rs_ * r / sigma);
-    g[0][3] = g[3][0] = -rs_ * a_ * r * st2 / sigma;
+    const T u = rs_ * r / sigma;  // one division (the constraint test evaluates g every step)
+    g[0][0] = u - 1.0;
+    g[0][3] = g[3][0] = -a_ * st2 * u;
     g[1][1] = sigma / delta;
     g[2][2] = sigma;
-    g[3][3] = (r * r + a2_ + rs_ * a2_ * r * st2 / sigma) * st2;
+    g[3][3] = (r * r + a2_ + a2_ * st2 * u) * st2;
   }
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
