@@ -64,7 +64,9 @@ void setup(CLI::App& app, GlobalOptions& g) {
   auto a = std::make_shared<CheckArgs>();
   CLI::App* sub = app.add_subcommand("check", "evaluate a scene and build every frame without rendering");
   sub->add_option("scene", a->scene, "GeoViS scene file (.scm)")->required();
-  sub->add_option("--texture-path", a->texture_paths, "extra folder to search for textures and meshes")
+  sub->add_option("--texture-path", a->texture_paths,
+                  "extra folder to search for textures and meshes (a file the scene names by a path that "
+                  "does not exist here is looked up by its file name)")
       ->allow_extra_args(false);
   sub->add_option("--define", a->defines, "override a top-level (define NAME ...) of the scene")
       ->allow_extra_args(false);

@@ -388,7 +388,9 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->add_option("--res", a->res, "override the camera resolution, WIDTHxHEIGHT (field of view kept)");
   sub->add_option("--threads", a->threads, "worker threads (0 = all cores)");
   sub->add_option("--supersample", a->supersample, "N x N samples per pixel");
-  sub->add_option("--texture-path", a->texture_paths, "extra folder to search for textures and meshes")
+  sub->add_option("--texture-path", a->texture_paths,
+                  "extra folder to search for textures and meshes (a file the scene names by a path that "
+                  "does not exist here is looked up by its file name)")
       ->allow_extra_args(false);
   sub->add_option("--define", a->defines, "override a top-level (define NAME ...) of the scene")
       ->allow_extra_args(false);
