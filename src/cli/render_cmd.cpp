@@ -251,17 +251,11 @@ int run_program(const std::vector<std::string>& args, bool quiet) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-void make_movie(const RenderArgs& a, const std::string& pattern, int first, bool quiet) {
-  const std::string ffmpeg = find_program("ffmpeg");
-  if (ffmpeg.empty()) {
-    std::cerr << "geovis: --movie: ffmpeg is not installed (not found in PATH); the frames are kept, "
-                 "assemble them with e.g. ffmpeg -framerate 25 -start_number "
-              << first << " -i '" << pattern << "' -pix_fmt yuv420p " << a.movie << "\n";
-    throw Error("--movie: ffmpeg not found");
-  }
+void make_movie(const RenderArgs& a, const std::string& ffmpeg, const std::string& pattern, int first,
+                bool quiet) {
   // yuv420p needs even dimensions: pad by one pixel when needed.
   const std::vector<std::string> args = {ffmpeg, "-y", "-loglevel", "error", "-framerate", "25", "-start_number",
-                                         std::to_string(first), "-i", pattern, "-vf",
+                                         std::to_string(first), "-f", "image2", "-i", pattern, "-vf",
                                          "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", a.movie};
   const int rc = run_program(args, false);
   if (rc != 0)
@@ -287,6 +281,11 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
     throw Error("--supersample: expected 1 to 64 samples per pixel side, found " + std::to_string(a.supersample));
   if (!a.movie.empty() && to_lower(split_ext(a.movie).second).empty())
     throw Error("--movie: \"" + a.movie + "\": expected a file name with an extension such as .mp4");
+  // Look for ffmpeg before rendering, so that a long render does not fail at its very end.
+  std::string ffmpeg;
+  if (!a.movie.empty() && (ffmpeg = find_program("ffmpeg")).empty())
+    throw Error("--movie: ffmpeg is not installed (not found in PATH); install it (Debian: apt-get install "
+                "ffmpeg) or render without --movie and assemble the frames yourself");
   for (const auto& dir : a.texture_paths)
     if (!fs::is_directory(dir)) throw Error("--texture-path: \"" + dir + "\" is not a directory");
 
@@ -373,7 +372,7 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
   if (!a.movie.empty()) {
     // A stereo sequence becomes the movie of the left eye.
     stereo = stereo || exists(eye_path(frame_path(out, first, sequence), "left"));
-    make_movie(a, eye_path(movie_pattern(out, sequence), stereo ? "left" : ""), first, quiet);
+    make_movie(a, ffmpeg, eye_path(movie_pattern(out, sequence), stereo ? "left" : ""), first, quiet);
   }
   return 0;
 }

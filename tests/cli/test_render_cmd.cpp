@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -225,5 +226,34 @@ TEST_F(RenderCmd, SceneCallingExitStopsWithoutErrorAndRendersNothing) {
   }
 }
 
+
+TEST_F(RenderCmd, MovieOfOneFrameAndOfASequence) {
+  if (system("command -v ffmpeg >/dev/null 2>&1") != 0) GTEST_SKIP() << "ffmpeg is not installed";
+  const std::string scene = write_scene(3);
+  // One frame written to a plain file name (no frame pattern): ffmpeg's image2 reader must take it.
+  ASSERT_EQ(run_args({"render", scene, "--frames", "1:1", "-o", path("one.png"), "--movie", path("one.mp4"),
+                      "--quiet"}),
+            0);
+  EXPECT_TRUE(exists("one.png"));
+  EXPECT_GT(fs::file_size(dir_ / "one.mp4"), 0u);
+  // A sequence: frames out_0000.png .. out_0002.png, then the movie.
+  ASSERT_EQ(run_args({"render", scene, "-o", path("out.png"), "--movie", path("seq.mp4"), "--quiet"}), 0);
+  EXPECT_TRUE(exists("out_0002.png"));
+  EXPECT_GT(fs::file_size(dir_ / "seq.mp4"), 0u);
+}
+
+TEST_F(RenderCmd, MovieWithoutFfmpegFailsBeforeRendering) {
+  const std::string scene = write_scene(2);
+  const char* old = std::getenv("PATH");
+  const std::string saved = old ? old : "";
+  ::setenv("PATH", dir_.c_str(), 1);  // a folder without ffmpeg
+  testing::internal::CaptureStderr();
+  const int rc = run_args({"render", scene, "-o", path("out.png"), "--movie", path("m.mp4"), "--quiet"});
+  const std::string err = testing::internal::GetCapturedStderr();
+  ::setenv("PATH", saved.c_str(), 1);
+  EXPECT_NE(rc, 0);
+  EXPECT_NE(err.find("ffmpeg is not installed"), std::string::npos) << err;
+  EXPECT_FALSE(exists("out_0000.png"));  // nothing rendered: the check comes first
+}
 }  // namespace
 }  // namespace geovis::cli
