@@ -1,7 +1,8 @@
 ;; ---------------------------------------------------------------------
 ;;  Planetarium "DomeMaster" fisheye (2PICam, paper eq. 6): a static
 ;;  observer at r = 12M next to a Schwarzschild black hole, looking
-;;  towards the hole (pitch 90 turns the dome's zenith to the horizon).
+;;  towards the hole (pitch -90 turns the dome's zenith to the horizon,
+;;  onto the local direction e1 = -e_r).
 ;;  Pixels outside the dome circle are not traced.
 ;;
 ;;    geovis render examples/dome_schwarzschild.scm -o dome.png
@@ -12,7 +13,7 @@
 (init-metric '(type "Schwarzschild") '(mass 1.0) '(id "metric"))
 (init-solver '(type "GSL_RK_Cash-Karp") '(geodType "lightlike") '(eps_abs 1.0e-8)
              '(step_size 0.01) '(id "raytracing"))
-(init-camera '(type "2PICam") '(heading 0.0) '(pitch 90.0) '(res #(256 256)) '(id "dome"))
+(init-camera '(type "2PICam") '(heading 0.0) '(pitch -90.0) '(res #(256 256)) '(id "dome"))
 (init-raygen '(type "RayGenSimple")
              `(boundBoxLL ,(vector (- gpDBLMAX) 0.0 (- gpDBLMAX) (- gpDBLMAX)))
              `(boundBoxUR ,(vector gpDBLMAX 50.0 gpDBLMAX gpDBLMAX))

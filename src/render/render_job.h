@@ -37,7 +37,8 @@ struct RenderJob {
   Color background{0, 0, 0};
   /// GeoViS projector errcolor / cstrcolor / breakcolor: pixel colour when the ray stopped without
   /// a hit because of an integration error (step underflow, non-finite state), a constraint
-  /// violation, or the metric's break condition (horizon, singularity). Default: background.
+  /// violation, or the metric's break condition (horizon, singularity); Tracer::stop_color()
+  /// gives the precedence and the GeoViS defaults (a black shadow).
   std::optional<Color> error_color, constraint_color, break_color;
   Filter filter = Filter::RGB;
   int supersample = 1;  ///< n x n samples per pixel
