@@ -55,6 +55,9 @@
             '(rin 1.0) '(rout 2.2) '(shader "checker") '(id "annulus"))
 (plane-triangle `(objtype ,gpObjTypeInCoords) '(p1 #(4.0 -7.0 3.0)) '(p2 #(4.0 -4.0 3.0))
                 '(p3 #(4.0 -5.5 5.5)) '(shader "gradient") '(id "triangle"))
+;; geovis extension (not in GeoViS): the parallelogram p1, p2, p3, p2 + p3 - p1
+(plane-parallelogram `(objtype ,gpObjTypeInCoords) '(p1 #(4.0 -3.9 3.2)) '(p2 #(4.0 -2.8 3.2))
+                     '(p3 #(4.0 -3.4 5.0)) '(shader "chequered") '(id "parallelogram"))
 (mesh-obj `(objtype ,gpObjTypeInCoords) '(pathname "meshes") '(filename "icosahedron.obj")
           `(transform ,(translate-obj #(0.0 8.5 1.3) (scale-obj #(1.3 1.3 1.3))))
           '(shader "image") '(id "mesh"))
@@ -102,7 +105,7 @@
 (define sky_radius 50.0)
 (load "include/grid_sky.scm")
 (comp-object '(obj "ellipsoid") '(obj "box") '(obj "cylinder") '(obj "ring") '(obj "annulus")
-             '(obj "triangle") '(obj "mesh") '(obj "bitten") '(obj "pair") '(obj "rounded")
+             '(obj "triangle") '(obj "parallelogram") '(obj "mesh") '(obj "bitten") '(obj "pair") '(obj "rounded")
              '(obj "beads") '(obj "tiltedBox")
              '(obj "sky") '(id "scene"))
 (init-device '(type "standard") '(obj "scene") '(camera "cam"))

@@ -67,6 +67,7 @@ const std::map<std::string, Kind>& definition_commands() {
       {"solid-cylinder", Kind::Object},      {"solid-ellipsoid", Kind::Object},
       {"solid-background", Kind::Object},    {"solid-ring", Kind::Object},
       {"plane-triangle", Kind::Object},      {"plane-ring", Kind::Object},
+      {"plane-parallelogram", Kind::Object},
       {"mesh-obj", Kind::Object},            {"csg-object", Kind::Object},
       {"comp-object", Kind::Object},         {"comp-octree-object", Kind::Object},
       {"local-comp-object", Kind::Object},
@@ -333,7 +334,7 @@ std::vector<std::string> settable_names(const Def& d, bool& any) {
       if (c == "solid-ellipsoid") return {"axlen", "transform"};
       if (c == "mesh-obj") return {"objfilename"};
       if (c == "solid-box" || c == "solid-cylinder" || c == "solid-ring" || c == "csg-object" ||
-          c == "plane-triangle" || c == "plane-ring")
+          c == "plane-triangle" || c == "plane-parallelogram" || c == "plane-ring")
         return {"transform"};
       return {};
     }

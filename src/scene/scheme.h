@@ -63,6 +63,9 @@ SceneDescription evaluate_scene_string(const std::string& text, const std::strin
 
 /// The GeoViS commands that record a call (init-metric, ..., gvs-print), in catalogue order.
 const std::vector<std::string>& scene_command_names();
+/// The recording commands that geovis adds to GeoViS's (plane-parallelogram); a subset of
+/// scene_command_names().
+const std::vector<std::string>& scene_extension_command_names();
 
 /// Every name the scene language defines beyond standard Scheme: the recording commands, the
 /// immediate commands (vec3, rotate-obj, get-parameter, m4d-metriclist, exit, ...) and the prelude

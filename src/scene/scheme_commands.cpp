@@ -31,7 +31,14 @@ const std::vector<std::string>& scene_command_names() {
       "plane-triangle",  "mesh-obj",         "csg-object",      "comp-object",
       "comp-octree-object", "local-comp-object", "add-object",  "init-motion",
       "init-device",     "set-parameter",    "set-changeobj",   "gvs-print-motion",
-      "calc-ray",        "calc-proj-ray",    "gvs-print"};
+      "calc-ray",        "calc-proj-ray",    "gvs-print",
+      // geovis extensions (not in GeoViS): scene_extension_command_names()
+      "plane-parallelogram"};
+  return names;
+}
+
+const std::vector<std::string>& scene_extension_command_names() {
+  static const std::vector<std::string> names = {"plane-parallelogram"};
   return names;
 }
 

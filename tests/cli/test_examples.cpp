@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "support/geovis_catalogue.h"
 #include "cli/command.h"
 
 namespace geovis::cli {
@@ -66,22 +67,7 @@ TEST(Examples, EachIsDescribedInTheReadme) {
         << scene.filename() << " is not in examples/README.md";
 }
 
-/// The command names of the GeoViS catalogue's §1 command table (../shared/reference/geovis-catalogue.md;
-/// the constants table of §1 that follows it is not part of it).
-std::vector<std::string> catalogue_commands() {
-  std::ifstream in(fs::path(GEOVIS_SHARED_DIR) / "reference" / "geovis-catalogue.md");
-  std::vector<std::string> out;
-  bool in_table = false;
-  static const std::regex name("`([a-z0-9-]+)`");
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("## 1.", 0) == 0) in_table = true;
-    else if (line.rfind("## ", 0) == 0 || line.rfind("### ", 0) == 0) in_table = false;
-    if (!in_table || line.rfind("| `", 0) != 0) continue;
-    const std::string first = line.substr(1, line.find('|', 1) - 1);
-    for (std::sregex_iterator it(first.begin(), first.end(), name), end; it != end; ++it) out.push_back((*it)[1]);
-  }
-  return out;
-}
+using testing_support::catalogue_commands;
 
 TEST(Examples, TogetherUseEveryGeoViSCommand) {
   // The text of every example and include file.

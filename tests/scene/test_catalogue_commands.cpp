@@ -11,6 +11,7 @@
 #include <set>
 #include <string>
 
+#include "support/geovis_catalogue.h"
 #include "io/image.h"
 #include "scene/builder.h"
 #include "scene/scheme.h"
@@ -20,24 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The command names of the catalogue's §1 table (first column, every `name` in it).
-std::vector<std::string> catalogue_commands() {
-  std::ifstream in(std::string(GEOVIS_SHARED_DIR) + "/reference/geovis-catalogue.md");
-  EXPECT_TRUE(in.good()) << "catalogue not found";
-  std::vector<std::string> out;
-  std::string line;
-  bool in_table = false;
-  while (std::getline(in, line)) {
-    if (line.rfind("## 1.", 0) == 0) in_table = true;
-    else if (line.rfind("## ", 0) == 0) in_table = false;
-    if (!in_table || line.rfind("| `", 0) != 0) continue;
-    const std::string first = line.substr(1, line.find('|', 1) - 1);
-    static const std::regex name("`([a-z0-9-]+)`");
-    for (std::sregex_iterator it(first.begin(), first.end(), name), end; it != end; ++it)
-      out.push_back((*it)[1]);
-  }
-  return out;
-}
+using testing_support::catalogue_commands;
 
 TEST(CatalogueCommands, EveryGeoViSCommandIsDefinedInAScene) {
   const auto cmds = catalogue_commands();
@@ -51,23 +35,16 @@ TEST(CatalogueCommands, EveryGeoViSCommandIsDefinedInAScene) {
   }
 }
 
-TEST(CatalogueCommands, NoRecordingCommandBeyondGeoViS) {
+TEST(CatalogueCommands, EveryRecordingCommandIsGeoViSsOrADocumentedExtension) {
   const auto cmds = catalogue_commands();
   const std::set<std::string> cat(cmds.begin(), cmds.end());
-  for (const auto& c : scene_command_names()) EXPECT_TRUE(cat.count(c)) << c << " is not a GeoViS command";
-  // GeoViS has plane-triangle and plane-ring only (Parser/GvsParser.cpp registers no other
-  // plane-* command; a parallelogram is two triangles). The name is unbound in a scene, and the
-  // error says so at the call.
-  EXPECT_FALSE(cat.count("plane-parallelogram"));
-  try {
-    evaluate_scene_string("(init-metric '(type \"Minkowski\"))\n(plane-parallelogram '(p1 #(0 0 0)))\n", "pp.scm");
-    FAIL() << "plane-parallelogram was accepted";
-  } catch (const Error& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("pp.scm:2"), std::string::npos) << m;
-    EXPECT_NE(m.find("plane-parallelogram"), std::string::npos) << m;
+  const auto& ext = scene_extension_command_names();
+  for (const auto& c : scene_command_names()) {
+    const bool extension = std::find(ext.begin(), ext.end(), c) != ext.end();
+    EXPECT_NE(cat.count(c) > 0, extension) << c << ": a GeoViS command xor a geovis extension";
   }
 }
+
 
 /// A flat scene with a compound "scene" of one ball; `extra` is appended before init-device.
 std::string flat_scene(const std::string& extra) {
@@ -109,6 +86,29 @@ TEST(CatalogueCommands, AddObjectWithOrWithoutIdGivesNoWarning) {
     strict.strict = true;
     bo.diag = &strict;
     EXPECT_NO_THROW(SceneBuilder(evaluate_scene_string(flat_scene(add), "add.scm"), bo).build(0));
+  }
+}
+
+TEST(CatalogueCommands, PlaneParallelogramExtensionBuildsAParallelogram) {
+  // GeoViS has plane-triangle and plane-ring only; geovis adds the parallelogram with corners p1,
+  // p2, p3 and p2 + p3 - p1 (issue: "planar surface (parallelogram)"), with plane-triangle's keys.
+  const std::string pg =
+      "(plane-parallelogram '(p1 #(0 0 0)) '(p2 #(3 0 0)) '(p3 #(1 2 0)) '(shader \"sh\") '(id \"pg\"))\n"
+      "(add-object '(add-to \"scene\") '(obj \"pg\"))\n";
+  const auto jobs = SceneBuilder(evaluate_scene_string(flat_scene(pg), "pg.scm"), {}).build(0);
+  ASSERT_EQ(jobs.size(), 1u);
+  // The fourth corner (4, 2, 0) lies beyond the triangle p1 p2 p3 (x <= 3).
+  EXPECT_NEAR(jobs[0].job.scene->bounds().hi.x, 4.0, 1e-9);
+  EXPECT_NEAR(jobs[0].job.scene->bounds().hi.y, 2.0, 1e-9);
+  const std::string bad = "(plane-parallelogram '(p1 #(0 0 0)) '(p2 #(1 0 0)) '(p3 #(2 0 0)) '(id \"pg\"))\n"
+                          "(add-object '(add-to \"scene\") '(obj \"pg\"))\n";
+  try {
+    SceneBuilder(evaluate_scene_string(flat_scene(bad), "bad.scm"), {}).build(0);
+    FAIL() << "collinear corners were accepted";
+  } catch (const Error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("bad.scm:"), std::string::npos) << m;
+    EXPECT_NE(m.find("collinear"), std::string::npos) << m;
   }
 }
 
