@@ -603,7 +603,15 @@ struct MetricSystem {
   const M& m;
   F& f;
   GEOVIS_HOT_INLINE void operator()(const double* y, double* dy) const { f(y, dy); }
-  bool valid(const double* y) const { return m.is_valid_inline(Vec4{{y[0], y[1], y[2], y[3]}}); }
+  /// In the metric's validity domain; a metric may also break a ray by its direction with
+  /// `bool leaves_chart(const Vec4& x, const Vec4& k) const` (a ray that can only leave the chart
+  /// asymptotically, e.g. towards the region that ingoing Eddington–Finkelstein does not cover).
+  bool valid(const double* y) const {
+    const Vec4 x{{y[0], y[1], y[2], y[3]}};
+    if (!m.is_valid_inline(x)) return false;
+    if constexpr (requires { m.leaves_chart(x, x); }) return !m.leaves_chart(x, Vec4{{y[4], y[5], y[6], y[7]}});
+    return true;
+  }
   /// Inside the scene's bounding box (GeoViS boundBoxLL/UR, in the metric's coordinates).
   static bool inside(const SolverConfig& c, const double* y) {
     for (int i = 0; i < 4; ++i)

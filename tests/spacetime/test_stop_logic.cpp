@@ -7,6 +7,7 @@
 //    horizon) are not stopped, while a genuinely non-null k is.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -169,5 +170,65 @@ TEST(StopLogic, NonNullDirectionIsStoppedForConstraint) {
       const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
       EXPECT_NE(r.reason, StopReason::Constraint) << "r0 " << r0;
     }
+  }
+}
+
+TEST(StopLogic, RaysLeavingTheChartStopAtTheHorizonMargin) {
+  // A freely falling observer inside the horizon (r = 1.5, r_s = 2) traces rays backwards. E =
+  // g_{0μ} k^μ (k past-directed) is the conserved energy of the future-directed photon.
+  //  * E < 0: the light cannot have come through the future horizon (E ≥ 0 there); backwards it
+  //    creeps towards r_s from inside with k^0 → −∞ and is stopped at r_s (1 − horizon_eps).
+  //  * E > 0: it came in from the exterior: backwards it crosses r_s at finite v and either
+  //    escapes (box r < 20) or, turned back by the potential barrier, approaches the past horizon
+  //    from outside and is stopped at r_s (1 + horizon_eps).
+  // Either way the ray stops promptly instead of burning the step budget.
+  for (const char* name : {"EddFinkIn", "PainleveGullstrand"}) {
+    auto m = make_metric(name);
+    const double rs = 2.0, eps_h = m->horizon_eps();
+    const Vec4 x{{0, 1.5, kPi / 2, 0}};
+    int escaped = 0, stopped_inside = 0, stopped_outside = 0;
+    for (int i = 0; i < 24; ++i) {
+      const double psi = kPi * (i + 0.5) / 24;  // angle from the outward radial direction
+      const Vec4 k = local_null_direction(m->natural_tetrad(x, TetradKind::Freefall),
+                                          Vec3{std::cos(psi), 0, std::sin(psi)}, /*past_directed=*/true);
+      Mat4 g;
+      m->metric_tensor(x, g);
+      const double energy = g[0][0] * k[0] + g[0][1] * k[1];
+      double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+      SolverConfig cfg;
+      cfg.kind = SolverKind::DormandPrince853;
+      cfg.eps_abs = 1e-8;
+      cfg.max_steps = 100000;
+      cfg.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
+      cfg.box_ur = Vec4{{1e300, 20, 1e300, 1e300}};
+      double rmax = 0;
+      auto cb = [&](const StepView& s) {
+        rmax = std::max(rmax, s.y1[1]);
+        return StepAction::Continue;
+      };
+      const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+      const std::string what = std::string(name) + " psi " + std::to_string(psi) + " E " + std::to_string(energy) +
+                               ": " + stop_reason_name(r.reason) + " at r " + std::to_string(y[1]);
+      EXPECT_LT(r.steps, 500) << what;
+      if (energy < 0) {
+        ++stopped_inside;
+        EXPECT_EQ(r.reason, StopReason::Invalid) << what;
+        EXPECT_LE(y[1], rs * (1 - eps_h)) << what;
+        EXPECT_GT(y[1], rs * (1 - 2 * eps_h)) << what;
+        EXPECT_LT(rmax, rs) << what;
+      } else if (r.reason == StopReason::BoundingBox) {
+        ++escaped;
+        EXPECT_GT(y[1], 20.0) << what;
+      } else {
+        ++stopped_outside;
+        EXPECT_EQ(r.reason, StopReason::Invalid) << what;
+        EXPECT_GE(y[1], rs * (1 + eps_h)) << what;
+        EXPECT_LT(y[1], rs * (1 + 2 * eps_h)) << what;
+        EXPECT_GT(rmax, y[1]) << what;  // went out and came back
+      }
+    }
+    EXPECT_GT(escaped, 0) << name;
+    EXPECT_GT(stopped_inside, 0) << name;
+    EXPECT_GT(stopped_outside, 0) << name;
   }
 }

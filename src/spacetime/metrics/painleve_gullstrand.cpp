@@ -88,6 +88,26 @@ class PainleveGullstrand final : public MetricCRTP<PainleveGullstrand> {
     return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
+  /// Break condition by direction (integrators.h, MetricSystem::valid): a backward-traced
+  /// (past-directed) ray that can reach r_s only asymptotically, with k^0 → −∞, towards the
+  /// white-hole horizon or the other universe that this chart does not cover (MTW §31.5, Kruskal
+  /// diagram), is stopped at the break margin |r − r_s| < r_s·horizon_eps of the static metrics'
+  /// horizons instead of burning the step budget. E = g_{0μ} k^μ is the conserved Killing energy
+  /// of the future-directed photon −k.
+  ///  * inside (r < r_s) r is a time function, so k^r > 0 means past-directed; on the future
+  ///    horizon ξ = ∂_0 is null and future-directed, so light that crosses it has E ≥ 0: with
+  ///    E < 0 the ray never leaves the hole backwards.
+  ///  * outside, ξ is timelike and future-directed, so E > 0 means past-directed; a past-directed
+  ///    ray cannot enter the hole (which lies to the future of the horizon), so with k^r < 0 near
+  ///    r_s it approaches the past horizon.
+  bool leaves_chart(const Vec4& x, const Vec4& k) const {
+    const double r = x[1];
+    if (!(std::abs(r - rs_) < rs_ * horizon_eps())) return false;
+    // g_tt = −(1 − r_s/r), g_tr = sqrt(r_s/r).
+    const double E = -(1.0 - rs_ / r) * k[0] + std::sqrt(rs_ / r) * k[1];
+    return r < rs_ ? (k[1] > 0.0 && E < 0.0) : (E > 0.0 && k[1] < 0.0);
+  }
+
   /// Static observer (r > r_s), as Motion4D's m4dMetricPainleveGullstrand, w = sqrt(1 − r_s/r):
   ///   e_(0) = ∂_T / w,  e_(1) = sqrt(r_s/(r − r_s)) ∂_T + w ∂_r.
   /// Freefall observer from rest at infinity (any r > 0), w = sqrt(r_s/r):
