@@ -209,12 +209,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->add_flag("--forward", a->forward, "lightlike: trace towards the future instead of backwards in time");
   sub->add_option("--format", a->format, "csv or json")->capture_default_str();
   sub->callback([a, &g]() {
-    try {
-      g.exit_code = run_geodesic(*a);
-    } catch (const Error& e) {
-      std::cerr << "geovis: error: " << e.what() << "\n";
-      g.exit_code = 1;
-    }
+    g.exit_code = run_geodesic(*a);  // errors are reported by run() (app.cpp)
   });
 }
 

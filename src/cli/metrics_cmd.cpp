@@ -104,12 +104,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
       "metrics", "list every metric with coordinates, natural tetrads and parameters (default, range, meaning)");
   sub->add_flag("--json", *json, "print the list as JSON");
   sub->callback([json, &g]() {
-    try {
-      g.exit_code = run_metrics(*json);
-    } catch (const Error& e) {
-      std::cerr << "geovis: error: " << e.what() << "\n";
-      g.exit_code = 1;
-    }
+    g.exit_code = run_metrics(*json);  // errors are reported by run() (app.cpp)
   });
 }
 

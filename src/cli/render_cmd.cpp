@@ -406,13 +406,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
       // the exit status is the scene's code.
       if (!(a->quiet || g.quiet)) std::cerr << "geovis: " << e.what() << "\n";
       g.exit_code = e.code();
-    } catch (const Error& e) {
-      std::cerr << "geovis: error: " << e.what() << "\n";
-      g.exit_code = 1;
-    } catch (const std::exception& e) {
-      std::cerr << "geovis: internal error: " << e.what() << "\n";
-      g.exit_code = 2;
-    }
+    }  // other errors reach run() (app.cpp), which reports them and sets the exit status
   });
 }
 
