@@ -42,8 +42,10 @@ struct RayState {
 /// Refines a hit found on the chord of step `st` (fraction `s0` of the chord, hit `h`): the curved
 /// step (cubic Hermite dense output of the integrator, geodesic.h) is split into 4 sub-chords, the
 /// first one that hits becomes the new interval, until the curve deviates from the chord by less
-/// than the tolerance. Returns the hit and its fraction of the step.
-void refine_hit(const StepView& st, const Segment& chord, const SceneObject& scene, const Metric& m, Hit& best,
+/// than the tolerance. Returns false when the chord hit but none of its sub-chords does: the
+/// curve passes the object (a grazing ray whose chord cuts a corner of it); else the hit and its
+/// fraction of the step.
+bool refine_hit(const StepView& st, const Segment& chord, const SceneObject& scene, const Metric& m, Hit& best,
                 double& frac) {
   double a = 0, b = 1;
   Vec4 xa = chord.x0, xb = chord.x1;
@@ -100,9 +102,10 @@ void refine_hit(const StepView& st, const Segment& chord, const SceneObject& sce
       pp = pi;
       cp = ci;
     }
-    // The chord hit but no sub-chord does (grazing ray): the coarser hit stands.
-    if (!found) break;
+    // The chord hit but the closer approximation of the curve does not (grazing ray).
+    if (!found) return false;
   }
+  return true;
 }
 
 }  // namespace
@@ -175,7 +178,7 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
     Hit h;
     if (!rs.scene->intersect(seg, h)) return StepAction::Continue;
     rs.best = h;
-    refine_hit(st, seg, *rs.scene, mm, rs.best, rs.frac);
+    if (!refine_hit(st, seg, *rs.scene, mm, rs.best, rs.frac)) return StepAction::Continue;
     rs.hit = true;
     rs.lambda0 = st.lambda0;
     rs.lambda1 = st.lambda1;

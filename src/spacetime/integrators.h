@@ -102,15 +102,26 @@ struct TransportRHS {
 /// |err_i| / D_i. |y_i| is taken at the start of the step, not at its end as in GSL and HNW I
 /// §II.4: a trial step that jumps across a singularity produces a huge y_new and must not
 /// inflate its own tolerance with it (test BlowUpStopsBeforeTheSingularity).
+///
+/// A system whose variables are not the coordinates (Mino state, kerr_mino.h) gives per-component
+/// scales s_i so that the tolerance keeps its meaning in coordinates, D_i = eps_abs·s_i +
+/// eps_rel·|y0_i|; the driver then sets `inv` to the N values 1/D_i at the start of the step.
 struct ErrorScale {
   double eps_abs = 0, eps_rel = 0;
-  /// max_i |err_i| / (eps_abs + eps_rel·|y0_i|); NaN when an error component is NaN. With
-  /// eps_rel = 0 (GeoViS's default) this is one division per step instead of one per component.
+  const double* inv = nullptr;  ///< per-component 1/D_i, or null: D_i = eps_abs + eps_rel·|y0_i|
+  /// max_i |err_i| / D_i; NaN when an error component is NaN. With eps_rel = 0 (GeoViS's default)
+  /// this is one division per step instead of one per component.
   template <int N>
   double norm(const double* err, const double* y0) const {
     double m = 0;
     bool nan = false;
-    if (eps_rel == 0.0) {
+    if (inv) {
+      for (int i = 0; i < N; ++i) {
+        const double a = std::fabs(err[i]);
+        nan |= a != a;
+        m = std::max(m, a * inv[i]);
+      }
+    } else if (eps_rel == 0.0) {
       for (int i = 0; i < N; ++i) {
         const double a = std::fabs(err[i]);
         nan |= a != a;
@@ -152,11 +163,23 @@ inline double weighted(const double (&k)[S][N], int i) {
   return acc;
 }
 
-/// Stage s (≥ 1): tmp = y + h Σ_{j<s} a[s][j] k_j, then k_s = f(tmp).
+/// Number of leading state components the right-hand side of F reads (F::kCoupled when given,
+/// else all): the remaining ones are quadratures (y_i' = f_i(coupled part)) whose stage values
+/// are never needed.
+template <class F, int N>
+constexpr int coupled_dim() {
+  if constexpr (requires { F::kCoupled; }) {
+    static_assert(F::kCoupled <= N);
+    return F::kCoupled;
+  }
+  return N;
+}
+
+/// Stage s (≥ 1): tmp = y + h Σ_{j<s} a[s][j] k_j (coupled components only), then k_s = f(tmp).
 template <class Tab, int s, int S, int N, class F>
 GEOVIS_HOT_INLINE void stage(F& f, const double* y, double h, double (&k)[S][N]) {
   double tmp[N];
-  for (int i = 0; i < N; ++i) {
+  for (int i = 0; i < coupled_dim<F, N>(); ++i) {
     double acc = 0.0;
     [&]<int... j>(std::integer_sequence<int, j...>) {
       (add_a<Tab, s, j, S, N>(acc, k, i), ...);
@@ -724,20 +747,51 @@ void validate_solver_config(const SolverConfig& cfg);
 /// Invalid once the edge is located to 1/1024 of the first step that crossed it. Step underflow (|h| < step_min or |h| below the resolution of λ)
 /// stops with StepUnderflow, or with Invalid / NotFinite when the rejected trials were leaving the
 /// validity domain / not finite.
+///
+/// A system integrated in a parameter σ other than the affine one (Mino time, kerr_mino.h) carries
+/// λ in its state and provides `double affine(const double* y) const` (λ at y) and `double
+/// param_per_affine(const double* y) const` (dσ/dλ at y). Then step_size and step_max are
+/// converted from λ to σ at the current state, StepView and the result report λ, and λ_max is
+/// reached by shortening the overshooting step with the secant on λ(σ) until |λ − λ_max| ≤
+/// 1e-12 λ_max (the step that lands there is accepted; λ_max stays a bound, never exceeded).
 template <class St, class Sys>
 GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, double lambda0,
                               StepCallback cb) {
   constexpr int N = Sys::N;
+  constexpr bool kOwnAffine = requires(const Sys& s, const double* p) {
+    s.affine(p);
+    s.param_per_affine(p);
+  };
+  auto affine = [&sys](const double* yy, double s) {
+    if constexpr (kOwnAffine) return sys.affine(yy);
+    return s;
+  };
+  auto per_affine = [&sys](const double* yy) {
+    if constexpr (kOwnAffine) return sys.param_per_affine(yy);
+    return 1.0;
+  };
   GeodesicResult res;
   double y[N], dy[N], y1[N], dy1[N];
   for (int i = 0; i < N; ++i) y[i] = y_io[i];
-  double lambda = lambda0;
+  double lambda = lambda0;  // the independent variable (σ when kOwnAffine)
   const double dir = cfg.direction >= 0 ? 1.0 : -1.0;
   St stepper(cfg);
   const bool adaptive = cfg.step_ctrl && St::kHasErrorEstimate;
-  const ErrorScale tol{cfg.eps_abs, cfg.eps_rel};
-  const double hmax = std::max(cfg.step_max, cfg.step_min);
-  double h = std::clamp(std::fabs(cfg.step_size), cfg.step_min, hmax);
+  ErrorScale tol{cfg.eps_abs, cfg.eps_rel};
+  constexpr bool kScaledTol = requires(const Sys& s, const double* p, double* q) { s.tolerance_scale(p, q); };
+  double inv_tol[N];
+  auto set_tolerance = [&] {
+    if constexpr (kScaledTol) {
+      sys.tolerance_scale(y, inv_tol);
+      for (int i = 0; i < N; ++i) inv_tol[i] = 1.0 / (cfg.eps_abs * inv_tol[i] + cfg.eps_rel * std::fabs(y[i]));
+      tol.inv = inv_tol;
+    }
+  };
+  set_tolerance();
+  const double hmax_affine = std::max(cfg.step_max, cfg.step_min);
+  double hmax = hmax_affine * per_affine(y), hmin = cfg.step_min * per_affine(y);
+  double h = std::max(std::min(std::fabs(cfg.step_size), hmax_affine) * per_affine(y), hmin);
+  const double affine0 = affine(y, lambda0);
   bool after_reject = false;
   // Boundary location: |h| of the first trial that left the validity domain (0: none pending).
   constexpr double kBoundaryRes = 1.0 / 1024;
@@ -746,7 +800,7 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
   auto finish = [&](StopReason r) {
     for (int i = 0; i < N; ++i) y_io[i] = y[i];
     res.reason = r;
-    res.lambda = lambda;
+    res.lambda = affine(y, lambda);
     if constexpr (Sys::kHasConstraint) {
       double scale;
       sys.constraint(y, cfg.type, res.constraint_drift, scale);
@@ -761,12 +815,17 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
 
   while (true) {
     if (res.steps >= cfg.max_steps) return finish(StopReason::MaxSteps);
-    const double remaining = cfg.lambda_max - std::fabs(lambda - lambda0);
-    if (!(remaining > 0)) return finish(StopReason::LambdaMax);
+    const double remaining = cfg.lambda_max - std::fabs(affine(y, lambda) - affine0);
+    const double lambda_res = kOwnAffine && std::isfinite(cfg.lambda_max) ? 1e-12 * cfg.lambda_max : 0.0;
+    if (!(remaining > lambda_res)) return finish(StopReason::LambdaMax);
     double hstep = h;
     bool clipped = false;
-    if (hstep >= remaining) {
-      hstep = remaining;
+    if constexpr (kOwnAffine) {
+      hmax = hmax_affine * per_affine(y);
+      hmin = cfg.step_min * per_affine(y);
+    }
+    if (hstep >= remaining * per_affine(y)) {
+      hstep = remaining * per_affine(y);
       clipped = true;
     }
     double err = 0;
@@ -789,12 +848,26 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
       }
       h = in_domain ? stepper.next_step(hstep, err, false, after_reject) : 0.5 * hstep;
       after_reject = true;
-      if (h < cfg.step_min || h <= 4 * DBL_EPSILON * std::fabs(lambda)) {
+      if (h < hmin || h <= 4 * DBL_EPSILON * std::fabs(lambda)) {
         const StopReason r = !finite ? StopReason::NotFinite
                                      : (!in_domain ? StopReason::Invalid : StopReason::StepUnderflow);
         return finish(r);
       }
       continue;
+    }
+    if constexpr (kOwnAffine) {
+      // λ_max overshot: retry with the step shortened by the secant on λ(σ) (not a rejection).
+      const double dl = std::fabs(sys.affine(y1) - sys.affine(y));
+      if (std::isfinite(cfg.lambda_max) && dl > remaining * (1.0 + 1e-12)) {
+        h = hstep * remaining / dl;
+        continue;
+      }
+      // Likewise a step longer than step_max in λ (Σ grew inside it).
+      if (dl > hmax_affine * (1.0 + 1e-12)) {
+        h = hstep * hmax_affine / dl * (1.0 - 1e-9);
+        continue;
+      }
+      clipped = dl >= remaining * (1.0 - 1e-12);
     }
     // Accepted.
     if (cfg.reproject) sys.reproject(y1, cfg.type);
@@ -808,18 +881,20 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
       if (!(std::fabs(c) <= cfg.constraint_tol * scale)) return finish(StopReason::Constraint);
     }
     ++res.steps;
-    const double lambda1 = clipped ? lambda0 + dir * cfg.lambda_max : lambda + dir * hstep;
+    const double lambda1 = !kOwnAffine && clipped ? lambda0 + dir * cfg.lambda_max : lambda + dir * hstep;
     StepAction act = StepAction::Continue;
-    if (cb) act = cb(StepView{lambda, lambda1, y, y1, dy, dy1, N, res.steps});
+    if (cb) act = cb(StepView{affine(y, lambda), affine(y1, lambda1), y, y1, dy, dy1, N, res.steps});
     for (int i = 0; i < N; ++i) {
       y[i] = y1[i];
       dy[i] = dy1[i];
     }
     lambda = lambda1;
+    set_tolerance();
     if (act == StepAction::Stop) return finish(StopReason::Callback);
     if (!sys.inside(cfg, y)) return finish(StopReason::BoundingBox);
     if (clipped) return finish(StopReason::LambdaMax);
-    if (adaptive) h = std::min(hmax, std::max(stepper.next_step(hstep, err, true, after_reject), cfg.step_min));
+    if (adaptive) h = std::min(hmax, std::max(stepper.next_step(hstep, err, true, after_reject), hmin));
+    if (!adaptive && kOwnAffine) h = std::fabs(cfg.step_size) * per_affine(y);
     if (!after_reject) h_cross = 0.0;  // two clean steps in a row: away from any boundary
     after_reject = false;
   }

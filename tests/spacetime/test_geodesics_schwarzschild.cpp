@@ -20,20 +20,35 @@ constexpr double kPi = 3.141592653589793238462643383280;
 struct AdaptiveCase {
   SolverKind kind;
   double eps;  ///< eps_abs used for the precision tests (RK2 is 2nd order: looser to stay fast)
+  bool separable = true;  ///< Carter's equations in Mino time (kerr_mino.h), else the coordinate form
 };
+/// Every adaptive integrator, each through both forms of the geodesic equation.
 const std::vector<AdaptiveCase>& adaptive_cases() {
-  static const std::vector<AdaptiveCase> c = {
-      {SolverKind::RK2, 1e-10},        {SolverKind::CashKarp45, 1e-12},      {SolverKind::Fehlberg45, 1e-12},
-      {SolverKind::DormandPrince54, 1e-12}, {SolverKind::DormandPrince853, 1e-12}, {SolverKind::BulirschStoer, 1e-12},
-  };
+  static const std::vector<AdaptiveCase> c = [] {
+    std::vector<AdaptiveCase> v;
+    for (bool separable : {false, true})
+      for (auto [kind, eps] : std::vector<std::pair<SolverKind, double>>{{SolverKind::RK2, 1e-10},
+                                                                         {SolverKind::CashKarp45, 1e-12},
+                                                                         {SolverKind::Fehlberg45, 1e-12},
+                                                                         {SolverKind::DormandPrince54, 1e-12},
+                                                                         {SolverKind::DormandPrince853, 1e-12},
+                                                                         {SolverKind::BulirschStoer, 1e-12}})
+        v.push_back({kind, eps, separable});
+    return v;
+  }();
   return c;
 }
 
-SolverConfig config(SolverKind kind, double eps) {
+std::string name(const AdaptiveCase& c) {
+  return std::string(solver_kind_name(c.kind)) + (c.separable ? " (Mino)" : " (coordinates)");
+}
+
+SolverConfig config(SolverKind kind, double eps, bool separable = true) {
   SolverConfig cfg;
   cfg.kind = kind;
   cfg.eps_abs = eps;
   cfg.max_steps = 50000000;
+  cfg.separable = separable;
   return cfg;
 }
 
@@ -79,9 +94,9 @@ TEST(SchwarzschildGeodesics, CircularPhotonOrbitStaysAtThreeM) {
       rdev = std::max(rdev, std::fabs(s.y1[1] - 3.0));
       return s.y1[3] > 2 * kPi ? StepAction::Stop : StepAction::Continue;
     };
-    const GeodesicResult r = m->integrate(config(c.kind, c.eps), GeodesicSystem::Geodesic, y, 0.0, cb);
-    EXPECT_EQ(r.reason, StopReason::Callback) << solver_kind_name(c.kind);
-    EXPECT_LT(rdev, 1e-8) << solver_kind_name(c.kind);
+    const GeodesicResult r = m->integrate(config(c.kind, c.eps, c.separable), GeodesicSystem::Geodesic, y, 0.0, cb);
+    EXPECT_EQ(r.reason, StopReason::Callback) << name(c);
+    EXPECT_LT(rdev, 1e-8) << name(c);
   }
 }
 
@@ -94,16 +109,16 @@ TEST(SchwarzschildGeodesics, CriticalImpactParameterSeparatesCaptureFromEscape) 
     for (const double sign : {-1.0, 1.0}) {
       double y[8];
       equatorial_null_ray(r0, bc * (1.0 + sign * 1e-4), y);
-      SolverConfig cfg = config(c.kind, c.kind == SolverKind::RK2 ? 1e-9 : 1e-10);
+      SolverConfig cfg = config(c.kind, c.kind == SolverKind::RK2 ? 1e-9 : 1e-10, c.separable);
       // Stop inside the photon sphere (an ingoing photon there is captured) or beyond r0.
       cfg.box_ll = Vec4{{-1e300, 2.5, -1e300, -1e300}};
       cfg.box_ur = Vec4{{1e300, r0 + 1e-9, 1e300, 1e300}};
       const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
-      EXPECT_EQ(r.reason, StopReason::BoundingBox) << solver_kind_name(c.kind);
+      EXPECT_EQ(r.reason, StopReason::BoundingBox) << name(c);
       if (sign < 0)
-        EXPECT_LT(y[1], 2.5) << solver_kind_name(c.kind) << " should be captured";
+        EXPECT_LT(y[1], 2.5) << name(c) << " should be captured";
       else
-        EXPECT_GT(y[1], r0) << solver_kind_name(c.kind) << " should escape";
+        EXPECT_GT(y[1], r0) << name(c) << " should escape";
     }
   }
 }
@@ -120,12 +135,12 @@ TEST(SchwarzschildGeodesics, RadialLightTravelTime) {
   const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{1, 0, 0}, false);
   for (const auto& c : adaptive_cases()) {
     double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
-    SolverConfig cfg = config(c.kind, c.eps);
+    SolverConfig cfg = config(c.kind, c.eps, c.separable);
     cfg.lambda_max = 24.0 / k[1];
     const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
-    EXPECT_EQ(r.reason, StopReason::LambdaMax) << solver_kind_name(c.kind);
-    EXPECT_NEAR(y[1], 30.0, 1e-9) << solver_kind_name(c.kind);
-    EXPECT_NEAR(y[0], expected, 1e-8) << solver_kind_name(c.kind);
+    EXPECT_EQ(r.reason, StopReason::LambdaMax) << name(c);
+    EXPECT_NEAR(y[1], 30.0, 1e-9) << name(c);
+    EXPECT_NEAR(y[0], expected, 1e-8) << name(c);
   }
 }
 
@@ -140,7 +155,7 @@ TEST(SchwarzschildGeodesics, CircularTimelikeOrbitPeriod) {
   const Vec4 u = local_four_velocity(m->natural_tetrad(x), Vec3{0, 0, std::sqrt(1.0 / (r0 - 2.0))});
   for (const auto& c : adaptive_cases()) {
     double y[8] = {x[0], x[1], x[2], x[3], u[0], u[1], u[2], u[3]};
-    SolverConfig cfg = config(c.kind, c.eps);
+    SolverConfig cfg = config(c.kind, c.eps, c.separable);
     cfg.type = GeodesicType::Timelike;
     // u^φ is constant on the circular orbit: one revolution takes proper time 2π/u^φ.
     cfg.lambda_max = 2 * kPi / u[3];
@@ -150,11 +165,11 @@ TEST(SchwarzschildGeodesics, CircularTimelikeOrbitPeriod) {
       return StepAction::Continue;
     };
     const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
-    EXPECT_EQ(r.reason, StopReason::LambdaMax) << solver_kind_name(c.kind);
-    EXPECT_NEAR(y[3], 2 * kPi, 1e-8) << solver_kind_name(c.kind);
-    EXPECT_NEAR(y[0], period, 1e-6) << solver_kind_name(c.kind);
-    EXPECT_LT(rdev, 1e-6) << solver_kind_name(c.kind);
-    EXPECT_LT(std::fabs(r.constraint_drift), 1e-9) << solver_kind_name(c.kind);
+    EXPECT_EQ(r.reason, StopReason::LambdaMax) << name(c);
+    EXPECT_NEAR(y[3], 2 * kPi, 1e-8) << name(c);
+    EXPECT_NEAR(y[0], period, 1e-6) << name(c);
+    EXPECT_LT(rdev, 1e-6) << name(c);
+    EXPECT_LT(std::fabs(r.constraint_drift), 1e-9) << name(c);
   }
 }
 
@@ -168,12 +183,12 @@ TEST(SchwarzschildGeodesics, WeakFieldDeflection) {
     double y[8];
     equatorial_null_ray(R, b, y);
     // RK2 needs ~tol^(-1/2) steps: 1e-7 keeps it well inside the 1% at a few 1e5 steps.
-    SolverConfig cfg = config(c.kind, c.kind == SolverKind::RK2 ? 1e-7 : 1e-10);
+    SolverConfig cfg = config(c.kind, c.kind == SolverKind::RK2 ? 1e-7 : 1e-10, c.separable);
     cfg.box_ur = Vec4{{1e300, R, 1e300, 1e300}};
     const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
-    EXPECT_EQ(r.reason, StopReason::BoundingBox) << solver_kind_name(c.kind);
+    EXPECT_EQ(r.reason, StopReason::BoundingBox) << name(c);
     const double alpha = y[3] - (kPi - std::asin(b / R) - std::asin(b / y[1]));
-    EXPECT_NEAR(alpha, 4.0 / b, 0.01 * 4.0 / b) << solver_kind_name(c.kind) << " steps " << r.steps;
+    EXPECT_NEAR(alpha, 4.0 / b, 0.01 * 4.0 / b) << name(c) << " steps " << r.steps;
   }
 }
 
@@ -183,7 +198,8 @@ TEST(SchwarzschildGeodesics, ConstraintMonitorAndReprojection) {
   auto m = make_metric("Schwarzschild");
   double y[8];
   equatorial_null_ray(30, 5.3, y);
-  SolverConfig cfg = config(SolverKind::RK4, 0);
+  // The coordinate form: Carter's equations in Mino time keep E, L, Q exactly and drift far less.
+  SolverConfig cfg = config(SolverKind::RK4, 0, false);
   cfg.step_ctrl = false;
   cfg.step_size = 0.5;
   cfg.constraint_tol = 1e-6;
@@ -210,13 +226,13 @@ TEST(SchwarzschildGeodesics, HorizonStopsTheRay) {
   for (const auto& c : adaptive_cases()) {
     double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
     const double eps = c.kind == SolverKind::RK2 ? 1e-6 : 1e-8;
-    SolverConfig cfg = config(c.kind, eps);
+    SolverConfig cfg = config(c.kind, eps, c.separable);
     cfg.eps_rel = eps;  // k^t diverges at the horizon: a relative tolerance lets the steps follow
     cfg.max_steps = 100000;
     const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
     EXPECT_TRUE(r.reason == StopReason::Invalid || r.reason == StopReason::StepUnderflow)
-        << solver_kind_name(c.kind) << ": " << stop_reason_name(r.reason);
+        << name(c) << ": " << stop_reason_name(r.reason);
     EXPECT_GT(y[1], 2.0);
-    EXPECT_LT(y[1], 2.0 + 1e-3) << solver_kind_name(c.kind);
+    EXPECT_LT(y[1], 2.0 + 1e-3) << name(c);
   }
 }

@@ -180,7 +180,12 @@ KerrConstants kerr_constants(const Metric& m, double a, const double* y) {
 
 }  // namespace
 
-TEST(KerrBL, ConstantsOfMotionAlongCloseLightRay) {
+namespace {
+
+/// separable: Carter's equations in Mino time (kerr_mino.h), where E, L, Q are parameters of the
+/// integration, so this checks the conversion back to (x, k) and the null constraint kept by the
+/// integrated d(1/r)/dσ and d(cos θ)/dσ; else the coordinate form, where all four drift.
+void constants_along_close_light_ray(bool separable) {
   const double a = 0.9;
   auto m = make_metric("KerrBL", {{"mass", 1.0}, {"angmom", a}});
   const Vec4 x0{{0.0, 20.0, 1.2, 0.0}};
@@ -189,6 +194,7 @@ TEST(KerrBL, ConstantsOfMotionAlongCloseLightRay) {
   cfg.kind = SolverKind::CashKarp45;
   cfg.eps_abs = 1e-12;
   cfg.max_steps = 200000;
+  cfg.separable = separable;
   // Find (deterministically) an inward ray that passes r < 4 and escapes again.
   bool tested = false;
   for (double frac = 0.40; frac > 0.05 && !tested; frac -= 0.01) {
@@ -209,9 +215,9 @@ TEST(KerrBL, ConstantsOfMotionAlongCloseLightRay) {
     const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
     if (r.reason != StopReason::Callback || rmin >= 4.0) continue;  // captured, or not close enough
     tested = true;
-    std::printf("KerrBL a=0.9 ray: frac %.2f, r_min %.4f, %d steps; max rel drift E %.2g L %.2g Q %.2g, "
+    std::printf("KerrBL a=0.9 ray (%s): frac %.2f, r_min %.4f, %d steps; max rel drift E %.2g L %.2g Q %.2g, "
                 "|g(k,k)|/E^2 %.2g (Q0 = %.4g)\n",
-                frac, rmin, r.steps, dE, dL, dQ, dC, c0.Q);
+                separable ? "Mino" : "coordinates", frac, rmin, r.steps, dE, dL, dQ, dC, c0.Q);
     EXPECT_GT(std::fabs(c0.Q), 1.0);  // a genuinely non-equatorial ray
     EXPECT_LE(dE, 1e-9);
     EXPECT_LE(dL, 1e-9);
@@ -221,11 +227,19 @@ TEST(KerrBL, ConstantsOfMotionAlongCloseLightRay) {
   EXPECT_TRUE(tested) << "no escaping ray with r_min < 4 found";
 }
 
+}  // namespace
+
+TEST(KerrBL, ConstantsOfMotionAlongCloseLightRay) {
+  constants_along_close_light_ray(false);
+  constants_along_close_light_ray(true);
+}
+
 namespace {
 
 /// Integrates the equatorial circular photon orbit at r_ph for one revolution and returns the
 /// largest |r − r_ph| and |θ − π/2|.
-void circular_photon_orbit(double a, bool prograde, double& dr_max, double& dth_max, StopReason& reason) {
+void circular_photon_orbit(double a, bool prograde, bool separable, double& dr_max, double& dth_max,
+                           StopReason& reason) {
   auto m = make_metric("KerrBL", {{"mass", 1.0}, {"angmom", a}});
   // Bardeen, Press & Teukolsky (1972) eq. (2.18): r_ph = 2M(1 + cos(2/3 arccos(∓a/M))).
   const double r_ph = 2.0 * (1.0 + std::cos(2.0 / 3.0 * std::acos(prograde ? -a : a)));
@@ -239,6 +253,7 @@ void circular_photon_orbit(double a, bool prograde, double& dr_max, double& dth_
   SolverConfig cfg;
   cfg.eps_abs = 1e-12;
   cfg.max_steps = 100000;
+  cfg.separable = separable;
   dr_max = dth_max = 0;
   auto cb = [&](const StepView& s) {
     dr_max = std::max(dr_max, std::fabs(s.y1[1] - r_ph));
@@ -251,12 +266,13 @@ void circular_photon_orbit(double a, bool prograde, double& dr_max, double& dth_
 }  // namespace
 
 TEST(KerrBL, CircularPhotonOrbitsStayCircular) {
+  for (bool separable : {false, true})
   for (bool prograde : {true, false}) {
     double dr = 0, dth = 0;
     StopReason reason{};
-    circular_photon_orbit(0.9, prograde, dr, dth, reason);
-    std::printf("KerrBL a=0.9 %s photon orbit: max |r - r_ph| = %.3g over one revolution\n",
-                prograde ? "prograde" : "retrograde", dr);
+    circular_photon_orbit(0.9, prograde, separable, dr, dth, reason);
+    std::printf("KerrBL a=0.9 %s photon orbit (%s): max |r - r_ph| = %.3g over one revolution\n",
+                prograde ? "prograde" : "retrograde", separable ? "Mino" : "coordinates", dr);
     EXPECT_EQ(reason, StopReason::Callback);
     EXPECT_LT(dr, 1e-8);
     EXPECT_LT(dth, 1e-12);

@@ -2,6 +2,7 @@
 //   ds² = −(1 − r_s/r) dt² + dr²/(1 − r_s/r) + r² (dθ² + sin²θ dφ²),  r_s = 2M  (G = c = 1).
 // Christoffel symbols and natural tetrad: Müller & Grave, Catalogue of Spacetimes
 // (arXiv:0904.4184) §2.2.1; tetrad = paper eq. (2).
+#include "spacetime/kerr_mino.h"
 #include "spacetime/metric_crtp.h"
 
 namespace geovis {
@@ -68,6 +69,17 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
   /// double is a multiple of π), so the axis test needs no sine.
   bool is_valid(const Vec4& x) const override {
     return x[1] > r_break_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;
+  }
+
+  /// Geodesics (not the transport or Jacobi systems) go through Carter's separated equations in
+  /// Mino time (spacetime/kerr_mino.h) unless cfg.separable is off; the coordinate form stays for
+  /// the other systems and for a start outside the validity domain (which it reports).
+  GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y, double lambda0,
+                           StepCallback cb) const override {
+    if (sys != GeodesicSystem::Geodesic || !cfg.separable || !is_valid(Vec4{{y[0], y[1], y[2], y[3]}}))
+      return MetricCRTP::integrate(cfg, sys, y, lambda0, cb);
+    auto accel = [this](const Vec4& x, const Vec4& k, Vec4& acc) { accel_closed(x, k, acc); };
+    return integrate_kerr_mino(0.5 * rs_, 0.0, r_break_, accel, cfg, y, lambda0, cb);
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {

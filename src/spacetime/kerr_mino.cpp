@@ -1,0 +1,82 @@
+// Kerr geodesics in Mino time: constants of motion and the conversions between Boyer–Lindquist
+// (x, k) and the Mino state (formulas in kerr_mino.h).
+#include "spacetime/kerr_mino.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace geovis {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+KerrMinoConstants kerr_mino_constants(double M, double a, const Vec4& x, const Vec4& k, double mu2) {
+  const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+  const double a2 = a * a, st2 = st * st, ct2 = ct * ct;
+  const double sigma = r * r + a2 * ct2;
+  const double u = 2.0 * M * r / sigma;
+  const double gtt = u - 1.0, gtp = -a * st2 * u, gpp = (r * r + a2 + a2 * st2 * u) * st2;
+  KerrMinoConstants c;
+  c.M = M;
+  c.a = a;
+  c.mu2 = mu2;
+  c.E = -(gtt * k[0] + gtp * k[3]);
+  c.L = gtp * k[0] + gpp * k[3];
+  const double ptheta = sigma * k[2];
+  // Carter constant (Carter 1968): Q = p_θ² + cos²θ (a²(μ² − E²) + L²/sin²θ).
+  auto carter = [&] { return ptheta * ptheta + ct2 * (a2 * (mu2 - c.E * c.E) + c.L * c.L / st2); };
+  c.Q = carter();
+  // Closest approach to the axis below 1e-6 rad: through the axis (kerr_mino.h).
+  if (std::fabs(c.L) <= 1e-6 * std::sqrt(std::fabs(c.Q) + a2 * c.E * c.E + c.L * c.L)) {
+    c.L = 0.0;
+    c.Q = carter();
+  }
+  c.derive();
+  return c;
+}
+
+void kerr_mino_from_bl(const KerrMinoConstants& c, const Vec4& x, const Vec4& k, double lambda, double* y) {
+  using I = KerrMinoRHS;
+  const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
+  const double sigma = r * r + c.a2 * ct * ct;
+  y[I::T] = x[0];
+  y[I::W] = 1.0 / r;
+  y[I::Z] = ct;
+  y[I::PHI] = x[3];
+  y[I::LAM] = lambda;
+  y[I::DW] = -sigma * k[1] / (r * r);  // dw/dσ = −(dr/dσ)/r², dr/dσ = Σ k^r
+  y[I::DZ] = -st * sigma * k[2];       // dz/dσ = −sin θ Σ k^θ
+}
+
+ThetaBranch ThetaBranch::through(double theta) {
+  const double tw = std::remainder(theta, 2.0 * kPi);  // in [−π, π]
+  ThetaBranch b;
+  b.sign = tw < 0.0 ? -1.0 : 1.0;
+  b.offset = theta - tw;
+  return b;
+}
+
+void ThetaBranch::cross_axis(double z) {
+  // North pole (acos z → 0): θ = offset + s·acos z passes through offset. South pole
+  // (acos z → π): it passes offset + sπ, which the new branch must keep.
+  if (z < 0.0) offset += 2.0 * sign * kPi;
+  sign = -sign;
+}
+
+void kerr_mino_to_bl(const KerrMinoConstants& c, const double* y, const double* dy, const ThetaBranch& b, Vec4& x,
+                     Vec4& k) {
+  using I = KerrMinoRHS;
+  const double w = y[I::W], z = std::clamp(y[I::Z], -1.0, 1.0);
+  const double r = 1.0 / w;
+  const double s_abs = std::sqrt(std::max(0.0, (1.0 - z) * (1.0 + z)));  // |sin θ|
+  const double isig = 1.0 / (r * r + c.a2 * z * z);
+  // dθ/dσ = −s·z'/|sin θ|. For L = 0, Z = (1 − z²)(Q + Az²), so |z'|/|sin θ| = √(Q + Az²): used
+  // instead, since near the axis, which such a ray passes, 1 − z² has lost its leading digits.
+  const double dth = c.axis ? -b.sign * std::copysign(std::sqrt(std::max(0.0, c.Q + c.A * z * z)), y[I::DZ])
+                            : -b.sign * y[I::DZ] / s_abs;
+  x = Vec4{{y[I::T], r, b.offset + b.sign * std::acos(z), y[I::PHI]}};
+  k = Vec4{{dy[I::T] * isig, -y[I::DW] * r * r * isig, dth * isig, dy[I::PHI] * isig}};
+}
+
+}  // namespace geovis

@@ -1,0 +1,274 @@
+// Geodesics of the Kerr family (KerrBL, and Schwarzschild as a = 0) integrated through Carter's
+// separated equations in Mino time instead of the second-order geodesic equation.
+//
+// With the constants of motion E = −k_t, L = k_φ, the Carter constant Q and μ² = −g(k,k), and
+// Mino time σ (dλ = Σ dσ; Mino, Phys. Rev. D 67 (2003) 084027), a Kerr geodesic obeys
+// (Carter, Phys. Rev. 174 (1968) 1559; Misner–Thorne–Wheeler eq. 33.32; Chandrasekhar, "The
+// Mathematical Theory of Black Holes" §62):
+//   (dr/dσ)² = R(r) = P² − Δ(μ² r² + (L − aE)² + Q),      P = E(r² + a²) − aL,
+//   (dθ/dσ)² = Θ(θ) = Q − cos²θ (a²(μ² − E²) + L²/sin²θ),
+//   dφ/dσ = aP/Δ − aE + L/sin²θ,   dt/dσ = (r² + a²)P/Δ − a(aE sin²θ − L),   dλ/dσ = Σ.
+// We integrate the radial and polar motion in the second-order form d²q/dσ² = ½ dV/dq, which has
+// no square roots and no sign switches at turning points, in the variables w = 1/r and z = cos θ:
+//   (dw/dσ)² = W(w) = (E + c w²)² − (1 − 2Mw + a²w²)(μ² + K w²),   c = a²E − aL, K = (L − aE)² + Q,
+//   (dz/dσ)² = Z(z) = Q − (Q + L² − A) z² − A z⁴,                    A = a²(E² − μ²),
+// (W = R/r⁴, Z = sin²θ Θ) so that
+//   w'' = ½ W'(w) = 2cw(E + cw²) + (M − a²w)(μ² + Kw²) − Kw(1 − 2Mw + a²w²),
+//   z'' = ½ Z'(z) = −(Q + L² − A) z − 2A z³,
+//   t'  = (1 + a²w²)(E + cw²) / (w² D) + aL − a²E(1 − z²),   D = 1 − 2Mw + a²w² = Δ/r²,
+//   φ'  = a(E + cw²)/D − aE + L/(1 − z²),   λ' = 1/w² + a²z².
+// Both second-order equations are polynomial, the right-hand side needs no sine, cosine or square
+// root and one division per evaluation; E, L and Q are exact by construction, and the light-ray
+// escape to r = ∞ is w → 0 at finite σ, so large radii cost no more steps than small ones.
+//
+// The integrated state is y = (w, z, w', z', t, φ, λ): the right-hand side reads only the first
+// four, so the Runge–Kutta stages sum only those (rk_detail::stage, kCoupled); every accepted step is handed to the
+// caller in Boyer–Lindquist (x, k) with dk/dλ from the metric's acceleration, so callers (the
+// renderer's segment tests, the data filters) see exactly what the coordinate integration gives.
+// Rays through the polar axis (L = 0: z turns at ±1) continue with θ < 0 (through the north pole)
+// or θ > π (south) at the same φ, as the coordinate integration does: θ = θ_off + s·acos z with the
+// branch (s, θ_off) switched at every passage. The ray's closest approach to the axis is
+// θ_min ≈ |L|/√(Q + a²E² + L²); below 1e-6 rad, 1 − z² = sin²θ is no longer resolved in double
+// precision near the turning point, so L is set to 0 there (the ray passes through the axis
+// instead of 1e-6 rad beside it: a displacement of r·1e-6 near the pole, where the coordinate
+// form, with k^φ ∝ 1/sin²θ ~ 1e12, fares no better).
+#pragma once
+
+#include <cmath>
+
+#include "spacetime/integrators.h"
+
+namespace geovis {
+
+/// The constants of one Kerr geodesic and the derived polynomial coefficients (file comment).
+struct KerrMinoConstants {
+  double M = 1, a = 0, a2 = 0;  ///< mass and spin parameter of the hole
+  double E = 0, L = 0, Q = 0, mu2 = 0;
+  double c = 0, K = 0, A = 0, B = 0;  ///< c = a²E − aL, K = (L − aE)² + Q, A = a²(E² − μ²), B = Q + L² − A
+  bool axis = false;                  ///< L == 0: the ray can pass through the polar axis
+
+  void derive() {
+    a2 = a * a;
+    c = a2 * E - a * L;
+    K = (L - a * E) * (L - a * E) + Q;
+    A = a2 * (E * E - mu2);
+    B = Q + L * L - A;
+    axis = L == 0.0;
+  }
+};
+
+/// Right-hand side of the Mino-time system; state y = (w, z, w', z', t, φ, λ).
+struct KerrMinoRHS {
+  static constexpr int N = 7;
+  static constexpr int kCoupled = 4;  ///< t, φ, λ are quadratures: no derivative depends on them
+  enum { W = 0, Z = 1, DW = 2, DZ = 3, T = 4, PHI = 5, LAM = 6 };
+  const KerrMinoConstants& k;
+
+  GEOVIS_HOT_INLINE void operator()(const double* y, double* dy) const {
+    const double w = y[W], z = y[Z];
+    const double w2 = w * w, z2 = z * z;
+    const double D = 1.0 - 2.0 * k.M * w + k.a2 * w2;  // Δ/r²
+    const double P = k.E + k.c * w2;                   // P/r²
+    const double muK = k.mu2 + k.K * w2;
+    const double s2 = 1.0 - z2;                        // sin²θ
+    // One division: 1/(w² D s²) gives 1/D, 1/w² and 1/sin²θ.
+    double inv = 1.0, iD, iw2, is2;
+    if (k.axis) {
+      inv = 1.0 / (w2 * D);
+      iD = inv * w2;
+      iw2 = inv * D;
+      is2 = 0.0;  // multiplies L = 0
+    } else {
+      inv = 1.0 / (w2 * D * s2);
+      iD = inv * w2 * s2;
+      iw2 = inv * D * s2;
+      is2 = inv * w2 * D;
+    }
+    dy[T] = (1.0 + k.a2 * w2) * P * iD * iw2 + k.a * k.L - k.a2 * k.E * s2;
+    dy[W] = y[DW];
+    dy[Z] = y[DZ];
+    dy[PHI] = k.a * P * iD - k.a * k.E + k.L * is2;
+    dy[LAM] = iw2 + k.a2 * z2;
+    dy[DW] = 2.0 * k.c * w * P + (k.M - k.a2 * w) * muK - k.K * w * D;
+    dy[DZ] = -(k.B + 2.0 * k.A * z2) * z;
+  }
+};
+
+/// Branch of θ = offset + sign·acos z (file comment: passages through the polar axis).
+struct ThetaBranch {
+  double sign = 1, offset = 0;
+  /// The branch through θ (any real θ with sin θ ≠ 0).
+  static ThetaBranch through(double theta);
+  /// Crossing the axis at z = ±1: θ continues through 0 (mod 2π) or π.
+  void cross_axis(double z);
+};
+/// The Mino system as seen by the integration driver (integrators.h): validity (outside the
+/// horizon break radius, r finite), bounding box and the constraint in Boyer–Lindquist terms.
+struct KerrMinoSystem {
+  static constexpr int N = KerrMinoRHS::N;
+  static constexpr int kCoupled = KerrMinoRHS::kCoupled;
+  static constexpr bool kHasConstraint = true;
+  using I = KerrMinoRHS;
+  const KerrMinoConstants& k;
+  KerrMinoRHS f;
+  double w_break;  ///< 1/r_break: the horizon margin of the metric
+
+  GEOVIS_HOT_INLINE void operator()(const double* y, double* dy) const { f(y, dy); }
+  /// λ of state y (the driver integrates in σ).
+  double affine(const double* y) const { return y[I::LAM]; }
+  /// dσ/dλ = 1/Σ at y: converts the caller's step sizes, given in λ.
+  double param_per_affine(const double* y) const {
+    const double w = y[I::W], z = y[I::Z];
+    return w * w / (1.0 + k.a2 * z * z * w * w);
+  }
+  /// Tolerance scales (ErrorScale): an error δw is an error δr = δw/w², δz one of δθ = δz/|sin θ|,
+  /// δw' one of δk^r = δw'/(w²Σ), δz' one of δk^θ = δz'/(|sin θ| Σ); t, φ, λ are themselves. So
+  /// eps_abs bounds the local error of the Boyer–Lindquist x and k as in the coordinate form
+  /// (|sin θ| is floored at 1e-3 where the axis makes δθ meaningless).
+  void tolerance_scale(const double* y, double* s) const {
+    const double w2 = y[I::W] * y[I::W], z2 = y[I::Z] * y[I::Z];
+    const double w2sigma = 1.0 + k.a2 * z2 * w2;  // w² Σ
+    const double st = std::sqrt(std::max(1.0 - z2, 1e-6));
+    s[I::T] = s[I::PHI] = s[I::LAM] = 1.0;
+    s[I::W] = w2;
+    s[I::Z] = st;
+    s[I::DW] = w2sigma;
+    s[I::DZ] = st * w2sigma / w2;
+  }
+  bool valid(const double* y) const {
+    const double w = y[I::W], z = y[I::Z];
+    if (!(w > 0.0 && w < w_break)) return false;  // w ≤ 0: beyond r = ∞
+    // On the axis branch z oscillates through ±1 with amplitude 1 up to the integration error
+    // (z'' is smooth there; the BL view clamps z), so only a gross overshoot is invalid.
+    return k.axis ? std::fabs(z) <= 1.0 + 1e-3 : std::fabs(z) < 1.0;
+  }
+  /// The scene's bounding box in BL coordinates: r_min ≤ r ≤ r_max as w_lo ≤ w ≤ w_hi (set by
+  /// set_box), θ only when the box limits it (θ on the current branch, see ThetaBranch).
+  double w_lo = 0, w_hi = INFINITY;
+  bool theta_boxed = false;
+  const ThetaBranch* branch = nullptr;
+  void set_box(const SolverConfig& c, const ThetaBranch& b) {
+    w_lo = c.box_ur[1] > 0 && std::isfinite(1.0 / c.box_ur[1]) ? 1.0 / c.box_ur[1] : 0.0;
+    w_hi = c.box_ll[1] > 0 ? 1.0 / c.box_ll[1] : INFINITY;
+    theta_boxed = c.box_ll[2] > -1e6 || c.box_ur[2] < 1e6;
+    branch = &b;
+  }
+  bool inside(const SolverConfig& c, const double* y) const {
+    const double w = y[I::W];
+    if (!(w >= w_lo && w <= w_hi && y[I::T] >= c.box_ll[0] && y[I::T] <= c.box_ur[0] &&
+          y[I::PHI] >= c.box_ll[3] && y[I::PHI] <= c.box_ur[3]))
+      return false;
+    if (!theta_boxed) return true;
+    const double th = branch->offset + branch->sign * std::acos(std::clamp(y[I::Z], -1.0, 1.0));
+    return th >= c.box_ll[2] && th <= c.box_ur[2];
+  }
+  /// value = g(k,k) + μ² of the Boyer–Lindquist tangent this state stands for,
+  ///   Σ (g(k,k) + μ²) = (w'² − W)/(w² D) + (z'² − Z)/(1 − z²),
+  /// scale = the size of the terms that cancel (k's Euclidean size in the frame of the
+  /// zero-angular-momentum observer, as MetricSystem::constraint): their absolute values.
+  void constraint(const double* y, GeodesicType, double& value, double& scale) const {
+    const double w = y[I::W], z = y[I::Z], dw = y[I::DW], dz = y[I::DZ];
+    const double w2 = w * w, z2 = z * z;
+    const double D = 1.0 - 2.0 * k.M * w + k.a2 * w2, P = k.E + k.c * w2;
+    const double Wv = P * P - D * (k.mu2 + k.K * w2);
+    const double Zv = k.Q - k.B * z2 - k.A * z2 * z2;
+    const double s2 = std::max(1.0 - z2, 1e-300);
+    const double sigma = 1.0 / w2 + k.a2 * z2;
+    const double ir = 1.0 / (w2 * std::fabs(D));
+    value = ((dw * dw - Wv) * ir + (dz * dz - Zv) / s2) / sigma;
+    const double ang = k.a * k.E * std::sqrt(s2) - k.L / std::sqrt(s2);
+    scale = ((dw * dw + P * P + std::fabs(D) * (k.mu2 + k.K * w2)) * ir +
+             (dz * dz + std::fabs(k.Q) + std::fabs(k.B) * z2 + std::fabs(k.A) * z2 * z2) / s2 + ang * ang) /
+                sigma +
+            k.mu2;
+  }
+  /// Re-projection onto the first integrals: |w'| = √W, |z'| = √Z (signs kept).
+  void reproject(double* y, GeodesicType) const {
+    const double w = y[I::W], z = y[I::Z], w2 = w * w, z2 = z * z;
+    const double P = k.E + k.c * w2;
+    const double Wv = P * P - (1.0 - 2.0 * k.M * w + k.a2 * w2) * (k.mu2 + k.K * w2);
+    const double Zv = k.Q - k.B * z2 - k.A * z2 * z2;
+    if (Wv >= 0.0) y[I::DW] = std::copysign(std::sqrt(Wv), y[I::DW]);
+    if (Zv >= 0.0) y[I::DZ] = std::copysign(std::sqrt(Zv), y[I::DZ]);
+  }
+};
+
+/// Constants of the Kerr geodesic through BL point x with tangent k (M, a of the hole); mu2 =
+/// −g(k,k) target. k may be past-directed (E < 0): the equations are even in (E, L, k).
+KerrMinoConstants kerr_mino_constants(double M, double a, const Vec4& x, const Vec4& k, double mu2);
+/// BL (x, k) → Mino state (w, z, w', z', t, φ, λ).
+void kerr_mino_from_bl(const KerrMinoConstants& c, const Vec4& x, const Vec4& k, double lambda, double* y);
+/// Mino state and its derivative → BL (x, k) on θ branch b.
+void kerr_mino_to_bl(const KerrMinoConstants& c, const double* y, const double* dy, const ThetaBranch& b, Vec4& x,
+                     Vec4& k);
+
+/// Integrates a Kerr (a = 0: Schwarzschild) geodesic given in Boyer–Lindquist (x, k) =
+/// y_io[0..7] in Mino time and reports it in BL terms: same SolverConfig meaning (tolerances apply
+/// to the Mino state; step sizes, λ_max and the box are in λ and BL coordinates), same stop
+/// reasons, same StepView layout (dim 8, dy = (k, dk/dλ)). `accel(x, k, a)` is the metric's
+/// geodesic acceleration (for dk/dλ at the step ends only); r_break its horizon break radius.
+template <class Accel>
+GeodesicResult integrate_kerr_mino(double M, double a, double r_break, const Accel& accel, const SolverConfig& cfg,
+                                   double* y_io, double lambda0, StepCallback cb) {
+  const Vec4 x0{{y_io[0], y_io[1], y_io[2], y_io[3]}};
+  const Vec4 k0{{y_io[4], y_io[5], y_io[6], y_io[7]}};
+  const double mu2 = -constraint_target(cfg.type);
+  const KerrMinoConstants c = kerr_mino_constants(M, a, x0, k0, mu2);
+  KerrMinoSystem sys{c, KerrMinoRHS{c}, 1.0 / r_break};
+  double y[KerrMinoRHS::N];
+  kerr_mino_from_bl(c, x0, k0, lambda0, y);
+  ThetaBranch branch = ThetaBranch::through(x0[2]);
+  sys.set_box(cfg, branch);
+  // A turning point of z at the axis (L = 0) inside step s: the ray went through the pole.
+  auto track_axis = [&](const StepView& s) {
+    using I = KerrMinoRHS;
+    if (c.axis && s.y0[I::DZ] * s.y1[I::DZ] < 0.0 && s.y1[I::Z] * s.y1[I::DZ] < 0.0) branch.cross_axis(s.y1[I::Z]);
+  };
+
+  // BL view of the previous step end (the start of the next step).
+  double bl0[8], bl1[8], dbl0[8], dbl1[8];
+  bool have0 = false;
+  auto to_bl = [&](const double* ym, const double* dym, double* bl, double* dbl) {
+    Vec4 x, kk, acc;
+    kerr_mino_to_bl(c, ym, dym, branch, x, kk);
+    accel(x, kk, acc);
+    for (int i = 0; i < 4; ++i) {
+      bl[i] = x[i];
+      bl[4 + i] = kk[i];
+      dbl[i] = kk[i];
+      dbl[4 + i] = acc[i];
+    }
+  };
+  auto on_step = [&](const StepView& s) -> StepAction {
+    if (!have0) to_bl(s.y0, s.dy0, bl0, dbl0);
+    track_axis(s);
+    to_bl(s.y1, s.dy1, bl1, dbl1);
+    StepAction act = StepAction::Continue;
+    if (cb) act = cb(StepView{s.lambda0, s.lambda1, bl0, bl1, dbl0, dbl1, 8, s.step_index});
+    for (int i = 0; i < 8; ++i) {
+      bl0[i] = bl1[i];
+      dbl0[i] = dbl1[i];
+    }
+    have0 = true;
+    return act;
+  };
+  auto axis_only = [&](const StepView& s) {
+    track_axis(s);
+    return StepAction::Continue;
+  };
+  // Without a caller's callback only the axis passages need watching (the BL view is not built).
+  const GeodesicResult res = cb   ? integrate_dispatch(sys, cfg, y, lambda0, on_step)
+                             : c.axis ? integrate_dispatch(sys, cfg, y, lambda0, axis_only)
+                                      : integrate_dispatch(sys, cfg, y, lambda0, StepCallback{});
+  double dy[KerrMinoRHS::N];
+  sys(y, dy);
+  Vec4 x, kk;
+  kerr_mino_to_bl(c, y, dy, branch, x, kk);
+  for (int i = 0; i < 4; ++i) {
+    y_io[i] = x[i];
+    y_io[4 + i] = kk[i];
+  }
+  return res;
+}
+
+}  // namespace geovis
