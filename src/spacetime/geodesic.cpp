@@ -54,6 +54,8 @@ const std::vector<SolverInfo>& solver_names() {
       {"DOP853", SolverKind::DormandPrince853, "Dormand-Prince 8(5,3) (Hairer's DOP853)"},
       {"DP853", SolverKind::DormandPrince853, "Dormand-Prince 8(5,3) (Hairer's DOP853)"},
       {"BulirschStoer", SolverKind::BulirschStoer, "Gragg-Bulirsch-Stoer extrapolation"},
+      {"RKN86", SolverKind::RungeKuttaNystrom86,
+       "Runge-Kutta-Nystrom 8(6) (Dormand, El-Mikkawy & Prince); KerrBL and Schwarzschild geodesics only"},
       // Motion4D full names (catalogue §13).
       {"Runge-Kutta (fourth order)", SolverKind::RK4, "classical 4th-order Runge-Kutta"},
       {"Bulirsch-Stoer", SolverKind::BulirschStoer, "Bulirsch-Stoer extrapolation"},
@@ -91,6 +93,7 @@ const char* solver_kind_name(SolverKind k) {
     case SolverKind::DormandPrince54: return "DormandPrince54";
     case SolverKind::DormandPrince853: return "DOP853";
     case SolverKind::BulirschStoer: return "BulirschStoer";
+    case SolverKind::RungeKuttaNystrom86: return "RKN86";
   }
   return "?";
 }
@@ -104,6 +107,7 @@ int solver_order(SolverKind k) {
     case SolverKind::DormandPrince54: return 5;
     case SolverKind::DormandPrince853: return 8;
     case SolverKind::BulirschStoer: return 8;
+    case SolverKind::RungeKuttaNystrom86: return 8;
   }
   return 0;
 }

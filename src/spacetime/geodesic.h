@@ -32,6 +32,7 @@ enum class SolverKind {
   DormandPrince54,  ///< Dormand & Prince (1980) 5(4), FSAL
   DormandPrince853, ///< Hairer's DOP853: 8th order, 5th and 3rd order error estimate
   BulirschStoer,    ///< Gragg-Bulirsch-Stoer extrapolation with modified midpoint
+  RungeKuttaNystrom86,  ///< Dormand-El-Mikkawy-Prince RKN 8(6): y'' = f(y) only (separable Kerr equations)
 };
 
 struct SolverInfo {

@@ -12,6 +12,9 @@
 //   DP54       Dormand & Prince, J. Comput. Appl. Math. 6 (1980) 19; HNW I §II.5, FSAL
 //   DOP853     Hairer's DOP853 (HNW I §II.10, code dop853.f): 8th order with the combined 5th/3rd
 //              order error estimator err = e5² / sqrt(e5² + 0.01 e3²)
+//   RKN86      Runge–Kutta–Nyström 8(6) of Dormand, El-Mikkawy & Prince (IMA J. Numer. Anal. 7
+//              (1987) 235/423; HNW I §II.14): for y'' = f(y) with quadratures q' = g(y) only
+//              (Carter's equations in Mino time, kerr_mino.h); 9 stages, the last one FSAL
 //   BS         Gragg–Bulirsch–Stoer: modified midpoint rule with Gragg's smoothing step, polynomial
 //              (Aitken–Neville) extrapolation in h², error from the last two entries of the
 //              extrapolation table, order and step size selection by work per unit step (HNW I
@@ -104,8 +107,9 @@ struct TransportRHS {
 /// inflate its own tolerance with it (test BlowUpStopsBeforeTheSingularity).
 ///
 /// A system whose variables are not the coordinates (Mino state, kerr_mino.h) gives per-component
-/// scales s_i so that the tolerance keeps its meaning in coordinates, D_i = eps_abs·s_i +
-/// eps_rel·|y0_i|; the driver then sets `inv` to the N values 1/D_i at the start of the step.
+/// scales s_i (as 1/s_i) so that the tolerance keeps its meaning in coordinates, D_i =
+/// eps_abs·s_i + eps_rel·|y0_i|; the driver then sets `inv` to the N values 1/D_i at the start
+/// of the step.
 struct ErrorScale {
   double eps_abs = 0, eps_rel = 0;
   const double* inv = nullptr;  ///< per-component 1/D_i, or null: D_i = eps_abs + eps_rel·|y0_i|
@@ -224,6 +228,19 @@ inline double root_q(double x) {
     for (int it = 0; it < 4; ++it) {
       const double y2 = y * y;
       y = y * (6.0 - x * (y2 * y2 * y)) * 0.2;
+    }
+    return 1.0 / y;
+  } else if constexpr (q == 7) {
+    // err^(1/7) for RKN86, as q = 5: y = x^(−1/7), y ← y (8 − x y⁷)/7.
+    constexpr std::int64_t kOne = 0x3FF0000000000000;
+    std::int64_t i;
+    std::memcpy(&i, &x, sizeof i);
+    i = kOne - (i - kOne) / 7;
+    double y;
+    std::memcpy(&y, &i, sizeof y);
+    for (int it = 0; it < 4; ++it) {
+      const double y2 = y * y, y3 = y2 * y;
+      y = y * (8.0 - x * (y3 * y3 * y)) * (1.0 / 7.0);
     }
     return 1.0 / y;
   } else if constexpr (q == 1) {
@@ -481,6 +498,121 @@ struct DOP853 {
   StepController<kErrExp> control;
 };
 
+// ---- Runge–Kutta–Nyström -------------------------------------------------------------------------
+
+/// Number P of position components of a system with Nyström structure — state (q[P], q'[P],
+/// quadratures), f giving q'' and the quadratures' derivatives from q alone — declared as
+/// `static constexpr int kNystromPositions`; 0 when the system has none.
+template <class F>
+constexpr int nystrom_positions() {
+  if constexpr (requires { F::kNystromPositions; }) return F::kNystromPositions;
+  return 0;
+}
+
+/// Dormand, El-Mikkawy & Prince RKN 8(6) (IMA J. Numer. Anal. 7 (1987) 423; the coefficients as
+/// tabulated in GMAT's DormandElMikkawyPrince68): nodes c, position matrix ā (row sums c²/2),
+/// position weights b̄ (8th order), velocity weights b (8th order; a symmetric 8-point quadrature
+/// on the nodes), and the differences to the embedded 6th-order weights, ep = b̄ − b̄̂, ev = b − b̂.
+/// The last stage is evaluated at the new position (ā[8] = b̄): first same as last.
+struct RKN86Tableau {
+  static constexpr int S = 9;
+  static constexpr double c[9] = {0.0, 1.0 / 20, 1.0 / 10, 3.0 / 10, 1.0 / 2, 7.0 / 10, 9.0 / 10, 1.0, 1.0};
+  static constexpr double bp[9] = {223.0 / 7938,  0.0, 1175.0 / 8064,   925.0 / 6048, 41.0 / 448,
+                                   925.0 / 14112, 1175.0 / 72576, 0.0, 0.0};
+  static constexpr double a[9][9] = {
+      {},
+      {1.0 / 800},
+      {1.0 / 600, 1.0 / 300},
+      {9.0 / 200, -9.0 / 100, 9.0 / 100},
+      {-66701.0 / 197352, 28325.0 / 32892, -2665.0 / 5482, 2170.0 / 24669},
+      {227015747.0 / 304251000, -54897451.0 / 30425100, 12942349.0 / 10141700, -9499.0 / 304251, 539.0 / 9250},
+      {-1131891597.0 / 901789000, 41964921.0 / 12882700, -6663147.0 / 3220675, 270954.0 / 644135,
+       -108.0 / 5875, 114.0 / 1645},
+      {13836959.0 / 3667458, -17731450.0 / 1833729, 1063919505.0 / 156478208, -33213845.0 / 39119552,
+       13335.0 / 28544, -705.0 / 14272, 1645.0 / 57088},
+      {bp[0], bp[1], bp[2], bp[3], bp[4], bp[5], bp[6], bp[7]}};
+  static constexpr double bv[9] = {223.0 / 7938,   0.0, 5875.0 / 36288, 4625.0 / 21168, 41.0 / 224,
+                                   4625.0 / 21168, 5875.0 / 36288, 223.0 / 7938,  0.0};
+  static constexpr double ep[9] = {bp[0] - 7987313.0 / 109941300, 0.0, bp[2] - 1610737.0 / 44674560,
+                                   bp[3] - 10023263.0 / 33505920,  bp[4] + 497221.0 / 12409600,
+                                   bp[5] - 10023263.0 / 78180480,  bp[6] - 1610737.0 / 402071040, 0.0, 0.0};
+  static constexpr double ev[9] = {bv[0] - 7987313.0 / 109941300, 0.0, bv[2] - 1610737.0 / 40207104,
+                                   bv[3] - 10023263.0 / 23454144,  bv[4] + 497221.0 / 6204800,
+                                   bv[5] - 10023263.0 / 23454144,  bv[6] - 1610737.0 / 40207104,
+                                   bv[7] + 4251941.0 / 54970650,   -3.0 / 20};
+};
+
+/// One RKN86 step on a system with Nyström structure (nystrom_positions): per stage only the P
+/// positions are formed, q_s = q + c_s h q' + h² Σ ā_sj q''_j; then q_new = q + h q' + h² Σ b̄_j q''_j,
+/// q'_new = q' + h Σ b_j q''_j and every quadrature Q_new = Q + h Σ b_j Q'_j (Q' depends on q only,
+/// exactly like q''). The error estimate compares with the embedded 6th-order weights (~h⁷).
+struct RKN86 {
+  using Tab = RKN86Tableau;
+  static constexpr bool kHasErrorEstimate = true;
+  static constexpr int kErrExp = 7;
+  explicit RKN86(const SolverConfig&) {}
+
+  template <int N, class F>
+  bool attempt(F& f, const double* y, const double* dy, double h, double* yout, double* dyout,
+               const ErrorScale& tol, long& evals, double& err) {
+    constexpr int P = nystrom_positions<F>();
+    static_assert(P > 0 && 2 * P <= N, "RKN86 needs a system with Nyström structure");
+    constexpr int S = Tab::S;
+    double k[S][N];
+    for (int i = 0; i < N; ++i) k[0][i] = dy[i];
+    const double h2 = h * h;
+    auto positions = [&]<int s>(double* tmp) {
+      for (int i = 0; i < P; ++i) {
+        double acc = 0.0;
+        [&]<int... j>(std::integer_sequence<int, j...>) {
+          ((Tab::a[s][j] != 0.0 ? (acc += Tab::a[s][j] * k[j][P + i]) : acc), ...);
+        }(std::make_integer_sequence<int, s>{});
+        tmp[i] = y[i] + Tab::c[s] * h * y[P + i] + h2 * acc;
+        tmp[P + i] = y[P + i];  // not read by f; keeps the stage state defined
+      }
+    };
+    [&]<int... s>(std::integer_sequence<int, s...>) {
+      (
+          [&] {
+            double tmp[N];
+            positions.template operator()<s + 1>(tmp);
+            f(tmp, k[s + 1]);
+          }(),
+          ...);
+    }(std::make_integer_sequence<int, S - 1>{});
+    evals += S - 1;
+    double e[N];
+    for (int i = 0; i < P; ++i) {
+      // Positions: the last stage was evaluated there (ā[8] = b̄).
+      double acc = 0.0, ea = 0.0;
+      for (int j = 0; j < S; ++j) {
+        acc += Tab::bp[j] * k[j][P + i];
+        ea += Tab::ep[j] * k[j][P + i];
+      }
+      yout[i] = y[i] + h * y[P + i] + h2 * acc;
+      e[i] = h2 * ea;
+    }
+    for (int i = P; i < N; ++i) {  // velocities and quadratures
+      double acc = 0.0, ea = 0.0;
+      for (int j = 0; j < S; ++j) {
+        acc += Tab::bv[j] * k[j][i];
+        ea += Tab::ev[j] * k[j][i];
+      }
+      yout[i] = y[i] + h * acc;
+      e[i] = h * ea;
+    }
+    err = tol.norm<N>(e, y);
+    // FSAL: the last stage is f at the new positions; dq/dσ there is the new velocity.
+    for (int i = 0; i < N; ++i) dyout[i] = k[S - 1][i];
+    for (int i = 0; i < P; ++i) dyout[i] = yout[P + i];
+    return true;
+  }
+  double next_step(double h, double err, bool accepted, bool after_reject) {
+    return control.next(h, err, accepted, after_reject);
+  }
+  StepController<kErrExp> control;
+};
+
 // ---- Bulirsch–Stoer ------------------------------------------------------------------------------
 
 /// Gragg–Bulirsch–Stoer extrapolation (HNW I §II.9). Row j of the extrapolation table starts with
@@ -721,6 +853,7 @@ struct MetricSystem {
 template <class F>
 struct PlainSystem {
   static constexpr int N = F::N;
+  static constexpr int kNystromPositions = nystrom_positions<F>();
   static constexpr bool kHasConstraint = false;
   F& f;
   void operator()(const double* y, double* dy) const { f(y, dy); }
@@ -778,12 +911,17 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
   St stepper(cfg);
   const bool adaptive = cfg.step_ctrl && St::kHasErrorEstimate;
   ErrorScale tol{cfg.eps_abs, cfg.eps_rel};
-  constexpr bool kScaledTol = requires(const Sys& s, const double* p, double* q) { s.tolerance_scale(p, q); };
+  constexpr bool kScaledTol = requires(const Sys& s, const double* p, double* q) { s.tolerance_inv_scale(p, q); };
   double inv_tol[N];
+  const double inv_eps_abs = 1.0 / cfg.eps_abs;
   auto set_tolerance = [&] {
     if constexpr (kScaledTol) {
-      sys.tolerance_scale(y, inv_tol);
-      for (int i = 0; i < N; ++i) inv_tol[i] = 1.0 / (cfg.eps_abs * inv_tol[i] + cfg.eps_rel * std::fabs(y[i]));
+      sys.tolerance_inv_scale(y, inv_tol);
+      if (cfg.eps_rel == 0.0) {
+        for (int i = 0; i < N; ++i) inv_tol[i] *= inv_eps_abs;
+      } else {
+        for (int i = 0; i < N; ++i) inv_tol[i] = 1.0 / (cfg.eps_abs / inv_tol[i] + cfg.eps_rel * std::fabs(y[i]));
+      }
       tol.inv = inv_tol;
     }
   };
@@ -820,12 +958,13 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
     if (!(remaining > lambda_res)) return finish(StopReason::LambdaMax);
     double hstep = h;
     bool clipped = false;
+    const double ppa = per_affine(y);
     if constexpr (kOwnAffine) {
-      hmax = hmax_affine * per_affine(y);
-      hmin = cfg.step_min * per_affine(y);
+      hmax = hmax_affine * ppa;
+      hmin = cfg.step_min * ppa;
     }
-    if (hstep >= remaining * per_affine(y)) {
-      hstep = remaining * per_affine(y);
+    if (hstep >= remaining * ppa) {
+      hstep = remaining * ppa;
       clipped = true;
     }
     double err = 0;
@@ -914,6 +1053,16 @@ GeodesicResult integrate_dispatch(Sys& sys, const SolverConfig& cfg, double* y, 
       return integrate_with<ExplicitRK<DormandPrince54Tableau>>(sys, cfg, y, lambda0, cb);
     case SolverKind::DormandPrince853: return integrate_with<DOP853>(sys, cfg, y, lambda0, cb);
     case SolverKind::BulirschStoer: return integrate_with<BulirschStoer>(sys, cfg, y, lambda0, cb);
+    case SolverKind::RungeKuttaNystrom86:
+      if constexpr (nystrom_positions<Sys>() > 0) {
+        return integrate_with<RKN86>(sys, cfg, y, lambda0, cb);
+      } else {
+        throw Error(
+            "solver RKN86 (Runge-Kutta-Nystrom) needs equations of the form y'' = f(y): the separated "
+            "(Carter/Mino-time) geodesic equations of KerrBL and Schwarzschild; this integration has none "
+            "(another metric, the transport or Jacobi system, or separable equations switched off) - use "
+            "DOP853");
+      }
   }
   return integrate_with<ExplicitRK<CashKarpTableau>>(sys, cfg, y, lambda0, cb);
 }

@@ -107,6 +107,8 @@ struct ThetaBranch {
 struct KerrMinoSystem {
   static constexpr int N = KerrMinoRHS::N;
   static constexpr int kCoupled = KerrMinoRHS::kCoupled;
+  /// (w, z), (w', z'), then the quadratures t, φ, λ: y'' = f(y) form for RKN86.
+  static constexpr int kNystromPositions = 2;
   static constexpr bool kHasConstraint = true;
   using I = KerrMinoRHS;
   const KerrMinoConstants& k;
@@ -121,19 +123,20 @@ struct KerrMinoSystem {
     const double w = y[I::W], z = y[I::Z];
     return w * w / (1.0 + k.a2 * z * z * w * w);
   }
-  /// Tolerance scales (ErrorScale): an error δw is an error δr = δw/w², δz one of δθ = δz/|sin θ|,
-  /// δw' one of δk^r = δw'/(w²Σ), δz' one of δk^θ = δz'/(|sin θ| Σ); t, φ, λ are themselves. So
-  /// eps_abs bounds the local error of the Boyer–Lindquist x and k as in the coordinate form
-  /// (|sin θ| is floored at 1e-3 where the axis makes δθ meaningless).
-  void tolerance_scale(const double* y, double* s) const {
+  /// Tolerance scales (ErrorScale), as their reciprocals 1/s_i: an error δw is an error δr =
+  /// δw/w², δz one of δθ = δz/|sin θ|, δw' one of δk^r = δw'/(w²Σ), δz' one of δk^θ = δz'/(|sin θ|
+  /// Σ); t, φ, λ are themselves. So eps_abs bounds the local error of the Boyer–Lindquist x and k
+  /// as in the coordinate form (|sin θ| is floored at 1e-3 where the axis makes δθ meaningless).
+  void tolerance_inv_scale(const double* y, double* is) const {
     const double w2 = y[I::W] * y[I::W], z2 = y[I::Z] * y[I::Z];
     const double w2sigma = 1.0 + k.a2 * z2 * w2;  // w² Σ
     const double st = std::sqrt(std::max(1.0 - z2, 1e-6));
-    s[I::T] = s[I::PHI] = s[I::LAM] = 1.0;
-    s[I::W] = w2;
-    s[I::Z] = st;
-    s[I::DW] = w2sigma;
-    s[I::DZ] = st * w2sigma / w2;
+    const double q = 1.0 / (w2 * st * w2sigma);  // one division for all four
+    is[I::T] = is[I::PHI] = is[I::LAM] = 1.0;
+    is[I::W] = q * st * w2sigma;
+    is[I::Z] = q * w2 * w2sigma;
+    is[I::DW] = q * w2 * st;
+    is[I::DZ] = q * w2 * w2;
   }
   bool valid(const double* y) const {
     const double w = y[I::W], z = y[I::Z];
@@ -164,8 +167,8 @@ struct KerrMinoSystem {
   }
   /// value = g(k,k) + μ² of the Boyer–Lindquist tangent this state stands for,
   ///   Σ (g(k,k) + μ²) = (w'² − W)/(w² D) + (z'² − Z)/(1 − z²),
-  /// scale = the size of the terms that cancel (k's Euclidean size in the frame of the
-  /// zero-angular-momentum observer, as MetricSystem::constraint): their absolute values.
+  /// scale = the same with the absolute values of the terms that cancel (the radial and polar
+  /// kinetic and potential terms; the constraint test is relative to it, as MetricSystem's).
   void constraint(const double* y, GeodesicType, double& value, double& scale) const {
     const double w = y[I::W], z = y[I::Z], dw = y[I::DW], dz = y[I::DZ];
     const double w2 = w * w, z2 = z * z;
@@ -173,13 +176,13 @@ struct KerrMinoSystem {
     const double Wv = P * P - D * (k.mu2 + k.K * w2);
     const double Zv = k.Q - k.B * z2 - k.A * z2 * z2;
     const double s2 = std::max(1.0 - z2, 1e-300);
-    const double sigma = 1.0 / w2 + k.a2 * z2;
-    const double ir = 1.0 / (w2 * std::fabs(D));
-    value = ((dw * dw - Wv) * ir + (dz * dz - Zv) / s2) / sigma;
-    const double ang = k.a * k.E * std::sqrt(s2) - k.L / std::sqrt(s2);
-    scale = ((dw * dw + P * P + std::fabs(D) * (k.mu2 + k.K * w2)) * ir +
-             (dz * dz + std::fabs(k.Q) + std::fabs(k.B) * z2 + std::fabs(k.A) * z2 * z2) / s2 + ang * ang) /
-                sigma +
+    const double wD = w2 * std::fabs(D);
+    // One division: 1/(w²|D| (1 − z²) Σ), w²Σ = 1 + a²z²w².
+    const double inv = w2 / (wD * s2 * (1.0 + k.a2 * z2 * w2));
+    value = ((dw * dw - Wv) * s2 + (dz * dz - Zv) * wD) * inv;
+    scale = ((dw * dw + P * P + std::fabs(D) * (k.mu2 + k.K * w2)) * s2 +
+             (dz * dz + std::fabs(k.Q) + std::fabs(k.B) * z2 + std::fabs(k.A) * z2 * z2) * wD) *
+                inv +
             k.mu2;
   }
   /// Re-projection onto the first integrals: |w'| = √W, |z'| = √Z (signs kept).
