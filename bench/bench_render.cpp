@@ -111,8 +111,11 @@ double process_cpu_seconds() {
   return double(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) + 1e-6 * double(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
 }
 
-void BM_Render(benchmark::State& state, RenderJob (*make)(), int threads) {
-  const RenderJob job = make();
+/// separable: the Mino-time (Carter) equations for these two metrics (default), else the
+/// coordinate geodesic equation as GeoViS integrates it.
+void BM_Render(benchmark::State& state, RenderJob (*make)(), int threads, bool separable) {
+  RenderJob job = make();
+  job.solver.separable = separable;
   RenderOptions opt;
   opt.threads = threads;
   opt.progress = false;
@@ -133,10 +136,12 @@ void BM_Render(benchmark::State& state, RenderJob (*make)(), int threads) {
   state.counters["rhs/ray"] = double(stats.rhs_evals) / double(stats.rays);
 }
 
-BENCHMARK_CAPTURE(BM_Render, schwarzschild_1thread, &schwarzschild_scene, 1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Render, schwarzschild_2threads, &schwarzschild_scene, 2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Render, kerr_1thread, &kerr_scene, 1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Render, kerr_2threads, &kerr_scene, 2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, schwarzschild_1thread, &schwarzschild_scene, 1, true)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, schwarzschild_2threads, &schwarzschild_scene, 2, true)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, schwarzschild_1thread_coordinates, &schwarzschild_scene, 1, false)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, kerr_1thread, &kerr_scene, 1, true)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, kerr_2threads, &kerr_scene, 2, true)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, kerr_1thread_coordinates, &kerr_scene, 1, false)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 
 }  // namespace
 }  // namespace geovis

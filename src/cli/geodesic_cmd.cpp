@@ -38,6 +38,7 @@ struct GeodesicArgs {
   std::string solver = "GSL_RK_Cash-Karp";
   double eps_abs = 1e-8;  // the paper's setting for all its images (§3)
   double eps_rel = 0.0;
+  std::string equations = "separable";
   int max_steps = 100000;
   double lambda_max = std::numeric_limits<double>::infinity();
   bool forward = false;
@@ -99,6 +100,7 @@ int run_geodesic(const GeodesicArgs& a) {
   cfg.type = type;
   cfg.eps_abs = a.eps_abs;
   cfg.eps_rel = a.eps_rel;
+  cfg.separable = a.equations == "separable";
   cfg.max_steps = a.max_steps;
   cfg.lambda_max = a.lambda_max;
   if (!(a.lambda_max > 0)) throw Error("--lambda-max: expected a number > 0, found " + fmt(a.lambda_max));
@@ -165,6 +167,7 @@ int run_geodesic(const GeodesicArgs& a) {
     j["solver"] = solver_kind_name(cfg.kind);
     j["eps_abs"] = cfg.eps_abs;
     j["eps_rel"] = cfg.eps_rel;
+    j["separable"] = cfg.separable;
     nlohmann::json pts = nlohmann::json::array();
     for (const auto& p : points)
       pts.push_back({{"lambda", p.lambda},
@@ -204,6 +207,11 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->add_option("--solver", a->solver, "integrator (GeoViS name or ours)")->capture_default_str();
   sub->add_option("--eps-abs", a->eps_abs, "absolute tolerance")->capture_default_str();
   sub->add_option("--eps-rel", a->eps_rel, "relative tolerance")->capture_default_str();
+  sub->add_option("--equations", a->equations,
+                  "separable: KerrBL/Schwarzschild through Carter's equations in Mino time; coordinate: the "
+                  "second-order geodesic equation (every other metric uses it anyway)")
+      ->check(CLI::IsMember({"separable", "coordinate"}))
+      ->capture_default_str();
   sub->add_option("--max-steps", a->max_steps, "maximal number of accepted steps")->capture_default_str();
   sub->add_option("--lambda-max", a->lambda_max, "maximal affine parameter (proper time for timelike)");
   sub->add_flag("--forward", a->forward, "lightlike: trace towards the future instead of backwards in time");

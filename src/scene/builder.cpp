@@ -107,6 +107,9 @@ const std::vector<ParamSpec>* builder_specs(const std::string& command) {
         {"max_step", T::Number, "maximal step size"},
         {"eps_abs", T::Number, "absolute tolerance (default 1e-4)"},
         {"eps_rel", T::Number, "relative tolerance (default 0)"},
+        {"separable", T::Bool,
+         "geovis extension: KerrBL and Schwarzschild geodesics through Carter's separated equations in Mino "
+         "time (default #t); #f: the coordinate geodesic equation, as GeoViS"},
         {"boundboxll", T::Vec4, "lower corner of the bounding box"},
         {"boundboxur", T::Vec4, "upper corner of the bounding box"}}},
       {"init-raygen",
@@ -783,6 +786,7 @@ struct SceneBuilder::Impl {
     c.step_max = ps.get_number("max_step", c.step_max);
     c.eps_abs = ps.get_number("eps_abs", 1e-4);
     c.eps_rel = ps.get_number("eps_rel", 0.0);
+    c.separable = ps.get_bool("separable", true);
     if (!(c.step_size > 0)) ps.fail("step_size", "expected a positive step size, found " + std::to_string(c.step_size));
     if (!(c.step_max > 0)) ps.fail("max_step", "expected a positive maximal step, found " + std::to_string(c.step_max));
     if (!(c.eps_abs >= 0) || !(c.eps_rel >= 0) || (c.eps_abs == 0 && c.eps_rel == 0 && c.step_ctrl))

@@ -65,18 +65,39 @@ void ThetaBranch::cross_axis(double z) {
 }
 
 void kerr_mino_to_bl(const KerrMinoConstants& c, const double* y, const double* dy, const ThetaBranch& b, Vec4& x,
-                     Vec4& k) {
+                     Vec4& k, Vec4* dk) {
   using I = KerrMinoRHS;
-  const double w = y[I::W], z = std::clamp(y[I::Z], -1.0, 1.0);
+  const double w = y[I::W], z = std::clamp(y[I::Z], -1.0, 1.0), dw = y[I::DW], dz = y[I::DZ];
   const double r = 1.0 / w;
   const double s_abs = std::sqrt(std::max(0.0, (1.0 - z) * (1.0 + z)));  // |sin θ|
-  const double isig = 1.0 / (r * r + c.a2 * z * z);
+  const double sigma = r * r + c.a2 * z * z, isig = 1.0 / sigma;
   // dθ/dσ = −s·z'/|sin θ|. For L = 0, Z = (1 − z²)(Q + Az²), so |z'|/|sin θ| = √(Q + Az²): used
   // instead, since near the axis, which such a ray passes, 1 − z² has lost its leading digits.
-  const double dth = c.axis ? -b.sign * std::copysign(std::sqrt(std::max(0.0, c.Q + c.A * z * z)), y[I::DZ])
-                            : -b.sign * y[I::DZ] / s_abs;
+  const double dth = c.axis ? -b.sign * std::copysign(std::sqrt(std::max(0.0, c.Q + c.A * z * z)), dz)
+                            : -b.sign * dz / s_abs;
+  const double dr = -dw * r * r;  // dr/dσ
   x = Vec4{{y[I::T], r, b.offset + b.sign * std::acos(z), y[I::PHI]}};
-  k = Vec4{{dy[I::T] * isig, -y[I::DW] * r * r * isig, dth * isig, dy[I::PHI] * isig}};
+  k = Vec4{{dy[I::T] * isig, dr * isig, dth * isig, dy[I::PHI] * isig}};
+  if (!dk) return;
+  // dk^μ/dλ = (x^μ'' Σ − x^μ' Σ')/Σ³ with ' = d/dσ, from the Mino derivatives (file comment):
+  //   r'' = −w''r² + 2w'²r³,  θ'' = −(z'' + z θ'²)/sin θ  (L = 0: −A z sin θ),
+  //   t'' = ∂_w T w' + ∂_z T z',  φ'' = ∂_w Φ w' + ∂_z Φ z',  Σ' = 2 r r' + 2a² z z'.
+  const double sin_th = b.sign * s_abs;
+  const double ddr = -dy[I::DW] * r * r + 2.0 * dw * dw * r * r * r;
+  const double ddth = c.axis ? -c.A * z * sin_th : -(dy[I::DZ] + z * dth * dth) / sin_th;
+  const double w2 = w * w, D = 1.0 - 2.0 * c.M * w + c.a2 * w2, dD = -2.0 * c.M + 2.0 * c.a2 * w;
+  const double P = c.E + c.c * w2, dP = 2.0 * c.c * w;
+  const double Nt = (1.0 + c.a2 * w2) * P, dNt = 2.0 * c.a2 * w * P + (1.0 + c.a2 * w2) * dP;
+  const double den = w2 * D, dden = 2.0 * w * D + w2 * dD;
+  const double iD = 1.0 / D;
+  const double dT_dw = (dNt - Nt * dden / den) / den, dT_dz = 2.0 * c.a2 * c.E * z;
+  const double s2 = std::max((1.0 - z) * (1.0 + z), 1e-300);
+  const double dPhi_dw = c.a * (dP - P * dD * iD) * iD, dPhi_dz = c.axis ? 0.0 : 2.0 * c.L * z / (s2 * s2);
+  const double ddt = dT_dw * dw + dT_dz * dz, ddph = dPhi_dw * dw + dPhi_dz * dz;
+  const double dsig = 2.0 * r * dr + 2.0 * c.a2 * z * dz;
+  const double i3 = isig * isig * isig;
+  *dk = Vec4{{(ddt * sigma - dy[I::T] * dsig) * i3, (ddr * sigma - dr * dsig) * i3, (ddth * sigma - dth * dsig) * i3,
+              (ddph * sigma - dy[I::PHI] * dsig) * i3}};
 }
 
 }  // namespace geovis

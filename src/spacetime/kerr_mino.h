@@ -201,18 +201,18 @@ struct KerrMinoSystem {
 KerrMinoConstants kerr_mino_constants(double M, double a, const Vec4& x, const Vec4& k, double mu2);
 /// BL (x, k) → Mino state (w, z, w', z', t, φ, λ).
 void kerr_mino_from_bl(const KerrMinoConstants& c, const Vec4& x, const Vec4& k, double lambda, double* y);
-/// Mino state and its derivative → BL (x, k) on θ branch b.
+/// Mino state and its derivative → BL (x, k) on θ branch b, and dk/dλ (the geodesic
+/// acceleration, from the Mino derivatives) when dk is given.
 void kerr_mino_to_bl(const KerrMinoConstants& c, const double* y, const double* dy, const ThetaBranch& b, Vec4& x,
-                     Vec4& k);
+                     Vec4& k, Vec4* dk = nullptr);
 
 /// Integrates a Kerr (a = 0: Schwarzschild) geodesic given in Boyer–Lindquist (x, k) =
 /// y_io[0..7] in Mino time and reports it in BL terms: same SolverConfig meaning (tolerances apply
 /// to the Mino state; step sizes, λ_max and the box are in λ and BL coordinates), same stop
-/// reasons, same StepView layout (dim 8, dy = (k, dk/dλ)). `accel(x, k, a)` is the metric's
-/// geodesic acceleration (for dk/dλ at the step ends only); r_break its horizon break radius.
-template <class Accel>
-GeodesicResult integrate_kerr_mino(double M, double a, double r_break, const Accel& accel, const SolverConfig& cfg,
-                                   double* y_io, double lambda0, StepCallback cb) {
+/// reasons, same StepView layout (dim 8, dy = (k, dk/dλ)); r_break is the metric's horizon
+/// break radius.
+inline GeodesicResult integrate_kerr_mino(double M, double a, double r_break, const SolverConfig& cfg, double* y_io,
+                                          double lambda0, StepCallback cb) {
   const Vec4 x0{{y_io[0], y_io[1], y_io[2], y_io[3]}};
   const Vec4 k0{{y_io[4], y_io[5], y_io[6], y_io[7]}};
   const double mu2 = -constraint_target(cfg.type);
@@ -233,8 +233,7 @@ GeodesicResult integrate_kerr_mino(double M, double a, double r_break, const Acc
   bool have0 = false;
   auto to_bl = [&](const double* ym, const double* dym, double* bl, double* dbl) {
     Vec4 x, kk, acc;
-    kerr_mino_to_bl(c, ym, dym, branch, x, kk);
-    accel(x, kk, acc);
+    kerr_mino_to_bl(c, ym, dym, branch, x, kk, &acc);
     for (int i = 0; i < 4; ++i) {
       bl[i] = x[i];
       bl[4 + i] = kk[i];

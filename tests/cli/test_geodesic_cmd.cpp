@@ -53,8 +53,11 @@ TEST(GeodesicCmd, ReproducesRadialLightTravelTime) {
   const double expected = (30.0 + 2.0 * std::log(28.0)) - (6.0 + 2.0 * std::log(4.0));
   EXPECT_NEAR(expected, 27.8918, 1e-4);
   EXPECT_NEAR(std::stod(kLambdaTo30), 24.0 / std::sqrt(2.0 / 3.0), 1e-14);
+  // Both forms of the equations: Carter's in Mino time (default) and the coordinate geodesic equation.
+  for (const std::string eq : {"separable", "coordinate"}) {
+  SCOPED_TRACE(eq);
   const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5707963267948966,0", "--dir",
-                             "1,0,0", "--forward", "--lambda-max", kLambdaTo30, "--eps-abs", "1e-10"});
+                             "1,0,0", "--forward", "--lambda-max", kLambdaTo30, "--eps-abs", "1e-10", "--equations", eq});
   ASSERT_EQ(o.code, 0) << o.err;
   const auto ls = lines(o.out);
   ASSERT_GE(ls.size(), 4u);
@@ -70,6 +73,11 @@ TEST(GeodesicCmd, ReproducesRadialLightTravelTime) {
   EXPECT_NEAR(last[1] - first[1], expected, 1e-4);
   EXPECT_NEAR(last[1] - first[1], expected, 1e-8);  // what the tolerance actually delivers
   for (size_t i = 1; i + 1 < ls.size(); ++i) EXPECT_LT(std::fabs(csv_numbers(ls[i])[9]), 1e-9) << ls[i];
+  }
+  EXPECT_NE(run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5,0", "--dir", "1,0,0", "--equations",
+                      "carter"})
+                .code,
+            0);
 }
 
 TEST(GeodesicCmd, BackwardRayIsPastDirectedByDefault) {

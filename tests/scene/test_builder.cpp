@@ -95,6 +95,17 @@ TEST(SceneBuilder, LastDefinedIsTheDefault) {
   EXPECT_EQ(j0[0].job.solver.type, GeodesicType::Lightlike);
   EXPECT_DOUBLE_EQ(j0[0].job.solver.box_ur[1], 20.0);
   EXPECT_EQ(j0[0].job.metric->name(), "Minkowski");
+  EXPECT_TRUE(j0[0].job.solver.separable);  // geovis extension, default on
+}
+
+TEST(SceneBuilder, SeparableSolverKeySwitchesToTheCoordinateEquations) {
+  SceneText s = minkowski_base();
+  s.add("init-solver", {{"type", "GSL_RK_Cash-Karp"}, {"separable", false}, {"id", "coordSolver"}})
+      .add("init-raygen", {{"type", "RayGenSimple"}, {"solver", "coordSolver"}, {"id", "rg2"}})
+      .add("init-projector", {{"localtetrad", "locTedObs"}, {"id", "proj2"}})  // takes the last raygen
+      .add("init-device", {{"type", "standard"}});
+  SceneBuilder b(s.desc(), {});
+  EXPECT_FALSE(b.build(0)[0].job.solver.separable);
 }
 
 TEST(SceneBuilder, LastMetricIsTheDefault) {

@@ -54,6 +54,9 @@ inline double expect_accel_matches_ad(const Metric& m, const Vec4& x, const Vec4
   cfg.step_size = 1e-9;
   cfg.max_steps = 1;
   cfg.constraint_tol = 1e300;
+  // The coordinate form's hot-path acceleration, for any k (the separated equations of KerrBL and
+  // Schwarzschild assume g(k,k) = −μ² and are checked in test_kerr_mino.cpp).
+  cfg.separable = false;
   double acc[4] = {NAN, NAN, NAN, NAN};
   auto cb = [&](const StepView& s) {
     for (int i = 0; i < 4; ++i) acc[i] = s.dy0[4 + i];

@@ -120,7 +120,9 @@ TEST(KerrMino, ConstantsExactNullConstraintKeptAndStepsInAffineUnits) {
     dC = std::max(dC, std::fabs(dot(g, ks, ks)) / (c0.E * c0.E));
     rmin = std::min(rmin, xs[1]);
     hmax = std::max(hmax, s.lambda1 - s.lambda0);
-    // dx/dλ handed to the caller is k, and dk/dλ the geodesic acceleration at the step end.
+    // dx/dλ handed to the caller is k, and dk/dλ the geodesic acceleration at the step end: from
+    // the Mino derivatives it equals −Γ k k up to the constraint violation of the integrated state
+    // (~1e-10 here), not to rounding.
     for (int i = 0; i < 4; ++i) EXPECT_EQ(s.dy1[i], s.y1[4 + i]);
     Vec4 acc;
     Christoffel G;
@@ -130,7 +132,7 @@ TEST(KerrMino, ConstantsExactNullConstraintKeptAndStepsInAffineUnits) {
       for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) acc[mu] -= G.G[mu][i][j] * ks[i] * ks[j];
     }
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(s.dy1[4 + i], acc[i], 1e-12 * (1 + std::fabs(acc[i])));
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(s.dy1[4 + i], acc[i], 1e-9 * (1 + std::fabs(acc[i])));
     return StepAction::Continue;
   };
   double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};

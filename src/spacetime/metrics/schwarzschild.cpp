@@ -78,8 +78,7 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
                            StepCallback cb) const override {
     if (sys != GeodesicSystem::Geodesic || !cfg.separable || !is_valid(Vec4{{y[0], y[1], y[2], y[3]}}))
       return MetricCRTP::integrate(cfg, sys, y, lambda0, cb);
-    auto accel = [this](const Vec4& x, const Vec4& k, Vec4& acc) { accel_closed(x, k, acc); };
-    return integrate_kerr_mino(0.5 * rs_, 0.0, r_break_, accel, cfg, y, lambda0, cb);
+    return integrate_kerr_mino(0.5 * rs_, 0.0, r_break_, cfg, y, lambda0, cb);
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
