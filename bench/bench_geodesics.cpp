@@ -15,6 +15,8 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
+#include <time.h>
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -204,6 +206,55 @@ void BM_GslCashKarp(benchmark::State& state) {
   state.SetLabel(std::string(state.range(0) == 0 ? "Schwarzschild " : "KerrBL a=0.9 ") + "GSL rkck (reference)");
 }
 
+// ---- speed-up against GSL, measured back to back ------------------------------------------------------
+
+/// CPU time of this thread.
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+/// The shared machine's speed drifts by ±20 % over minutes, so separately timed benchmarks give
+/// unreliable ratios. Here every iteration integrates the bundle once with GSL and once with ours,
+/// back to back, and the counter x_gsl = Σ t_GSL / Σ t_ours is the speed-up. Args: metric, our
+/// SolverKind, separable, n > 0: our eps_abs = 10^−n (GSL stays at 1e-8).
+void BM_VersusGsl(benchmark::State& state) {
+  const Scene& s = scene(static_cast<int>(state.range(0)));
+  const auto kind = static_cast<SolverKind>(state.range(1));
+  SolverConfig cfg = bundle_config(s, kind);
+  cfg.separable = state.range(2) != 0;
+  if (state.range(3) > 0) cfg.eps_abs = std::pow(10.0, -static_cast<double>(state.range(3)));
+  const SolverConfig gcfg = bundle_config(s, SolverKind::CashKarp45);
+  GslTracer gsl(s);
+  double t_gsl = 0, t_ours = 0;
+  for (auto _ : state) {
+    double t0 = thread_cpu_seconds();
+    for (const auto& r0 : s.rays) {
+      double y[8];
+      for (int i = 0; i < 8; ++i) y[i] = r0[i];
+      gsl.trace(gcfg, y, 1e300);
+      benchmark::DoNotOptimize(y);
+    }
+    double t1 = thread_cpu_seconds();
+    t_gsl += t1 - t0;
+    for (const auto& r0 : s.rays) {
+      double y[8];
+      for (int i = 0; i < 8; ++i) y[i] = r0[i];
+      s.metric->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
+      benchmark::DoNotOptimize(y);
+    }
+    t_ours += thread_cpu_seconds() - t1;
+  }
+  const double n = static_cast<double>(state.iterations() * static_cast<long>(s.rays.size()));
+  state.counters["x_gsl"] = t_gsl / t_ours;
+  state.counters["gsl_geod/s"] = n / t_gsl;
+  state.counters["ours_geod/s"] = n / t_ours;
+  state.SetLabel(std::string(state.range(0) == 0 ? "Schwarzschild " : "KerrBL a=0.9 ") + solver_kind_name(kind) +
+                 (cfg.separable ? " Mino" : " coordinates") +
+                 (state.range(3) > 0 ? " eps 1e-" + std::to_string(state.range(3)) : " eps 1e-8"));
+}
+
 // ---- accuracy at equal tolerance -------------------------------------------------------------------
 
 /// Equal tolerance is only a fair comparison if it buys equal accuracy. Every ray of the bundle is
@@ -309,6 +360,14 @@ BENCHMARK(BM_Ours)
     ->Args({0, static_cast<int>(SolverKind::RungeKuttaNystrom86), 1, 7})
     ->Args({1, static_cast<int>(SolverKind::RungeKuttaNystrom86), 1, 6})
     ->Args({1, static_cast<int>(SolverKind::RungeKuttaNystrom86), 1, 7})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VersusGsl)
+    ->ArgsProduct({{0, 1}, {static_cast<int>(SolverKind::CashKarp45), static_cast<int>(SolverKind::DormandPrince853)}, {0, 1}, {0}})
+    ->Args({0, static_cast<int>(SolverKind::RungeKuttaNystrom86), 1, 0})
+    ->Args({1, static_cast<int>(SolverKind::RungeKuttaNystrom86), 1, 0})
+    ->Args({0, static_cast<int>(SolverKind::RungeKuttaNystrom86), 1, 6})
+    ->Args({1, static_cast<int>(SolverKind::RungeKuttaNystrom86), 1, 6})
+    ->MinTime(3.0)
     ->Unit(benchmark::kMillisecond);
 // Accuracy, not speed: one pass each.
 BENCHMARK(BM_Accuracy)->Apply(accuracy_args)->Iterations(1)->Unit(benchmark::kMillisecond);
