@@ -13,7 +13,7 @@
 //   DOP853     Hairer's DOP853 (HNW I §II.10, code dop853.f): 8th order with the combined 5th/3rd
 //              order error estimator err = e5² / sqrt(e5² + 0.01 e3²)
 //   RKN86      Runge–Kutta–Nyström 8(6) of Dormand, El-Mikkawy & Prince (IMA J. Numer. Anal. 7
-//              (1987) 235/423; HNW I §II.14): for y'' = f(y) with quadratures q' = g(y) only
+//              (1987) 423; HNW I §II.14): for y'' = f(y) with quadratures q' = g(y) only
 //              (Carter's equations in Mino time, kerr_mino.h); 9 stages, the last one FSAL
 //   BS         Gragg–Bulirsch–Stoer: modified midpoint rule with Gragg's smoothing step, polynomial
 //              (Aitken–Neville) extrapolation in h², error from the last two entries of the
@@ -511,8 +511,8 @@ constexpr int nystrom_positions() {
 
 /// Dormand, El-Mikkawy & Prince RKN 8(6) (IMA J. Numer. Anal. 7 (1987) 423; the coefficients as
 /// tabulated in GMAT's DormandElMikkawyPrince68): nodes c, position matrix ā (row sums c²/2),
-/// position weights b̄ (8th order), velocity weights b (8th order; a symmetric 8-point quadrature
-/// on the nodes), and the differences to the embedded 6th-order weights, ep = b̄ − b̄̂, ev = b − b̂.
+/// position weights b̄ (8th order), velocity weights b (8th order; a symmetric quadrature on the
+/// nodes 0, .1, .3, .5, .7, .9, 1, exact to degree 7), and the differences to the embedded 6th-order weights, ep = b̄ − b̄̂, ev = b − b̂.
 /// The last stage is evaluated at the new position (ā[8] = b̄): first same as last.
 struct RKN86Tableau {
   static constexpr int S = 9;
@@ -930,6 +930,7 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
   double hmax = hmax_affine * per_affine(y), hmin = cfg.step_min * per_affine(y);
   double h = std::max(std::min(std::fabs(cfg.step_size), hmax_affine) * per_affine(y), hmin);
   const double affine0 = affine(y, lambda0);
+  int affine_retries = 0;  // consecutive step retries to meet λ_max / step_max in λ (kOwnAffine)
   bool after_reject = false;
   // Boundary location: |h| of the first trial that left the validity domain (0: none pending).
   constexpr double kBoundaryRes = 1.0 / 1024;
@@ -995,17 +996,23 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
       continue;
     }
     if constexpr (kOwnAffine) {
-      // λ_max overshot: retry with the step shortened by the secant on λ(σ) (not a rejection).
+      // λ_max overshot: retry with the step shortened by the secant on λ(σ) (not a rejection;
+      // the secant converges in a few retries, the cap only guards against a pathological λ(σ)).
       const double dl = std::fabs(sys.affine(y1) - sys.affine(y));
-      if (std::isfinite(cfg.lambda_max) && dl > remaining * (1.0 + 1e-12)) {
-        h = hstep * remaining / dl;
-        continue;
+      if (affine_retries < 50) {
+        if (std::isfinite(cfg.lambda_max) && dl > remaining * (1.0 + 1e-12)) {
+          h = hstep * remaining / dl;
+          ++affine_retries;
+          continue;
+        }
+        // Likewise a step longer than step_max in λ (Σ grew inside it).
+        if (dl > hmax_affine * (1.0 + 1e-12)) {
+          h = hstep * hmax_affine / dl * (1.0 - 1e-9);
+          ++affine_retries;
+          continue;
+        }
       }
-      // Likewise a step longer than step_max in λ (Σ grew inside it).
-      if (dl > hmax_affine * (1.0 + 1e-12)) {
-        h = hstep * hmax_affine / dl * (1.0 - 1e-9);
-        continue;
-      }
+      affine_retries = 0;
       clipped = dl >= remaining * (1.0 - 1e-12);
     }
     // Accepted.

@@ -18,13 +18,14 @@
 //   t'  = (1 + a²w²)(E + cw²) / (w² D) + aL − a²E(1 − z²),   D = 1 − 2Mw + a²w² = Δ/r²,
 //   φ'  = a(E + cw²)/D − aE + L/(1 − z²),   λ' = 1/w² + a²z².
 // Both second-order equations are polynomial, the right-hand side needs no sine, cosine or square
-// root and one division per evaluation; E, L and Q are exact by construction, and the light-ray
-// escape to r = ∞ is w → 0 at finite σ, so large radii cost no more steps than small ones.
+// root and one division per evaluation; E, L and Q are exact by construction, and a light ray's
+// escape to r = ∞ is w → 0 at finite σ.
 //
 // The integrated state is y = (w, z, w', z', t, φ, λ): the right-hand side reads only the first
-// four, so the Runge–Kutta stages sum only those (rk_detail::stage, kCoupled); every accepted step is handed to the
-// caller in Boyer–Lindquist (x, k) with dk/dλ from the metric's acceleration, so callers (the
-// renderer's segment tests, the data filters) see exactly what the coordinate integration gives.
+// four, so the Runge–Kutta stages sum only those (rk_detail::stage, kCoupled), and it has the
+// form y'' = f(y) that RKN86 exploits. Every accepted step is handed to the caller in
+// Boyer–Lindquist (x, k, dk/dλ), so callers (the renderer's segment tests, the data filters) see
+// what the coordinate integration gives them.
 // Rays through the polar axis (L = 0: z turns at ±1) continue with θ < 0 (through the north pole)
 // or θ > π (south) at the same φ, as the coordinate integration does: θ = θ_off + s·acos z with the
 // branch (s, θ_off) switched at every passage. The ray's closest approach to the axis is
@@ -72,7 +73,7 @@ struct KerrMinoRHS {
     const double muK = k.mu2 + k.K * w2;
     const double s2 = 1.0 - z2;                        // sin²θ
     // One division: 1/(w² D s²) gives 1/D, 1/w² and 1/sin²θ.
-    double inv = 1.0, iD, iw2, is2;
+    double inv, iD, iw2, is2;
     if (k.axis) {
       inv = 1.0 / (w2 * D);
       iD = inv * w2;
@@ -102,6 +103,7 @@ struct ThetaBranch {
   /// Crossing the axis at z = ±1: θ continues through 0 (mod 2π) or π.
   void cross_axis(double z);
 };
+
 /// The Mino system as seen by the integration driver (integrators.h): validity (outside the
 /// horizon break radius, r finite), bounding box and the constraint in Boyer–Lindquist terms.
 struct KerrMinoSystem {
