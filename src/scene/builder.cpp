@@ -913,6 +913,16 @@ class DeviceBuild {
       }
     }
     job.filter = cam->filter;
+    if (job.solver.kind == SolverKind::RungeKuttaNystrom86 &&
+        (!metric_->has_separable_geodesics() || !job.solver.separable || job.filter == Filter::RGBjac)) {
+      const DefPtr& sdef = Impl::resolve(defs_, rg->ps, "solver", Kind::Solver, rg->seq);
+      sdef->ps.fail("type", std::string("RKN86 integrates only the separated geodesic equations of KerrBL and "
+                                        "Schwarzschild (") +
+                                (job.filter == Filter::RGBjac ? "not the Jacobi equation of the RGBjac filter"
+                                 : !job.solver.separable       ? "here switched off by 'separable #f'"
+                                                               : "this scene's metric is " + metric_->name()) +
+                                "); use DOP853");
+    }
 
     if (info) {
       std::ostringstream m;

@@ -126,6 +126,10 @@ class Metric {
   /// affine parameter lambda0, calling `cb` after every accepted step.
   virtual GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y,
                                    double lambda0, StepCallback cb) const = 0;
+  /// Geodesics (GeodesicSystem::Geodesic) are integrated through separated equations of the form
+  /// y'' = f(y) when cfg.separable is set (KerrBL, Schwarzschild: spacetime/kerr_mino.h), which
+  /// is what the RKN86 solver needs.
+  virtual bool has_separable_geodesics() const { return false; }
 
  protected:
   /// Called after a parameter changed: read values into members and check cross-parameter

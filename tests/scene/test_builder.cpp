@@ -108,6 +108,19 @@ TEST(SceneBuilder, SeparableSolverKeySwitchesToTheCoordinateEquations) {
   EXPECT_FALSE(b.build(0)[0].job.solver.separable);
 }
 
+TEST(SceneBuilder, RungeKuttaNystromNeedsSeparableEquations) {
+  // RKN86 integrates y'' = f(y) only: in Minkowski the scene is refused at build time, naming the
+  // solver's command and key.
+  SceneText s = minkowski_base();
+  s.add("init-solver", {{"type", "RKN86"}, {"id", "rkn"}})
+      .add("init-raygen", {{"type", "RayGenSimple"}, {"solver", "rkn"}, {"id", "rg2"}})
+      .add("init-projector", {{"localtetrad", "locTedObs"}, {"id", "proj2"}})
+      .add("init-device", {{"type", "standard"}});
+  const std::string e = error_of(s);
+  EXPECT_NE(e.find("init-solver: type: RKN86"), std::string::npos) << e;
+  EXPECT_NE(e.find("Minkowski"), std::string::npos) << e;
+}
+
 TEST(SceneBuilder, LastMetricIsTheDefault) {
   SceneText s = minkowski_base();
   s.add("init-metric", {{"type", "Schwarzschild"}, {"mass", 0.5}, {"id", "bh"}})
