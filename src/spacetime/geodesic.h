@@ -79,10 +79,10 @@ struct SolverConfig {
   double constraint_tol = 1e-2;
   /// Re-project k onto the constraint surface after every accepted step.
   bool reproject = false;
-  /// Lightlike and timelike geodesics of KerrBL and Schwarzschild (system Geodesic) are
-  /// integrated through Carter's separated equations in Mino time (spacetime/kerr_mino.h): exact
-  /// E, L, Q and a cheaper right-hand side; the tolerances then apply to the Mino state (t, 1/r,
-  /// cos θ, φ, λ, d(1/r)/dσ, d cos θ/dσ). false: the second-order geodesic equation in coordinates.
+  /// Geodesics of KerrBL and Schwarzschild (system Geodesic) are integrated through Carter's
+  /// separated equations in Mino time (spacetime/kerr_mino.h): exact E, L, Q and a cheaper
+  /// right-hand side; the tolerances are scaled to keep their meaning in Boyer–Lindquist
+  /// coordinates. false: the second-order geodesic equation in coordinates (GeoViS's form).
   bool separable = true;
 };
 

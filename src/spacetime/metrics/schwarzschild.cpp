@@ -71,10 +71,10 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
     return x[1] > r_break_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;
   }
 
+  bool has_separable_geodesics() const override { return true; }
   /// Geodesics (not the transport or Jacobi systems) go through Carter's separated equations in
   /// Mino time (spacetime/kerr_mino.h) unless cfg.separable is off; the coordinate form stays for
   /// the other systems and for a start outside the validity domain (which it reports).
-  bool has_separable_geodesics() const override { return true; }
   GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y, double lambda0,
                            StepCallback cb) const override {
     if (sys != GeodesicSystem::Geodesic || !cfg.separable || !is_valid(Vec4{{y[0], y[1], y[2], y[3]}}))
