@@ -41,6 +41,11 @@
 
 namespace geovis {
 
+/// The hole a Kerr-family metric integrates its geodesics around (MetricCRTP::integrate).
+struct KerrMinoParams {
+  double mass, a, r_break;  ///< r_break: the metric's horizon break radius
+};
+
 /// The constants of one Kerr geodesic and the derived polynomial coefficients (file comment).
 struct KerrMinoConstants {
   double M = 1, a = 0, a2 = 0;  ///< mass and spin parameter of the hole

@@ -17,6 +17,7 @@
 #include "spacetime/fast_math.h"
 #include "spacetime/integrators.h"
 #include "spacetime/jacobi.h"
+#include "spacetime/kerr_mino.h"
 #include "spacetime/metric.h"
 
 namespace geovis {
@@ -67,8 +68,22 @@ class MetricCRTP : public Metric {
   }
   bool is_valid_inline(const Vec4& x) const { return self().M::is_valid(x); }
 
+  /// A metric of the Kerr family provides `KerrMinoParams kerr_mino_params() const` (mass, spin,
+  /// horizon break radius); its geodesics (not the transport or Jacobi systems) then go through
+  /// Carter's separated equations in Mino time (kerr_mino.h) unless cfg.separable is off, and
+  /// through the coordinate form otherwise or from a start outside the validity domain (which that
+  /// form reports).
+  static constexpr bool kSeparable = requires(const M& m) { m.kerr_mino_params(); };
+  bool has_separable_geodesics() const override { return kSeparable; }
+
   GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y, double lambda0,
                            StepCallback cb) const override {
+    if constexpr (kSeparable) {
+      if (sys == GeodesicSystem::Geodesic && cfg.separable && is_valid_inline(Vec4{{y[0], y[1], y[2], y[3]}})) {
+        const KerrMinoParams p = self().kerr_mino_params();
+        return integrate_kerr_mino(p.mass, p.a, p.r_break, cfg, y, lambda0, cb);
+      }
+    }
     switch (sys) {
       case GeodesicSystem::Transport: {
         TransportRHS<M> f{self()};

@@ -17,7 +17,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "spacetime/kerr_mino.h"
 #include "spacetime/metric_crtp.h"
 
 namespace geovis {
@@ -187,16 +186,8 @@ class KerrBL final : public MetricCRTP<KerrBL> {
            std::isfinite(x[3]) && x[2] != 0.0;
   }
 
-  bool has_separable_geodesics() const override { return true; }
-  /// Geodesics (not the transport or Jacobi systems) go through Carter's separated equations in
-  /// Mino time (spacetime/kerr_mino.h) unless cfg.separable is off; the coordinate form stays for
-  /// the other systems and for a start outside the validity domain (which it reports).
-  GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y, double lambda0,
-                           StepCallback cb) const override {
-    if (sys != GeodesicSystem::Geodesic || !cfg.separable || !is_valid(Vec4{{y[0], y[1], y[2], y[3]}}))
-      return MetricCRTP::integrate(cfg, sys, y, lambda0, cb);
-    return integrate_kerr_mino(mass_, a_, r_break_, cfg, y, lambda0, cb);
-  }
+  /// Geodesics through Carter's separated equations (MetricCRTP::integrate, kerr_mino.h).
+  KerrMinoParams kerr_mino_params() const { return {mass_, a_, r_break_}; }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
