@@ -87,12 +87,24 @@ void report(benchmark::State& state, long rays, long steps, long evals, long cap
   if (rejected >= 0) state.counters["rejected/geodesic"] = static_cast<double>(rejected) / rays;
 }
 
-void BM_Ours(benchmark::State& state) {
-  const Scene& s = scene(static_cast<int>(state.range(0)));
-  const auto kind = static_cast<SolverKind>(state.range(1));
-  SolverConfig cfg = bundle_config(s, kind);
+/// Our configuration from the benchmark arguments (metric, SolverKind, separable, n): eps_abs =
+/// 10^−n for n > 0, else the bundle's 1e-8.
+SolverConfig ours_config(const Scene& s, const benchmark::State& state) {
+  SolverConfig cfg = bundle_config(s, static_cast<SolverKind>(state.range(1)));
   cfg.separable = state.range(2) != 0;
   if (state.range(3) > 0) cfg.eps_abs = std::pow(10.0, -static_cast<double>(state.range(3)));
+  return cfg;
+}
+
+std::string ours_label(const benchmark::State& state, const SolverConfig& cfg) {
+  return std::string(state.range(0) == 0 ? "Schwarzschild " : "KerrBL a=0.9 ") + solver_kind_name(cfg.kind) +
+         (cfg.separable ? " Mino" : " coordinates") +
+         (state.range(3) > 0 ? " eps 1e-" + std::to_string(state.range(3)) : "");
+}
+
+void BM_Ours(benchmark::State& state) {
+  const Scene& s = scene(static_cast<int>(state.range(0)));
+  const SolverConfig cfg = ours_config(s, state);
   long rays = 0, steps = 0, evals = 0, captured = 0, rejected = 0;
   for (auto _ : state) {
     for (const auto& r0 : s.rays) {
@@ -108,9 +120,7 @@ void BM_Ours(benchmark::State& state) {
     }
   }
   report(state, rays, steps, evals, captured, rejected);
-  state.SetLabel(std::string(state.range(0) == 0 ? "Schwarzschild " : "KerrBL a=0.9 ") + solver_kind_name(kind) +
-                 (cfg.separable ? " Mino" : " coordinates") +
-                 (state.range(3) > 0 ? " eps 1e-" + std::to_string(state.range(3)) : ""));
+  state.SetLabel(ours_label(state, cfg));
 }
 
 // ---- GSL reference (GeoViS/Motion4D style) --------------------------------------------------------
@@ -221,10 +231,7 @@ double thread_cpu_seconds() {
 /// SolverKind, separable, n > 0: our eps_abs = 10^−n (GSL stays at 1e-8).
 void BM_VersusGsl(benchmark::State& state) {
   const Scene& s = scene(static_cast<int>(state.range(0)));
-  const auto kind = static_cast<SolverKind>(state.range(1));
-  SolverConfig cfg = bundle_config(s, kind);
-  cfg.separable = state.range(2) != 0;
-  if (state.range(3) > 0) cfg.eps_abs = std::pow(10.0, -static_cast<double>(state.range(3)));
+  const SolverConfig cfg = ours_config(s, state);
   const SolverConfig gcfg = bundle_config(s, SolverKind::CashKarp45);
   GslTracer gsl(s);
   double t_gsl = 0, t_ours = 0;
@@ -250,9 +257,7 @@ void BM_VersusGsl(benchmark::State& state) {
   state.counters["x_gsl"] = t_gsl / t_ours;
   state.counters["gsl_geod/s"] = n / t_gsl;
   state.counters["ours_geod/s"] = n / t_ours;
-  state.SetLabel(std::string(state.range(0) == 0 ? "Schwarzschild " : "KerrBL a=0.9 ") + solver_kind_name(kind) +
-                 (cfg.separable ? " Mino" : " coordinates") +
-                 (state.range(3) > 0 ? " eps 1e-" + std::to_string(state.range(3)) : " eps 1e-8"));
+  state.SetLabel(ours_label(state, cfg));
 }
 
 // ---- accuracy at equal tolerance -------------------------------------------------------------------

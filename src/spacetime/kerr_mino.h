@@ -53,6 +53,16 @@ struct KerrMinoConstants {
   double c = 0, K = 0, A = 0, B = 0;  ///< c = a²E − aL, K = (L − aE)² + Q, A = a²(E² − μ²), B = Q + L² − A
   bool axis = false;                  ///< L == 0: the ray can pass through the polar axis
 
+  /// The potentials of the first integrals (file comment): (dw/dσ)² = W(w), (dz/dσ)² = Z(z).
+  double W(double w) const {
+    const double w2 = w * w, P = E + c * w2;
+    return P * P - (1.0 - 2.0 * M * w + a2 * w2) * (mu2 + K * w2);
+  }
+  double Z(double z) const {
+    const double z2 = z * z;
+    return Q - B * z2 - A * z2 * z2;
+  }
+
   void derive() {
     a2 = a * a;
     c = a2 * E - a * L;
@@ -180,8 +190,7 @@ struct KerrMinoSystem {
     const double w = y[I::W], z = y[I::Z], dw = y[I::DW], dz = y[I::DZ];
     const double w2 = w * w, z2 = z * z;
     const double D = 1.0 - 2.0 * k.M * w + k.a2 * w2, P = k.E + k.c * w2;
-    const double Wv = P * P - D * (k.mu2 + k.K * w2);
-    const double Zv = k.Q - k.B * z2 - k.A * z2 * z2;
+    const double Wv = k.W(w), Zv = k.Z(z);
     const double s2 = std::max(1.0 - z2, 1e-300);
     const double wD = w2 * std::fabs(D);
     // One division: 1/(w²|D| (1 − z²) Σ), w²Σ = 1 + a²z²w².
@@ -194,10 +203,7 @@ struct KerrMinoSystem {
   }
   /// Re-projection onto the first integrals: |w'| = √W, |z'| = √Z (signs kept).
   void reproject(double* y, GeodesicType) const {
-    const double w = y[I::W], z = y[I::Z], w2 = w * w, z2 = z * z;
-    const double P = k.E + k.c * w2;
-    const double Wv = P * P - (1.0 - 2.0 * k.M * w + k.a2 * w2) * (k.mu2 + k.K * w2);
-    const double Zv = k.Q - k.B * z2 - k.A * z2 * z2;
+    const double Wv = k.W(y[I::W]), Zv = k.Z(y[I::Z]);
     if (Wv >= 0.0) y[I::DW] = std::copysign(std::sqrt(Wv), y[I::DW]);
     if (Zv >= 0.0) y[I::DZ] = std::copysign(std::sqrt(Zv), y[I::DZ]);
   }
