@@ -145,11 +145,13 @@ int main(int argc, char** argv) {
   const fs::path kerr = data / "geovis/scenes/kerrAccretionDisk.scm";
   const int fw = 200 / div, fh = 200 / div;
   const Filter rgb = Filter::RGB, pdz = Filter::RGBpdz, jac = Filter::RGBjac;
-  const double t_rgb = render_scene(kerr, search, fw, fh, 0, 1, &rgb).cpu;
-  const double t_pdz = render_scene(kerr, search, fw, fh, 0, 1, &pdz).cpu;
-  const double t_jac = render_scene(kerr, search, fw, fh, 0, 1, &jac).cpu;
+  const Measured m_rgb = render_scene(kerr, search, fw, fh, 0, 1, &rgb);
+  const Measured m_pdz = render_scene(kerr, search, fw, fh, 0, 1, &pdz);
+  const Measured m_jac = render_scene(kerr, search, fw, fh, 0, 1, &jac);
   std::printf("kerrAccretionDisk %dx%d CPU s: RGB %.2f, RGBpdz %.2f (%.2fx, goal <= 1.1x), RGBjac %.2f (%.1fx, goal <= 3x)\n",
-              fw, fh, t_rgb, t_pdz, t_pdz / t_rgb, t_jac, t_jac / t_rgb);
+              fw, fh, m_rgb.cpu, m_pdz.cpu, m_pdz.cpu / m_rgb.cpu, m_jac.cpu, m_jac.cpu / m_rgb.cpu);
+  std::printf("  steps/ray: RGB %.0f, RGBpdz %.0f, RGBjac %.0f\n", double(m_rgb.steps) / m_rgb.rays,
+              double(m_pdz.steps) / m_pdz.rays, double(m_jac.steps) / m_jac.rays);
 
   // Threads: wall time of the same render on 1 and 2 threads.
   const Measured one = render_scene(kerr, search, 400 / div, 400 / div, 0, 1);
