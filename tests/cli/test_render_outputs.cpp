@@ -256,6 +256,18 @@ TEST_F(RenderOutputs, TemporaryFilesOfKilledRunsAreRemoved) {
             std::string::npos) << err_;
 }
 
+TEST_F(RenderOutputs, FailedMovieLeavesNoTemporaryFile) {
+  const std::string scene = write_scene(2);
+  if (::access("/usr/bin/ffmpeg", X_OK) != 0) GTEST_SKIP() << "ffmpeg is not installed";
+  // ffmpeg knows no container for ".xyz" and fails; the frames stay, nothing else is left.
+  EXPECT_EQ(run_args({"render", scene, "-o", path("m_%d.png"), "--movie", path("m.xyz"), "-q"}), 1);
+  EXPECT_NE(err_.find("--movie: ffmpeg failed"), std::string::npos) << err_;
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"m_0.png", "m_1.png", "scene.scm"}));
+}
+
 // ---- signals -------------------------------------------------------------------------------------
 
 /// Starts build/geovis with stderr on a pseudo-terminal (so that it draws its progress bar), waits
