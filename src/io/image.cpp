@@ -88,15 +88,22 @@ std::string pnm_comment(const std::string& path) {
   return {};
 }
 
+/// Pixels in the type a file stores them in (or float).
+struct Pixels {
+  OIIO::TypeDesc type = OIIO::TypeDesc::FLOAT;
+  std::vector<unsigned char> bytes;
+};
+
 struct DecodedImage {
   int width = 0, height = 0, channels = 0;
-  std::vector<float> pixels;
+  Pixels pixels;
   std::string description;
 };
 
 /// Decodes every pixel of the file, or of `memory` (an encoded file; `path` then only names it
-/// and gives the format). Throws Error naming the file.
-DecodedImage decode_image(const std::string& path, const std::vector<unsigned char>* memory = nullptr) {
+/// and gives the format), as float or (`as_stored`) in the file's own pixel type. Throws Error
+/// naming the file.
+DecodedImage decode_image(const std::string& path, bool as_stored, const std::vector<unsigned char>* memory = nullptr) {
   const CodecOutputCapture quiet_codec;
   std::error_code ec;
   std::unique_ptr<OIIO::Filesystem::IOMemReader> reader;
@@ -119,8 +126,9 @@ DecodedImage decode_image(const std::string& path, const std::vector<unsigned ch
   d.height = spec.height;
   d.channels = spec.nchannels;
   if (d.width <= 0 || d.height <= 0 || d.channels <= 0) throw Error("cannot read image \"" + path + "\": empty image");
-  d.pixels.resize(size_t(d.width) * size_t(d.height) * size_t(d.channels));
-  if (!in->read_image(0, 0, 0, d.channels, OIIO::TypeDesc::FLOAT, d.pixels.data()))
+  d.pixels.type = as_stored ? spec.format : OIIO::TypeDesc::FLOAT;
+  d.pixels.bytes.resize(size_t(d.width) * size_t(d.height) * size_t(d.channels) * d.pixels.type.size());
+  if (!in->read_image(0, 0, 0, d.channels, d.pixels.type, d.pixels.bytes.data()))
     throw Error("cannot read image \"" + path + "\": " + first_line(in->geterror(), "read error") +
                 " (the file is truncated or damaged)");
   if (!is_pnm(lower_extension(path)))
@@ -131,37 +139,39 @@ DecodedImage decode_image(const std::string& path, const std::vector<unsigned ch
   return d;
 }
 
-/// The pixel checksum appended to a description: "; pixels fnv1a64:<hex>" of the decoded pixels.
+/// The pixel checksum appended to a description: "; pixels fnv1a64:<hex>" of the pixels as the
+/// file stores them.
 constexpr std::string_view kPixelsTag = "; pixels ";
 
-std::string pixels_checksum(const DecodedImage& d) {
-  return fnv1a64_text(fnv1a64(d.pixels.data(), d.pixels.size() * sizeof(float)));
-}
+std::string checksum(const Pixels& p) { return fnv1a64_text(fnv1a64(p.bytes.data(), p.bytes.size())); }
 
 /// The pixels as the file stores them: EXR keeps linear floats (half), the integer formats are
 /// clamped to [0,1] and quantised to the nearest code (JPEG is always 8 bit).
-std::vector<unsigned char> quantise(const Image& img, OIIO::TypeDesc type) {
-  std::vector<unsigned char> out(img.pixels.size() * type.size());
+Pixels stored_pixels(const Image& img, const std::string& ext, int bits) {
+  const bool jpeg = ext == ".jpg" || ext == ".jpeg";
+  Pixels p;
+  p.type = ext == ".exr" ? OIIO::TypeDesc::HALF
+                         : ((bits == 16 && !jpeg) ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+  const size_t n = img.pixels.size();
+  p.bytes.resize(n * p.type.size());
   const auto clamp01 = [](float v) { return std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f); };
-  if (type == OIIO::TypeDesc::UINT8) {
-    for (size_t i = 0; i < img.pixels.size(); ++i) out[i] = static_cast<unsigned char>(std::lround(clamp01(img.pixels[i]) * 255.0f));
+  if (p.type == OIIO::TypeDesc::HALF) {
+    OIIO::convert_pixel_values(OIIO::TypeDesc::FLOAT, img.pixels.data(), p.type, p.bytes.data(), int(n));
+  } else if (p.type == OIIO::TypeDesc::UINT8) {
+    for (size_t i = 0; i < n; ++i) p.bytes[i] = static_cast<unsigned char>(std::lround(clamp01(img.pixels[i]) * 255.0f));
   } else {
-    auto* o = reinterpret_cast<uint16_t*>(out.data());
-    for (size_t i = 0; i < img.pixels.size(); ++i) o[i] = static_cast<uint16_t>(std::lround(clamp01(img.pixels[i]) * 65535.0f));
+    auto* o = reinterpret_cast<std::uint16_t*>(p.bytes.data());
+    for (size_t i = 0; i < n; ++i) o[i] = static_cast<std::uint16_t>(std::lround(clamp01(img.pixels[i]) * 65535.0f));
   }
-  return out;
+  return p;
 }
 
 /// The complete image file in memory (OpenImageIO writing into an IOVecOutput).
-std::vector<unsigned char> encode_with_description(const std::string& path, const std::string& ext, const Image& img,
-                                                   int bits, const std::string& description) {
+std::vector<unsigned char> encode(const std::string& path, const std::string& ext, const Image& img,
+                                  const Pixels& pixels, const std::string& description) {
   auto out = OIIO::ImageOutput::create(path);
   if (!out) throw Error("cannot write \"" + path + "\": " + first_line(OIIO::geterror(), "no writer for this format"));
-  const bool is_float = ext == ".exr";
-  const bool jpeg = ext == ".jpg" || ext == ".jpeg";
-  const OIIO::TypeDesc type = is_float ? OIIO::TypeDesc::HALF
-                                       : ((bits == 16 && !jpeg) ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
-  OIIO::ImageSpec spec(img.width, img.height, img.channels, type);
+  OIIO::ImageSpec spec(img.width, img.height, img.channels, pixels.type);
   if (ext == ".tif" || ext == ".tiff") spec.attribute("compression", "none");
   if (!description.empty() && !is_pnm(ext)) spec.attribute("ImageDescription", description);
   std::vector<unsigned char> bytes;
@@ -170,16 +180,10 @@ std::vector<unsigned char> encode_with_description(const std::string& path, cons
   spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
   if (!out->supports("ioproxy"))
     throw Error("cannot write \"" + path + "\": this OpenImageIO cannot encode " + ext + " into memory");
-
   bool ok;
   {
     const CodecOutputCapture quiet_codec;
-    if (is_float) {
-      ok = out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, img.pixels.data());
-    } else {
-      const std::vector<unsigned char> pixels = quantise(img, type);
-      ok = out->open(path, spec) && out->write_image(type, pixels.data());
-    }
+    ok = out->open(path, spec) && out->write_image(pixels.type, pixels.bytes.data());
     ok = out->close() && ok;
   }
   if (!ok) throw Error("cannot write \"" + path + "\": " + first_line(out->geterror(), "the image could not be encoded"));
@@ -194,28 +198,35 @@ std::vector<unsigned char> encode_with_description(const std::string& path, cons
   return bytes;
 }
 
-/// The encoded file. A non-empty description gets the checksum of the pixels as they decode from
-/// this very file ("; pixels fnv1a64:..."), so that check_image_file() recognises a truncated or
-/// damaged file even where the codec decodes it without an error (JPEG, TIFF). Lossy JPEG is why
-/// the checksum is taken after decoding; metadata do not change the pixel encoding, so encoding
-/// again with the checksum in the description gives the same pixels.
+/// The encoded file. A non-empty description gets the checksum of the stored pixels ("; pixels
+/// fnv1a64:..."), so that check_image_file() recognises a truncated or damaged file even where the
+/// codec decodes it without an error (JPEG, TIFF). JPEG is lossy: its checksum is taken from the
+/// pixels decoded from a first encoding, then the file is encoded again with the checksum (metadata
+/// do not change how the pixels are encoded).
 std::vector<unsigned char> encode_image(const std::string& path, const std::string& ext, const Image& img, int bits,
                                         const std::string& description) {
-  std::vector<unsigned char> bytes = encode_with_description(path, ext, img, bits, description);
-  if (description.empty()) return bytes;
-  const std::string checksum = pixels_checksum(decode_image(path, &bytes));
-  return encode_with_description(path, ext, img, bits, description + std::string(kPixelsTag) + checksum);
+  const Pixels pixels = stored_pixels(img, ext, bits);
+  if (description.empty()) return encode(path, ext, img, pixels, description);
+  std::string sum;
+  if (ext == ".jpg" || ext == ".jpeg") {
+    const std::vector<unsigned char> first = encode(path, ext, img, pixels, description);
+    sum = checksum(decode_image(path, true, &first).pixels);
+  } else {
+    sum = checksum(pixels);
+  }
+  return encode(path, ext, img, pixels, description + std::string(kPixelsTag) + sum);
 }
 
 }  // namespace
 
 Image read_image(const std::string& path) {
-  const DecodedImage d = decode_image(path);
+  const DecodedImage d = decode_image(path, false);
   // Grey (1 or 2 channels) is replicated to RGB; alpha and extra channels are dropped.
   Image img(d.width, d.height, 3);
+  const auto* pixels = reinterpret_cast<const float*>(d.pixels.bytes.data());
   const size_t nc = size_t(d.channels);
   for (size_t i = 0; i < size_t(d.width) * size_t(d.height); ++i) {
-    const float* s = &d.pixels[i * nc];
+    const float* s = &pixels[i * nc];
     float* o = &img.pixels[i * 3];
     if (nc < 3) {
       o[0] = o[1] = o[2] = s[0];
@@ -231,14 +242,14 @@ Image read_image(const std::string& path) {
 ImageFileCheck check_image_file(const std::string& path) {
   ImageFileCheck c;
   try {
-    const DecodedImage d = decode_image(path);
+    const DecodedImage d = decode_image(path, true);
     c.width = d.width;
     c.height = d.height;
     c.description = d.description;
     const size_t tag = d.description.rfind(kPixelsTag);
     if (tag != std::string::npos) {
       c.description.resize(tag);
-      if (d.description.substr(tag + kPixelsTag.size()) != pixels_checksum(d)) {
+      if (d.description.substr(tag + kPixelsTag.size()) != checksum(d.pixels)) {
         c.problem = "cannot read image \"" + path + "\": the pixels do not match the checksum stored in the file "
                     "(the file is truncated or damaged)";
         return c;
