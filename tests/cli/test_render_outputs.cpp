@@ -268,6 +268,30 @@ TEST_F(RenderOutputs, FailedMovieLeavesNoTemporaryFile) {
   EXPECT_EQ(names, (std::vector<std::string>{"m_0.png", "m_1.png", "scene.scm"}));
 }
 
+TEST_F(RenderOutputs, TruncatedTexturePngIsOneErrorWithoutCodecLines) {
+  // A texture cut off in the middle (an interrupted download).
+  Image tex(64, 64, 3);
+  for (size_t i = 0; i < tex.pixels.size(); ++i) tex.pixels[i] = float((i * 7919) % 251) / 250.0f;
+  write_image(path("tex.png"), tex);
+  const std::string png = slurp(path("tex.png"));
+  { std::ofstream(path("tex.png"), std::ios::binary) << png.substr(0, png.size() / 2); }
+  const std::string scene = write_scene(1);
+  std::string text = slurp(scene);
+  const size_t shader = text.find("(init-shader");
+  ASSERT_NE(shader, std::string::npos);
+  text.insert(shader, "(init-texture '(type \"Image\") '(file \"tex.png\") '(id \"cut\"))\n");
+  const size_t red = text.find("'(objcolor \"red\")");
+  ASSERT_NE(red, std::string::npos);
+  text.replace(red, 18, "'(objcolor \"cut\")");
+  { std::ofstream(scene) << text; }
+  EXPECT_EQ(run_args({"render", scene, "-o", path("out.png"), "-q"}), 1);
+  EXPECT_NE(err_.find("geovis: error: "), std::string::npos) << err_;
+  EXPECT_NE(err_.find("tex.png"), std::string::npos) << err_;
+  EXPECT_EQ(err_.find("libpng"), std::string::npos) << "raw codec output: " << err_;
+  EXPECT_EQ(count_lines_with(err_, ""), 1) << err_;  // one line: the geovis error
+  EXPECT_FALSE(exists("out.png"));
+}
+
 // ---- signals -------------------------------------------------------------------------------------
 
 /// Starts build/geovis with stderr on a pseudo-terminal (so that it draws its progress bar), waits
