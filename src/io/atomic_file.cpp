@@ -107,13 +107,14 @@ void AtomicFile::fail(const std::string& what, int err) {
 
 void AtomicFile::write(std::string_view bytes) {
   if (done_) throw Error("cannot write \"" + target_ + "\": the file is already closed");
-  const long long fail_at = g_fail_at_byte.load();
-  const off_t pos = ::lseek(fd_, 0, SEEK_CUR);
   size_t limit = bytes.size();
   bool inject = false;
-  if (fail_at >= 0 && pos >= 0 && pos + static_cast<long long>(bytes.size()) > fail_at) {
-    limit = fail_at > pos ? size_t(fail_at - pos) : 0;
-    inject = true;
+  if (const long long fail_at = g_fail_at_byte.load(); fail_at >= 0) {
+    const off_t pos = ::lseek(fd_, 0, SEEK_CUR);
+    if (pos >= 0 && pos + static_cast<long long>(bytes.size()) > fail_at) {
+      limit = fail_at > pos ? size_t(fail_at - pos) : 0;
+      inject = true;
+    }
   }
   size_t done = 0;
   while (done < limit) {
