@@ -443,7 +443,7 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
       try {
         r = render(fj.job, ro);
       } catch (const RenderInterrupted& e) {
-        return report_interrupted(e, interrupt.signal_number(), f, rendered);
+        return report_interrupted(e, interrupt.signal_number(), f, rendered + skipped);
       }
       // Data files first, the image last: an existing image means a complete frame (--resume).
       if (!fj.data_files_wanted.empty()) {
