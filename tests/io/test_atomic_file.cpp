@@ -214,12 +214,14 @@ TEST(AtomicFile, FullFileSystemEveryFormatNewAndExisting) {
       const std::string before = slurp(existing);
       fill(t, free_bytes);
       for (const std::string& target : {fresh, existing}) {
+        testing::internal::CaptureStderr();
         try {
           write_image(target, noise_image(96, 96, 4), 16);  // needs more than the space left
           ADD_FAILURE() << "no error for " << target;
         } catch (const Error& e) {
           expect_names_file_and_reason(e, target, "No space left on device");
         }
+        EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << "the codec printed its own message";
       }
       EXPECT_FALSE(fs::exists(fresh));
       EXPECT_EQ(slurp(existing), before) << "the existing file changed";
