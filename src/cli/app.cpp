@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cstring>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,12 @@ int run(int argc, const char* const* argv) {
     return app.exit(e);
   } catch (const Error& e) {
     std::cerr << "geovis: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    // Sizes are checked against the memory before rendering (render/frame_limits.h); this is
+    // what is left (a scene that builds a huge mesh, memory taken by other programs).
+    std::cerr << "geovis: error: out of memory (the scene or the resolution needs more memory than is "
+                 "available; lower --res or --supersample, or simplify the scene)\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "geovis: internal error: " << e.what() << "\n";

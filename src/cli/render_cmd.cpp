@@ -12,16 +12,23 @@
 
 #include <algorithm>
 #include <cctype>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <set>
 #include <sstream>
 
 #include "cli/command.h"
+#include "cli/interrupt.h"
+#include "cli/render_outputs.h"
 #include "core/error.h"
+#include "io/atomic_file.h"
 #include "io/image.h"
+#include "render/camera.h"
 #include "render/data_files.h"
+#include "render/frame_limits.h"
 #include "render/renderer.h"
 #include "scene/builder.h"
 #include "scene/default_scene.h"
@@ -191,11 +198,17 @@ std::pair<int, int> parse_res(const std::string& s) {
   if (x == std::string::npos) return bad();
   const std::string w = s.substr(0, x), h = s.substr(x + 1);
   if (w.empty() || h.empty() || w.find_first_not_of("0123456789") != std::string::npos ||
-      h.find_first_not_of("0123456789") != std::string::npos || w.size() > 6 || h.size() > 6)
+      h.find_first_not_of("0123456789") != std::string::npos)
     return bad();
-  const int wi = std::stoi(w), hi = std::stoi(h);
-  if (wi <= 0 || hi <= 0) throw Error("--res: width and height must be positive, found \"" + s + "\"");
-  return {wi, hi};
+  auto side = [&](const std::string& digits, const char* name) {
+    if (digits.size() > 18)  // beyond long long; far beyond the limit
+      throw Error("--res " + s + ": the " + name + " " + digits + " is larger than the limit of " +
+                  std::to_string(kMaxImageSide) + " pixels per side");
+    return std::stoll(digits);
+  };
+  const long long wi = side(w, "width"), hi = side(h, "height");
+  check_frame_size("--res " + s, wi, hi, false);
+  return {int(wi), int(hi)};
 }
 
 std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector<std::string>& defs) {
@@ -253,15 +266,79 @@ int run_program(const std::vector<std::string>& args, bool quiet) {
 
 void make_movie(const RenderArgs& a, const std::string& ffmpeg, const std::string& pattern, int first,
                 bool quiet) {
+  // ffmpeg writes a temporary file (same extension, so it picks the same container), which
+  // replaces the movie only when complete.
+  AtomicFile movie(a.movie);
   // yuv420p needs even dimensions: pad by one pixel when needed.
   const std::vector<std::string> args = {ffmpeg, "-y", "-loglevel", "error", "-framerate", "25", "-start_number",
                                          std::to_string(first), "-f", "image2", "-i", pattern, "-vf",
-                                         "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", a.movie};
+                                         "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", movie.temp_path()};
   const int rc = run_program(args, false);
   if (rc != 0)
     throw Error("--movie: ffmpeg failed (exit status " + std::to_string(rc) + ") making \"" + a.movie +
                 "\"; the frames are kept");
+  movie.commit();
   if (!quiet) std::cerr << "movie: " << a.movie << "\n";
+}
+
+// ---- outputs: folders, --resume, interruption ----------------------------------------------------
+
+/// Creates the folders of the first frame and the movie, checks that they are writable, and
+/// removes temporary files that killed runs left there.
+void prepare_output_folders(const std::vector<std::string>& outputs, bool quiet) {
+  for (const std::string& o : outputs) {
+    if (o.empty()) continue;
+    for (const std::string& stale : prepare_output_folder(fs::path(o).parent_path().string()))
+      if (!quiet) std::cerr << "removed \"" << stale << "\", a temporary file left by an interrupted run\n";
+  }
+}
+
+/// Everything besides the frame number that determines the pixels; its hash goes into every image
+/// so that --resume recognises frames of other settings. (Files the scene loads or textures it
+/// reads are not included: a changed texture is not detected.)
+std::vector<std::string> render_settings(const RenderArgs& a) {
+  std::vector<std::string> s = {"geovis render 1"};
+  if (a.scene.empty()) {
+    s.push_back(default_scene_text());
+  } else {
+    std::ifstream f(a.scene, std::ios::binary);
+    std::ostringstream text;
+    text << f.rdbuf();
+    s.push_back(text.str());
+  }
+  for (const auto& d : a.defines) s.push_back("--define " + d);
+  s.push_back("--res " + a.res);
+  s.push_back("--supersample " + std::to_string(a.supersample));
+  for (const auto& t : a.texture_paths) s.push_back("--texture-path " + t);
+  return s;
+}
+
+std::string frame_description(std::vector<std::string> settings, int frame, const std::string& eye) {
+  settings.push_back("frame " + std::to_string(frame) + " " + eye);
+  return settings_description(settings);
+}
+
+/// --resume: true when every image of the frame is complete; otherwise says (one line) why the
+/// frame is rendered again, unless no image of it exists yet.
+bool frame_is_complete(const std::string& path, int frame, const std::vector<FrameJob>& jobs,
+                       const std::vector<std::string>& settings, bool quiet) {
+  for (const FrameJob& fj : jobs) {
+    const ResumeCheck c = check_resume(eye_path(path, fj.eye), fj.job.camera->width(), fj.job.camera->height(),
+                                       frame_description(settings, frame, fj.eye));
+    if (c.skip) continue;
+    if (!c.why.empty() && !quiet) std::cerr << "--resume: frame " << frame << " is rendered again: " << c.why << "\n";
+    return false;
+  }
+  return true;
+}
+
+/// SIGINT/SIGTERM stopped the render of `frame`: says so and returns 128 + the signal.
+int report_interrupted(const RenderInterrupted& e, int signal_number, int frame, int frames_written) {
+  std::cerr << "geovis: " << e.what() << ", nothing written";
+  if (frames_written > 0)
+    std::cerr << " (frame " << frame << "; the " << frames_written << " frame(s) before it are complete)";
+  std::cerr << "\n";
+  return 128 + (signal_number > 0 ? signal_number : SIGINT);
 }
 
 // ---- the command -------------------------------------------------------------------------------
@@ -277,8 +354,9 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
   std::optional<std::pair<int, int>> res;
   if (!a.res.empty()) res = parse_res(a.res);
   if (a.threads < 0) throw Error("--threads: expected 0 (all cores) or a positive number, found " + std::to_string(a.threads));
-  if (a.supersample < 1 || a.supersample > 64)
-    throw Error("--supersample: expected 1 to 64 samples per pixel side, found " + std::to_string(a.supersample));
+  if (a.supersample < 1 || a.supersample > kMaxSupersample)
+    throw Error("--supersample: expected 1 to " + std::to_string(kMaxSupersample) +
+                " samples per pixel side, found " + std::to_string(a.supersample));
   if (!a.movie.empty() && to_lower(split_ext(a.movie).second).empty())
     throw Error("--movie: \"" + a.movie + "\": expected a file name with an extension such as .mp4");
   // Look for ffmpeg before rendering, so that a long render does not fail at its very end.
@@ -317,6 +395,9 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
 
   const int count = builder.device_count();
   if (count == 0) throw Error("the scene has no init-device: nothing to render");
+  if (count > kMaxFrames)
+    throw Error("the scene has " + std::to_string(count) + " frames (init-device); the limit is " +
+                std::to_string(kMaxFrames));
   auto [first, last] = a.frames.empty() ? std::pair<int, int>{0, count - 1} : parse_frames(a.frames, count);
   // Several frames: OUT is a pattern or gets the frame number; one frame goes to OUT exactly.
   // The default name is numbered whenever the scene is a sequence.
@@ -324,6 +405,9 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
   const std::string out = a.out.empty() ? base + (count > 1 ? "_%04d.png" : ".png") : a.out;
   find_frame_pattern(out);  // validates the pattern
   check_image_extension(out);
+  // Before anything is rendered: an unwritable folder is found now, not after the first frame.
+  prepare_output_folders({frame_path(out, first, sequence), a.movie}, quiet);
+  const std::vector<std::string> settings = render_settings(a);
 
   std::ostringstream action_log;
   builder.run_actions(action_log);
@@ -331,16 +415,17 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
 
   int rendered = 0, skipped = 0;
   bool stereo = false;
+  const InterruptHandler interrupt;
   for (int f = first; f <= last; ++f) {
     const std::string path = frame_path(out, f, sequence);
-    if (a.resume && (exists(path) || (exists(eye_path(path, "left")) && exists(eye_path(path, "right"))))) {
-      ++skipped;
-      if (verbose) std::cerr << "frame " << f << ": " << path << " exists, skipped (--resume)\n";
-      continue;
-    }
     const std::vector<FrameJob> jobs = builder.build(f);
     stereo = stereo || jobs.size() == 2;
     print_warnings(diag, quiet, printed);
+    if (a.resume && frame_is_complete(path, f, jobs, settings, quiet)) {
+      ++skipped;
+      if (verbose) std::cerr << "frame " << f << ": " << path << " is complete, skipped (--resume)\n";
+      continue;
+    }
     for (const FrameJob& fj : jobs) {
       const std::string img = eye_path(path, fj.eye);
       const fs::path parent = fs::path(img).parent_path();
@@ -353,14 +438,20 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
       ro.threads = a.threads;
       ro.progress = !quiet;
       ro.label = "frame " + std::to_string(f) + (fj.eye.empty() ? "" : " " + fj.eye) + " -> " + img;
-      const RenderResult r = render(fj.job, ro);
+      ro.cancel = interrupt.flag();
+      RenderResult r;
+      try {
+        r = render(fj.job, ro);
+      } catch (const RenderInterrupted& e) {
+        return report_interrupted(e, interrupt.signal_number(), f, rendered + skipped);
+      }
       // Data files first, the image last: an existing image means a complete frame (--resume).
       if (!fj.data_files_wanted.empty()) {
         const std::string written =
             write_filter_data(img, fj.job.filter, r.image.width, r.image.height, r.data);
         if (verbose && !written.empty()) std::cerr << "  data: " << written << "\n";
       }
-      write_image(img, r.image);
+      write_image(img, r.image, 8, frame_description(settings, f, fj.eye));
       if (verbose)
         std::cerr << "  " << r.stats.rays << " rays, " << r.stats.steps << " steps, " << r.stats.rhs_evals
                   << " right-hand-side evaluations, " << r.stats.seconds << " s\n";

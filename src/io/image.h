@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "io/atomic_file.h"
+
 namespace geovis {
 
 /// Float RGB(A) image, row 0 = top, channels interleaved.
@@ -17,16 +19,30 @@ struct Image {
 };
 
 /// Reads any format OpenImageIO reads (PNG, TIFF, JPEG, PPM, EXR, HDR, ...), converted to float
-/// RGB (grey is replicated, alpha dropped). Throws Error naming the file when it cannot be read.
+/// RGB (grey is replicated, alpha dropped). Throws Error naming the file when it cannot be read
+/// (one line: the codec's own messages are kept off the terminal).
 Image read_image(const std::string& path);
 
 /// Writes the image; the format follows the extension (.png, .tif/.tiff, .ppm, .exr, .jpg).
-/// `bits` = 8 or 16 (PNG/TIFF/PPM). Atomic: written to a temporary file in the same folder and
-/// renamed, so an interrupted write never leaves a truncated image. Throws Error on failure.
-void write_image(const std::string& path, const Image& img, int bits = 8);
+/// `bits` = 8 or 16 (PNG/TIFF/PPM). A non-empty `description` is stored in the file
+/// (ImageDescription; a header comment in PPM) together with a checksum of the pixels, and read
+/// back and verified by check_image_file(). The file is encoded in memory and
+/// written with write_file_atomic (io/atomic_file.h): a failed write leaves the destination
+/// untouched. Throws Error naming the file and the OS reason.
+void write_image(const std::string& path, const Image& img, int bits = 8, const std::string& description = {});
 
-/// Writes `data` to `path` atomically (temporary file + rename). Throws Error on failure.
-void write_file_atomic(const std::string& path, const std::string& data);
+/// What check_image_file() found: whether every pixel decodes (and matches the pixel checksum
+/// write_image stored), and the size and description.
+struct ImageFileCheck {
+  bool readable = false;
+  std::string problem;  ///< why not readable (an error naming the file)
+  int width = 0, height = 0;
+  std::string description;  ///< as given to write_image (without the pixel checksum)
+};
+
+/// Decodes the whole file and verifies the pixel checksum when there is one (a truncated file is
+/// not readable); never throws for a bad file.
+ImageFileCheck check_image_file(const std::string& path);
 
 /// Finds a file: as given (absolute, or relative to the working directory), then relative to each
 /// of `search_dirs`. Returns the path found or throws Error naming the file and every place

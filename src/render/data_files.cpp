@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "core/error.h"
-#include "io/image.h"
+#include "io/atomic_file.h"
 
 namespace geovis {
 

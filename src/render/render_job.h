@@ -2,6 +2,7 @@
 // hot path). scene/builder creates one per device (= frame); tests build them in C++.
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
@@ -49,6 +50,9 @@ struct RenderOptions {
   int tile_size = 16;
   bool progress = true; ///< progress bar (only shown on a terminal)
   std::string label;    ///< shown in the progress line (e.g. frame number)
+  /// When set (e.g. by a SIGINT handler), the workers stop before their next tile and render()
+  /// throws RenderInterrupted (render/renderer.h).
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 /// Per-pixel physics data (the RGBpdz/RGBjac/RGBpt filters).

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "render/camera.h"
+#include "render/frame_limits.h"
 #include "render/tracer.h"
 
 namespace geovis {
@@ -19,6 +20,17 @@ void supersample_offsets(int n, int a, int b, double& ox, double& oy) {
   oy = (b + 0.5) / n;
 }
 
+RenderInterrupted::RenderInterrupted(int tiles_done, int tiles_total)
+    : Error("interrupted: " + std::to_string(tiles_done) + " of " + std::to_string(tiles_total) + " tiles done"),
+      tiles_done_(tiles_done),
+      tiles_total_(tiles_total) {}
+
+namespace {
+
+bool cancelled(const RenderOptions& opt) { return opt.cancel && opt.cancel->load(std::memory_order_relaxed); }
+
+}  // namespace
+
 RenderResult render(const RenderJob& job, const RenderOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   const Tracer tracer(job);  // validates the job
@@ -26,6 +38,7 @@ RenderResult render(const RenderJob& job, const RenderOptions& opt) {
   const int W = cam.width(), H = cam.height();
   if (W <= 0 || H <= 0) throw Error("render: the camera has an empty resolution");
   if (opt.tile_size < 1) throw Error("render: tile size must be positive");
+  check_frame_size("render", W, H, job.filter != Filter::RGB);
 
   RenderResult result;
   result.image = Image(W, H, 3);
@@ -40,7 +53,7 @@ RenderResult render(const RenderJob& job, const RenderOptions& opt) {
   if (n_threads > n_tiles) n_threads = n_tiles;
 
   Progress progress(long(W) * H, opt.label, opt.progress);
-  std::atomic<int> next_tile{0};
+  std::atomic<int> next_tile{0}, tiles_done{0};
   std::atomic<bool> abort{false};
   std::exception_ptr error;
   std::mutex error_mutex;
@@ -55,7 +68,7 @@ RenderResult render(const RenderJob& job, const RenderOptions& opt) {
   auto worker = [&](int tid) {
     TraceStats& st = stats[size_t(tid)];
     try {
-      while (!abort.load(std::memory_order_relaxed)) {
+      while (!abort.load(std::memory_order_relaxed) && !cancelled(opt)) {
         const int tile = next_tile.fetch_add(1, std::memory_order_relaxed);
         if (tile >= n_tiles) break;
         const int x0 = (tile % tiles_x) * ts, y0 = (tile / tiles_x) * ts;
@@ -86,6 +99,7 @@ RenderResult render(const RenderJob& job, const RenderOptions& opt) {
           }
         }
         progress.add(long(x1 - x0) * (y1 - y0));
+        tiles_done.fetch_add(1, std::memory_order_relaxed);
       }
     } catch (...) {
       std::lock_guard lock(error_mutex);
@@ -103,6 +117,7 @@ RenderResult render(const RenderJob& job, const RenderOptions& opt) {
     for (auto& th : pool) th.join();
   }
   if (error) std::rethrow_exception(error);
+  if (tiles_done.load() < n_tiles) throw RenderInterrupted(tiles_done.load(), n_tiles);
   progress.finish();
 
   TraceStats total;

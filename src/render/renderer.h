@@ -3,12 +3,25 @@
 // output does not depend on the schedule. Types in render/render_job.h.
 #pragma once
 
+#include "core/error.h"
 #include "render/render_job.h"
 
 namespace geovis {
 
-/// Renders one image (and the filter data). Throws Error for an inconsistent job; an error thrown
-/// while tracing stops all workers and is rethrown.
+/// render() stopped because RenderOptions::cancel was set; nothing of the frame is returned.
+class RenderInterrupted : public Error {
+ public:
+  RenderInterrupted(int tiles_done, int tiles_total);
+  int tiles_done() const { return tiles_done_; }
+  int tiles_total() const { return tiles_total_; }
+
+ private:
+  int tiles_done_, tiles_total_;
+};
+
+/// Renders one image (and the filter data). Throws Error for an inconsistent job or a frame that
+/// does not fit in memory (render/frame_limits.h); an error thrown while tracing stops all
+/// workers and is rethrown.
 RenderResult render(const RenderJob& job, const RenderOptions& options = {});
 
 /// Sample positions of n x n supersampling inside the unit pixel square (stratified centres

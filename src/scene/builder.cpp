@@ -20,6 +20,7 @@
 #include <set>
 #include <sstream>
 
+#include "io/atomic_file.h"
 #include "io/image.h"
 #include "render/build_context.h"
 #include "render/camera.h"
@@ -1337,8 +1338,11 @@ void SceneBuilder::run_actions(std::ostream& out) const {
       std::ostringstream data;
       mo->write(data);
       const std::string file = ps.get_string("file");
-      std::ofstream f(file);
-      if (!(f << data.str())) ps.fail("file", "cannot write \"" + file + "\"");
+      try {
+        write_file_atomic(file, data.str());
+      } catch (const Error& e) {
+        ps.fail("file", e.what());
+      }
       continue;
     }
     if (cmd == "calc-ray" || cmd == "calc-proj-ray") {
@@ -1424,8 +1428,11 @@ void SceneBuilder::run_actions(std::ostream& out) const {
         return StepAction::Continue;
       };
       m.integrate(cfg, sys, y, 0.0, StepCallback(cb));
-      std::ofstream f(file);
-      if (!(f << txt.str())) ps.fail("filename", "cannot write \"" + file + "\"");
+      try {
+        write_file_atomic(file, txt.str());
+      } catch (const Error& e) {
+        ps.fail("filename", e.what());
+      }
       continue;
     }
   }

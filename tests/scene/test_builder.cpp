@@ -1,11 +1,13 @@
 // Scene builder semantics (catalogue §1, §8-§10), on scenes written directly as command calls.
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "io/atomic_file.h"
 #include "render/camera.h"
 #include "scene/builder.h"
 #include "spacetime/tetrad.h"
@@ -427,6 +429,45 @@ TEST(SceneBuilder, CalcRayInMinkowskiIsAStraightLine) {
   // It stops at the raygen's bounding box |y| <= 20 (first point beyond it included).
   EXPECT_GT(y, 19.0);
   std::filesystem::remove(file);
+}
+
+TEST(SceneBuilder, CalcRayWriteErrorsKeepTheOldFileAndSayWhy) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "geovis_test_calc_ray_errors";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  auto run_calc_ray = [](const std::string& file) {
+    SceneText s = minkowski_base();
+    s.add("calc-ray", {{"filename", file}, {"locted", "locTedObs"}, {"pos", vec({0, -10, 0, 0})}, {"dir", vec({90, 90})}});
+    SceneBuilder b(s.desc(), {});
+    std::ostringstream log;
+    b.run_actions(log);
+  };
+  const std::string missing = (dir / "no-such-folder" / "ray.txt").string();
+  try {
+    run_calc_ray(missing);
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("\"" + missing + "\""), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("No such file or directory"), std::string::npos) << e.what();
+  }
+  // A disk that fills up while writing: the old file stays as it was.
+  const std::string file = (dir / "ray.txt").string();
+  write_file_atomic(file, "old ray\n");
+  fail_writes_at_byte_for_testing(10, ENOSPC);
+  std::string message;
+  try {
+    run_calc_ray(file);
+  } catch (const SceneError& e) {
+    message = e.what();
+  }
+  fail_writes_at_byte_for_testing(-1, 0);
+  EXPECT_NE(message.find("No space left on device"), std::string::npos) << message;
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "old ray");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(SceneBuilder, GvsPrintListsTheParameters) {
