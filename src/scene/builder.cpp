@@ -1316,7 +1316,7 @@ std::string action_output_path(const ParamSet& ps, const std::string& key, const
   if (opts.confine_output) {
     std::error_code ec;
     const fs::path root = fs::weakly_canonical(opts.output_dir.empty() ? fs::path(".") : fs::path(opts.output_dir), ec);
-    const fs::path target = fs::weakly_canonical(p, ec);
+    const fs::path target = fs::weakly_canonical(fs::absolute(p, ec), ec);
     const bool below = std::mismatch(root.begin(), root.end(), target.begin(), target.end()).first == root.end() &&
                        target != root;
     if (ec || !below)
