@@ -73,7 +73,7 @@ int run(int argc, const char* const* argv) {
     std::cerr << "geovis: error: " << e.what() << "\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "geovis: internal error: " << e.what() << "\n";
+    std::cerr << "geovis: error: internal error: " << e.what() << "\n";
     return 2;
   }
   return opts.exit_code;

@@ -44,7 +44,7 @@ int run_check(const CheckArgs& a, const GlobalOptions& g) {
   for (const auto& t : a.texture_paths) bopts.search_paths.push_back(t);
   bopts.search_paths.push_back(".");
   bopts.diag = &diag;
-  set_action_output(bopts, a.scene_args, "");
+  set_action_output(bopts, a.scene_args);
   bopts.write_action_files = false;
   SceneBuilder builder(std::move(scene), bopts);
   require_devices(builder);

@@ -300,8 +300,7 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
   bopts.resolution = res;
   bopts.supersample = a.supersample;
   bopts.diag = &diag;
-  const std::string out_dir = fs::path(a.out).parent_path().string();
-  set_action_output(bopts, a.scene_args, out_dir);
+  set_action_output(bopts, a.scene_args);
   SceneBuilder builder(std::move(scene), bopts);
   print_warnings(diag, quiet, printed);
 

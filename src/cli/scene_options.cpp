@@ -49,8 +49,8 @@ SchemeOptions scheme_options(const SceneArgs& args, Diagnostics* diag, bool quie
   return opts;
 }
 
-void set_action_output(BuildOptions& bopts, const SceneArgs& args, const std::string& output_dir) {
-  bopts.output_dir = output_dir;
+void set_action_output(BuildOptions& bopts, const SceneArgs& args) {
+  bopts.output_dir.clear();
   bopts.confine_output = !args.trust_scene;
 }
 

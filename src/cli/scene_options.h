@@ -27,8 +27,9 @@ void add_scene_options(CLI::App* sub, SceneArgs& args);
 /// `quiet` (-q) also discards what the scene prints.
 SchemeOptions scheme_options(const SceneArgs& args, Diagnostics* diag, bool quiet);
 
-/// An action's files go to `output_dir`, confined to it unless the scene is trusted.
-void set_action_output(BuildOptions& bopts, const SceneArgs& args, const std::string& output_dir);
+/// The files of the scene's actions (gvs-print-motion, calc-ray, calc-proj-ray) go to the current
+/// folder, as GeoViS writes them, and (unless the scene is trusted) only below it.
+void set_action_output(BuildOptions& bopts, const SceneArgs& args);
 
 /// Throws the error `render` gives for a scene it cannot render (no init-device).
 void require_devices(const SceneBuilder& builder);
