@@ -1,5 +1,5 @@
-// libFuzzer target over the scene pipeline: Scheme text -> evaluate_scene_string -> SceneBuilder
-// -> build(device 0). Any geovis::Error is an expected outcome for malformed input; a crash, a
+// libFuzzer target over the scene pipeline: Scheme text -> evaluate_scene_string (in the sandbox)
+// -> SceneBuilder -> build(device 0). Any geovis::Error is an expected outcome for malformed input; a crash, a
 // sanitizer report, a leak or an exception of another type is a bug.
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   opts.diag = &diag;
   opts.max_calls = 2000;
   opts.time_limit_seconds = 2.0;  // endless Scheme loops are the scene's problem, not a finding
+  opts.memory_limit_bytes = size_t{256} << 20;  // so is an unbounded allocation
+  opts.print_output = false;
   try {
     geovis::SceneDescription scene = geovis::evaluate_scene_string(text, "fuzz.scm", opts);
     geovis::BuildOptions bopts;

@@ -14,6 +14,7 @@ PACKAGES=(
   libgtest-dev             # tests
   libbenchmark-dev libgsl-dev  # benchmarks (GSL is the reference integrator)
   ffmpeg                   # --movie (optional at run time)
+  clang libclang-rt-14-dev # the fuzz_smoke test: libFuzzer, AddressSanitizer, UndefinedBehaviorSanitizer
 )
 
 missing=()

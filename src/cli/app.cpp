@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <string>
@@ -24,6 +25,9 @@ bool register_command(const char* name, CommandSetup setup) {
 
 int run(int argc, const char* const* argv) {
   CLI::App app{"geovis - general-relativistic ray tracer (GeoViS-compatible scenes)"};
+  app.footer(
+      "geovis [render options] [SCENE] is geovis render: without SCENE it renders the built-in scene.\n"
+      "geovis SUBCOMMAND --help describes a subcommand's options.");
   app.set_version_flag("--version", "geovis 0.1.0");
   GlobalOptions opts;
   app.add_flag("-q,--quiet", opts.quiet, "print nothing but errors");
@@ -43,13 +47,29 @@ int run(int argc, const char* const* argv) {
     if (a == "-h" || a == "--help" || a == "--version") has_command = true;
     for (auto& [name, setup] : cmds) has_command = has_command || a == name;
   }
+  if (!has_command && args.size() > 1 && !args[1].empty() && args[1][0] != '-') {
+    // `geovis rendr x.scm`: a first word that is no file and no scene name is a mistyped command.
+    const std::string& word = args[1];
+    std::error_code ec;
+    if (!std::filesystem::exists(word, ec) && to_lower(std::filesystem::path(word).extension().string()) != ".scm") {
+      std::vector<std::string> names;
+      for (auto& [name, setup] : cmds) names.emplace_back(name);
+      std::cerr << "geovis: error: \"" << word << "\" is neither a subcommand (" << join(names)
+                << ") nor a scene file" << did_you_mean(word, names) << "\n";
+      return 1;
+    }
+  }
   if (!has_command) args.insert(args.begin() + 1, "render");
   std::vector<const char*> cargs;
   for (auto& a : args) cargs.push_back(a.c_str());
   try {
     app.parse(static_cast<int>(cargs.size()), cargs.data());
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version end the parse with success; every other parse error is reported as
+    // geovis reports errors.
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    std::cerr << "geovis: error: " << e.what() << " (--help lists the options)\n";
+    return 1;
   } catch (const Error& e) {
     std::cerr << "geovis: error: " << e.what() << "\n";
     return 1;
@@ -60,7 +80,7 @@ int run(int argc, const char* const* argv) {
                  "available; lower --res or --supersample, or simplify the scene)\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "geovis: internal error: " << e.what() << "\n";
+    std::cerr << "geovis: error: internal error: " << e.what() << "\n";
     return 2;
   }
   return opts.exit_code;

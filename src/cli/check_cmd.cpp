@@ -1,11 +1,15 @@
-// `geovis check SCENE [--define NAME=VALUE]... [--texture-path DIR]... [--strict] [--res WxH]`:
-// evaluates the scene and builds every device without rendering (so every error a render would
-// meet while setting up a frame is found), then prints a summary. Exit status 0 when fine.
+// `geovis check SCENE [--define NAME=VALUE]... [--texture-path DIR]... [--strict]
+//   [scene options: cli/scene_options.h]`:
+// evaluates the scene, builds every device and runs its actions without rendering or writing a
+// file (so every error a render would meet while setting up is found), then prints a summary.
+// Exit status 0 when fine.
 #include <filesystem>
 #include <iostream>
 #include <set>
+#include <sstream>
 
 #include "cli/command.h"
+#include "cli/scene_options.h"
 #include "core/error.h"
 #include "scene/builder.h"
 #include "scene/scheme.h"
@@ -19,7 +23,7 @@ namespace fs = std::filesystem;
 struct CheckArgs {
   std::string scene;
   std::vector<std::string> texture_paths;
-  std::vector<std::string> defines;
+  SceneArgs scene_args;
   bool strict = false;
   bool quiet = false;
 };
@@ -28,13 +32,7 @@ int run_check(const CheckArgs& a, const GlobalOptions& g) {
   const bool quiet = a.quiet || g.quiet;
   Diagnostics diag;
   diag.strict = a.strict;
-  SchemeOptions sopts;
-  sopts.diag = &diag;
-  for (const auto& d : a.defines) {
-    const size_t eq = d.find('=');
-    if (eq == std::string::npos || eq == 0) throw Error("--define: expected NAME=VALUE, found \"" + d + "\"");
-    sopts.defines.emplace_back(d.substr(0, eq), d.substr(eq + 1));
-  }
+  const SchemeOptions sopts = scheme_options(a.scene_args, &diag, quiet);
   for (const auto& dir : a.texture_paths)
     if (!fs::is_directory(dir)) throw Error("--texture-path: \"" + dir + "\" is not a directory");
   if (!fs::exists(a.scene)) throw Error("scene file \"" + a.scene + "\" does not exist");
@@ -46,9 +44,14 @@ int run_check(const CheckArgs& a, const GlobalOptions& g) {
   for (const auto& t : a.texture_paths) bopts.search_paths.push_back(t);
   bopts.search_paths.push_back(".");
   bopts.diag = &diag;
+  set_action_output(bopts, a.scene_args);
+  bopts.write_action_files = false;
   SceneBuilder builder(std::move(scene), bopts);
+  require_devices(builder);
   int images = 0;
   for (int d = 0; d < builder.device_count(); ++d) images += static_cast<int>(builder.build(d).size());
+  std::ostringstream action_log;  // gvs-print output: what render prints, not a check result
+  builder.run_actions(action_log);
   if (!quiet) {
     std::set<std::string> printed;  // a camera rebuilt for every frame repeats its warnings
     for (const auto& w : diag.warnings())
@@ -68,8 +71,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
                   "extra folder to search for textures and meshes (a file the scene names by a path that "
                   "does not exist here is looked up by its file name)")
       ->allow_extra_args(false);
-  sub->add_option("--define", a->defines, "override a top-level (define NAME ...) of the scene")
-      ->allow_extra_args(false);
+  add_scene_options(sub, a->scene_args);
   sub->add_flag("--strict", a->strict, "treat warnings (unknown keys, ...) as errors");
   sub->add_flag("-q,--quiet", a->quiet, "print nothing but errors");
   sub->callback([a, &g]() {

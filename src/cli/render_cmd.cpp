@@ -1,6 +1,6 @@
 // `geovis render [SCENE] [-o OUT] [--frames A:B] [--res WxH] [--threads N] [--supersample N]
 //                [--texture-path DIR]... [--define NAME=VALUE]... [--strict] [--resume]
-//                [--movie out.mp4] [--quiet] [--verbose]`
+//                [--movie out.mp4] [--quiet] [--verbose] [scene options: cli/scene_options.h]`
 //
 // Evaluates the scene (the built-in one without SCENE), builds each device (= frame) and renders
 // it. Every finished frame is written atomically (io/image.h) before the next one starts, so a
@@ -23,6 +23,7 @@
 #include "cli/command.h"
 #include "cli/interrupt.h"
 #include "cli/render_outputs.h"
+#include "cli/scene_options.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/image.h"
@@ -50,7 +51,7 @@ struct RenderArgs {
   int threads = 0;
   int supersample = 1;
   std::vector<std::string> texture_paths;
-  std::vector<std::string> defines;
+  SceneArgs scene_args;
   bool strict = false;
   bool resume = false;
   std::string movie;
@@ -211,17 +212,6 @@ std::pair<int, int> parse_res(const std::string& s) {
   return {int(wi), int(hi)};
 }
 
-std::vector<std::pair<std::string, std::string>> parse_defines(const std::vector<std::string>& defs) {
-  std::vector<std::pair<std::string, std::string>> out;
-  for (const auto& d : defs) {
-    const size_t eq = d.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw Error("--define: expected NAME=VALUE, found \"" + d + "\"");
-    out.emplace_back(d.substr(0, eq), d.substr(eq + 1));
-  }
-  return out;
-}
-
 /// Prints new warnings once (a camera is rebuilt for every frame and would repeat its own).
 void print_warnings(Diagnostics& diag, bool quiet, std::set<std::string>& printed) {
   for (const auto& w : diag.warnings())
@@ -367,9 +357,7 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
   for (const auto& dir : a.texture_paths)
     if (!fs::is_directory(dir)) throw Error("--texture-path: \"" + dir + "\" is not a directory");
 
-  SchemeOptions sopts;
-  sopts.defines = parse_defines(a.defines);
-  sopts.diag = &diag;
+  const SchemeOptions sopts = scheme_options(a.scene_args, &diag, quiet);
   SceneDescription scene;
   std::string base;
   if (a.scene.empty()) {
@@ -390,11 +378,12 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
   bopts.resolution = res;
   bopts.supersample = a.supersample;
   bopts.diag = &diag;
+  set_action_output(bopts, a.scene_args);
   SceneBuilder builder(std::move(scene), bopts);
   print_warnings(diag, quiet, printed);
 
+  require_devices(builder);
   const int count = builder.device_count();
-  if (count == 0) throw Error("the scene has no init-device: nothing to render");
   if (count > kMaxFrames)
     throw Error("the scene has " + std::to_string(count) + " frames (init-device); the limit is " +
                 std::to_string(kMaxFrames));
@@ -482,8 +471,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
                   "extra folder to search for textures and meshes (a file the scene names by a path that "
                   "does not exist here is looked up by its file name)")
       ->allow_extra_args(false);
-  sub->add_option("--define", a->defines, "override a top-level (define NAME ...) of the scene")
-      ->allow_extra_args(false);
+  add_scene_options(sub, a->scene_args);
   sub->add_flag("--strict", a->strict, "treat warnings (unknown keys, ...) as errors");
   sub->add_flag("--resume", a->resume, "skip frames whose image already exists");
   sub->add_option("--movie", a->movie, "assemble the frames into a movie with ffmpeg (e.g. out.mp4)");

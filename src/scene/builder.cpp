@@ -1304,6 +1304,31 @@ std::string SceneBuilder::summary() const {
 
 // ---- actions ----------------------------------------------------------------------------------
 
+namespace {
+
+namespace fs = std::filesystem;
+
+// Where an action writes the file named by `key`: relative to the output folder; for a sandboxed
+// scene only below it (docs/security.md).
+std::string action_output_path(const ParamSet& ps, const std::string& key, const BuildOptions& opts) {
+  const std::string name = ps.get_string(key);
+  fs::path p(name);
+  if (p.is_relative() && !opts.output_dir.empty()) p = fs::path(opts.output_dir) / p;
+  if (opts.confine_output) {
+    std::error_code ec;
+    const fs::path root = fs::weakly_canonical(opts.output_dir.empty() ? fs::path(".") : fs::path(opts.output_dir), ec);
+    const fs::path target = fs::weakly_canonical(fs::absolute(p, ec), ec);
+    const bool below = std::mismatch(root.begin(), root.end(), target.begin(), target.end()).first == root.end() &&
+                       target != root;
+    if (ec || !below)
+      ps.fail(key, "\"" + name + "\" is outside the output folder " + root.string() +
+                       ": a scene may write its files only below it (they run sandboxed; --trust-scene lifts this)");
+  }
+  return p.string();
+}
+
+}  // namespace
+
 void SceneBuilder::run_actions(std::ostream& out) const {
   for (const ActionDef& a : impl_->actions) {
     const ParamSet& ps = a.call.params;
@@ -1337,7 +1362,8 @@ void SceneBuilder::run_actions(std::ostream& out) const {
       const MotionPtr mo = b.motion_of(md);
       std::ostringstream data;
       mo->write(data);
-      const std::string file = ps.get_string("file");
+      const std::string file = action_output_path(ps, "file", impl_->opts);
+      if (!impl_->opts.write_action_files) continue;
       try {
         write_file_atomic(file, data.str());
       } catch (const Error& e) {
@@ -1347,7 +1373,7 @@ void SceneBuilder::run_actions(std::ostream& out) const {
     }
     if (cmd == "calc-ray" || cmd == "calc-proj-ray") {
       const bool proj_ray = cmd == "calc-proj-ray";
-      const std::string file = ps.get_string("filename");
+      const std::string file = action_output_path(ps, "filename", impl_->opts);
       const DefPtr& rg = Impl::resolve(*a.defs, ps, "raygen", Kind::RayGen, a.seq);
       with_metric(Impl::last_of(*a.defs, Kind::Metric, a.seq));
       SolverConfig cfg = b.raygen_config(rg);
@@ -1428,6 +1454,7 @@ void SceneBuilder::run_actions(std::ostream& out) const {
         return StepAction::Continue;
       };
       m.integrate(cfg, sys, y, 0.0, StepCallback(cb));
+      if (!impl_->opts.write_action_files) continue;
       try {
         write_file_atomic(file, txt.str());
       } catch (const Error& e) {

@@ -28,6 +28,13 @@ struct BuildOptions {
   std::optional<std::pair<int, int>> resolution;  ///< --res: overrides every camera's resolution
   int supersample = 1;                             ///< n x n samples per pixel
   Diagnostics* diag = nullptr;                     ///< warnings (unknown keys, ...); may be null
+  /// Folder of the files gvs-print-motion, calc-ray and calc-proj-ray write ("" = the current
+  /// folder); a relative file name is relative to it.
+  std::string output_dir;
+  /// Sandboxed scene (docs/security.md): those files must stay below output_dir.
+  bool confine_output = true;
+  /// false (geovis check): run_actions checks and computes everything but writes no file.
+  bool write_action_files = true;
 };
 
 struct FrameJob {

@@ -16,6 +16,8 @@
 #include <thread>
 #include <sstream>
 
+#include <gc/gc.h>
+
 #include "scene/scheme_internal.h"
 
 namespace geovis {
@@ -36,6 +38,7 @@ SCM g_eval_file_proc = SCM_BOOL_F;
 SCM g_eval_string_proc = SCM_BOOL_F;
 SCM g_make_module_proc = SCM_BOOL_F;
 SCM g_read_overrides_proc = SCM_BOOL_F;
+SCM g_abort_limit_proc = SCM_BOOL_F;
 
 // 2M words (16 MB) of Scheme stack for the scene: far more than any scene needs, small enough
 // to stop infinite recursion quickly.
@@ -50,14 +53,35 @@ SCM g_eval_thread = SCM_BOOL_F;  // the Guile thread running %gv-run
 SCM g_time_limit_proc = SCM_BOOL_F;
 
 // Runs as an async in the evaluating thread: stops it, unless that evaluation already ended.
+// It aborts to the driver's prompt (%gv-abort-limit), which the scene's own catch cannot stop.
 SCM time_limit_reached() {
   bool fire = false;
   {
     std::lock_guard<std::mutex> lock(g_watch_mutex);
     fire = g_evaluating;
   }
-  if (fire) scm_throw(scm_from_utf8_symbol("gv-time-limit"), SCM_EOL);
+  if (fire) scm_call_1(g_abort_limit_proc, scm_from_utf8_symbol("time"));
   return SCM_UNSPECIFIED;
+}
+
+// ---- memory limit: the collector may not grow the heap beyond its size at the start plus the
+// limit; an allocation beyond it raises Guile's out-of-memory exception (not a process-wide
+// rlimit, which would also limit the render). The collector's "Out of Memory" warning is
+// silenced meanwhile: the driver reports the limit.
+void silent_gc_warning(char*, GC_word) {}
+GC_warn_proc g_default_gc_warn = nullptr;
+
+void set_heap_limit(size_t bytes) {
+  if (bytes == 0) return;
+  GC_set_max_heap_size(GC_get_heap_size() + bytes);
+  g_default_gc_warn = GC_get_warn_proc();
+  GC_set_warn_proc(silent_gc_warning);
+}
+
+void clear_heap_limit() {
+  GC_set_max_heap_size(0);  // 0 = unlimited
+  if (g_default_gc_warn) GC_set_warn_proc(g_default_gc_warn);
+  g_default_gc_warn = nullptr;
 }
 
 void* mark_time_limit(void*) {
@@ -117,6 +141,7 @@ SCM init_prelude_body(void* data) {
   g_eval_string_proc = ref("%gv-eval-string");
   g_make_module_proc = ref("%gv-make-scene-module");
   g_read_overrides_proc = ref("%gv-read-overrides");
+  g_abort_limit_proc = ref("%gv-abort-limit");
   return SCM_BOOL_T;
 }
 
@@ -158,7 +183,7 @@ SCM eval_body(void* data) {
   auto* req = static_cast<EvalRequest*>(data);
   EvalContext& ctx = *g_ctx;
   // Fresh module for this scene.
-  SCM module = scm_call_0(g_make_module_proc);
+  SCM module = scm_call_1(g_make_module_proc, scm_from_bool(!ctx.opts->trusted));
   scm_variable_set_x(scm_c_module_lookup(g_prelude_module, "%gv-scene-module"), module);
   scm_variable_set_x(scm_c_module_lookup(g_prelude_module, "%gv-current-form"), SCM_BOOL_F);
   scm_variable_set_x(scm_c_module_lookup(g_prelude_module, "%gv-overrides"), SCM_EOL);
@@ -186,7 +211,10 @@ SCM eval_body(void* data) {
     g_evaluating = true;
   }
   g_watch_cv.notify_all();
-  SCM result = scm_call_2(g_run_proc, thunk, scm_from_long(kStackLimitWords));
+  set_heap_limit(ctx.opts->memory_limit_bytes);  // cleared by run() whatever happens here
+  SCM result = scm_call_3(g_run_proc, thunk, scm_from_long(kStackLimitWords),
+                          scm_from_bool(ctx.opts->print_output));
+  clear_heap_limit();
   {
     std::lock_guard<std::mutex> lock(g_watch_mutex);
     g_evaluating = false;
@@ -243,6 +271,20 @@ void* eval_in_guile(void* data) {
   }
   scm_c_catch(SCM_BOOL_T, eval_body, req, eval_handler, req, nullptr, nullptr);
   return nullptr;
+}
+
+// "2 GiB", "64 MiB", "1000 bytes".
+std::string format_bytes(size_t bytes) {
+  static const char* const units[] = {"bytes", "KiB", "MiB", "GiB", "TiB"};
+  double v = static_cast<double>(bytes);
+  int u = 0;
+  while (v >= 1024 && u < 4) {
+    v /= 1024;
+    ++u;
+  }
+  std::ostringstream os;
+  os << v << " " << units[u];
+  return os.str();
 }
 
 std::string parent_dir(const std::string& path) {
@@ -343,6 +385,7 @@ SceneDescription run(EvalRequest& req, const std::string& file, const SchemeOpti
   if (opts.time_limit_seconds > 0) reset.watch = std::thread(watchdog, opts.time_limit_seconds);
 
   scm_with_guile(eval_in_guile, &req);
+  clear_heap_limit();
 
   if (!req.finished) {
     if (req.kind == "geovis" && ctx.pending) std::rethrow_exception(ctx.pending);
@@ -404,9 +447,18 @@ SceneDescription run(EvalRequest& req, const std::string& file, const SchemeOpti
     if (req.kind == "time") {
       std::ostringstream os;
       os << "the scene ran longer than the time limit of " << opts.time_limit_seconds
-         << " s (an endless loop?); stopped here";
+         << " s (an endless loop?); stopped here (--scene-time-limit changes the limit)";
       throw SceneError(loc, "", "", os.str());
     }
+    if (req.kind == "memory") {
+      std::ostringstream os;
+      os << "the scene needs more memory than the limit of " << format_bytes(opts.memory_limit_bytes)
+         << " (an unbounded allocation?); stopped here (--scene-memory-limit changes the limit)";
+      throw SceneError(loc, "", "", os.str());
+    }
+    if (req.kind == "forbidden")
+      throw SceneError(loc, "", "",
+                       "\"" + req.name_found + "\" is not available in scenes (" + kSandboxHint + ")");
     if (req.kind == "internal") throw Error(file + ": " + req.message);
     if (req.kind == "geovis") throw SceneError(loc, "", "", "internal error: lost the error of a command");
     throw SceneError(loc, "", "", req.message);

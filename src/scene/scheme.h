@@ -1,8 +1,8 @@
 // The GeoViS scene language: an embedded Guile 3.0 evaluator that runs a scene program and records
 // every GeoViS command call as a parameter set (scene/description.h).
 //
-// Scenes are full Scheme (define, let, do, quasiquote, string-append, getenv, load, ...) evaluated
-// in a fresh module per scene, with the GeoViS prelude (catalogue §1 "Constants from
+// Scenes are Scheme (define, let, do, quasiquote, string-append, getenv, load, ...) evaluated
+// in a fresh module per scene (by default a sandbox, docs/security.md), with the GeoViS prelude (catalogue §1 "Constants from
 // Parser/init.scm") and every GeoViS command (catalogue §1) available. Like GeoViS's TinyScheme
 // reader (catalogue, Conventions) symbols are folded to lower case, so keys and variable names are
 // case-insensitive; strings keep their case.
@@ -37,9 +37,25 @@ struct SchemeOptions {
   /// error instead of exhausting memory).
   size_t max_calls = 5'000'000;
   /// Wall-clock limit for evaluating the scene in seconds (0 = none): an endless Scheme loop
-  /// fails with a clear error instead of hanging.
-  double time_limit_seconds = 0;
+  /// fails with a clear error instead of hanging (--scene-time-limit).
+  double time_limit_seconds = 60;
+  /// Limit on the Scheme heap the evaluation may add, in bytes (0 = none): an unbounded
+  /// allocation fails with a clear error instead of exhausting the machine (--scene-memory-limit).
+  size_t memory_limit_bytes = size_t{2} << 30;
+  /// false (the default): the scene runs in the sandbox of docs/security.md (only the scene
+  /// language, pure Scheme, display/newline, confined load and getenv). true (--trust-scene):
+  /// full Guile, as GeoViS.
+  bool trusted = false;
+  /// Folders besides the scene's own from which `load` may read (--scene-path); a relative name
+  /// that is not found next to the loading file is looked up in them, in order.
+  std::vector<std::string> load_paths;
+  /// false (-q): what the scene prints (display, m4d-metriclist, ...) is discarded.
+  bool print_output = true;
 };
+
+/// The environment variables a sandboxed scene may read with getenv (docs/security.md): HOME,
+/// USER, LOGNAME and every GEOVIS_* variable.
+bool scene_may_read_env(const std::string& name);
 
 /// Thrown when the scene calls (exit [code]): evaluation stops and nothing must be rendered
 /// (GeoViS terminates the program there). The CLI exits with code() without an error report.

@@ -59,8 +59,14 @@ const std::vector<std::string>& scene_language_names() {
   return names;
 }
 
+bool scene_may_read_env(const std::string& name) {
+  return name == "HOME" || name == "USER" || name == "LOGNAME" || name.rfind("GEOVIS_", 0) == 0;
+}
+
 namespace scheme_detail {
 namespace {
+
+namespace fs = std::filesystem;
 
 constexpr int kMaxValueDepth = 32;  // nesting of lists inside a value
 constexpr size_t kMaxLoadDepth = 64;
@@ -557,6 +563,11 @@ SCM getenv_cmd(const std::vector<SCM>& a, const SourceLoc& loc) {
     throw SceneError(loc, cmd, "", "expected one string (the variable name), found " +
                                        (a.empty() ? std::string("no argument") : describe_scm(a[0])));
   const std::string name = to_std(a[0]);
+  if (!context().opts->trusted && !scene_may_read_env(name))
+    throw SceneError(loc, cmd, "",
+                     "the environment variable \"" + name +
+                         "\" is not available in scenes (they may read HOME, USER, LOGNAME and GEOVIS_*; " +
+                         kSandboxHint + ")");
   const char* v = std::getenv(name.c_str());
   if (!v) {
     // GeoViS would pass a null pointer on; we continue with "" and say so.
@@ -601,18 +612,31 @@ SCM dispatch(SCM name, SCM locs, SCM args) {
   return record_command(cmd, site, args);
 }
 
-// (%gv-call name locs args)
-SCM gv_call(SCM name, SCM locs, SCM args) {
+struct DispatchCall {
+  SCM name, locs, args;
   SCM result = SCM_UNSPECIFIED;
   bool failed = false;
-  t_exit_requested = false;
+};
+
+void* dispatch_catching(void* data) {
+  auto* call = static_cast<DispatchCall*>(data);
   try {
-    result = dispatch(name, locs, args);
+    call->result = dispatch(call->name, call->locs, call->args);
   } catch (...) {
     context().pending = std::current_exception();
-    failed = true;
+    call->failed = true;
   }
-  if (failed) raise_pending_in_scheme();
+  return nullptr;
+}
+
+// (%gv-call name locs args). The command runs with asyncs blocked, so that the time limit
+// (an async, scheme.cpp) never unwinds through its C++ frames.
+SCM gv_call(SCM name, SCM locs, SCM args) {
+  t_exit_requested = false;
+  DispatchCall call{name, locs, args};
+  scm_c_call_with_blocked_asyncs(dispatch_catching, &call);
+  const SCM result = call.result;
+  if (call.failed) raise_pending_in_scheme();
   if (t_exit_requested) scm_throw(scm_from_utf8_symbol("geovis-exit"), scm_list_1(scm_from_int(t_exit_code)));
   return result;
 }
@@ -622,6 +646,65 @@ SCM gv_set_form_line(SCM line) {
   if (scm_is_signed_integer(line, 0, 1 << 30) && !context().files.empty())
     context().files.back().form_line = scm_to_int(line);
   return SCM_UNSPECIFIED;
+}
+
+// Is the existing path `p` inside the folder `root`? Both with symbolic links and ".." resolved.
+bool is_below(const fs::path& p, const fs::path& root) {
+  std::error_code ec;
+  const fs::path cp = fs::canonical(p, ec);
+  if (ec) return false;
+  const fs::path cr = fs::canonical(root, ec);
+  if (ec) return false;
+  return std::mismatch(cr.begin(), cr.end(), cp.begin(), cp.end()).first == cr.end();
+}
+
+std::string file_kind(const fs::path& p) {
+  std::error_code ec;
+  switch (fs::status(p, ec).type()) {
+    case fs::file_type::directory: return "a directory";
+    case fs::file_type::character: return "a character device";
+    case fs::file_type::block: return "a block device";
+    case fs::file_type::fifo: return "a named pipe";
+    case fs::file_type::socket: return "a socket";
+    default: return "a special file";
+  }
+}
+
+// The file `(load name)` reads: relative to the loading file's folder, else in the --scene-path
+// folders. Sandboxed, it must be a .scm file below the scene's folder or a --scene-path folder
+// (docs/security.md).
+fs::path find_load_file(const EvalContext& ctx, const std::string& name, const SourceLoc& loc) {
+  const std::string what = "cannot load \"" + name + "\": ";
+  std::error_code ec;
+  fs::path p(name);
+  std::vector<std::string> looked;
+  if (p.is_relative()) {
+    p = fs::path(ctx.files.back().dir) / name;
+    looked.push_back(p.string());
+    for (const auto& dir : ctx.opts->load_paths) {
+      if (fs::exists(p, ec)) break;
+      p = fs::path(dir) / name;
+      looked.push_back(p.string());
+    }
+  } else {
+    looked.push_back(p.string());
+  }
+  if (!fs::exists(p, ec)) throw SceneError(loc, "load", "", what + "no such file (looked for " + join(looked) + ")");
+  if (!ctx.opts->trusted) {
+    std::vector<std::string> roots{ctx.desc.dir};
+    roots.insert(roots.end(), ctx.opts->load_paths.begin(), ctx.opts->load_paths.end());
+    bool allowed = to_lower(p.extension().string()) == ".scm";
+    bool below = false;
+    for (const auto& r : roots) below = below || is_below(p, r);
+    if (!allowed || !below)
+      throw SceneError(loc, "load", "",
+                       what + "not allowed: a scene may load only .scm files below its own folder (" +
+                           ctx.desc.dir + ") and the --scene-path folders, and " + p.string() + " is " +
+                           (allowed ? "outside them" : "not a .scm file") + " (" + kSandboxHint + ")");
+  }
+  if (!fs::is_regular_file(p, ec))
+    throw SceneError(loc, "load", "", what + p.string() + " is " + file_kind(p) + ", not a regular file");
+  return p;
 }
 
 // (%gv-enter-file file) -> resolved path; relative paths are relative to the loading file.
@@ -636,12 +719,7 @@ SCM gv_enter_file(SCM file) {
     if (ctx.files.size() > kMaxLoadDepth)
       throw SceneError(loc, "load", "", "files load each other more than 64 levels deep (a file loading itself?)");
     const std::string name = to_std(file);
-    std::filesystem::path p(name);
-    if (p.is_relative()) p = std::filesystem::path(ctx.files.back().dir) / p;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(p, ec))
-      throw SceneError(loc, "load", "",
-                       "cannot load \"" + name + "\": no such file (looked for " + p.string() + ")");
+    const fs::path p = find_load_file(ctx, name, loc);
     const std::string resolved = p.lexically_normal().string();
     std::string dir = p.parent_path().string();
     if (dir.empty()) dir = ".";

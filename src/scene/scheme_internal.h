@@ -50,6 +50,9 @@ SourceLoc current_form_loc();
 /// catch block's end (after every C++ object of the primitive is destroyed), never returns.
 [[noreturn]] void raise_pending_in_scheme();
 
+/// The end of every "... is not available in scenes" message (docs/security.md).
+inline constexpr const char* kSandboxHint = "they run sandboxed; --trust-scene lifts this";
+
 /// Short description of a Scheme value for error messages: "the number 3", "the symbol foo", ...
 std::string describe_scm(SCM v);
 

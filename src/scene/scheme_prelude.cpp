@@ -11,7 +11,7 @@
 namespace geovis::scheme_detail {
 
 const char* const kPreludeSource = R"SCM(
-(use-modules (system syntax) (system vm vm))
+(use-modules (system syntax) (system vm vm) (ice-9 sandbox))
 
 ;; ---------------------------------------------------------------------------------------------
 ;; Constants and helpers of GeoViS Parser/init.scm (catalogue §1).
@@ -204,13 +204,24 @@ const char* const kPreludeSource = R"SCM(
 
 (define (gv-quit . args) (apply gv-exit args))
 
-;; Reads the --define values: ((name-string . text) ...) -> ((symbol . datum) ...).
+;; Reads the --define values: ((name-string . text) ...) -> ((symbol . datum) ...). A reader
+;; error names the option, not the string port ("#<unknown port>:1:2: ...").
+(define (%gv-read-define d port)
+  (catch 'read-error
+    (lambda () (read port))
+    (lambda (key subr msg args . rest)
+      (let* ((text (%gv-safe-format msg args))
+             (colon (string-contains text ": ")))
+        (%gv-define-error (car d) (cdr d)
+                          (string-append "the value is not a Scheme datum ("
+                                         (if colon (substring text (+ colon 2)) text) ")"))))))
+
 (define (%gv-read-overrides defs)
   (map (lambda (d)
          (let* ((port (open-input-string (cdr d)))
                 (_ (%gv-fold-case! port))
-                (datum (read port))
-                (rest (read port)))
+                (datum (%gv-read-define d port))
+                (rest (%gv-read-define d port)))
            (when (eof-object? datum)
              (%gv-define-error (car d) (cdr d) "the value is empty"))
            (unless (eof-object? rest)
@@ -245,9 +256,7 @@ const char* const kPreludeSource = R"SCM(
   (case key
     ((geovis-error) (list 'geovis "" 0 0 #f))
     ((geovis-exit) (list 'exit (if (pair? args) (car args) 0) 0 0 #f))
-    ((gv-time-limit) (list 'time "" 0 0 #f))
-    ((gv-stack-overflow)
-     (list 'stack "stack overflow (infinite recursion?)" 0 0 #f))
+    ((out-of-memory) (list 'memory "" 0 0 #f))
     ((read-error)
      ;; args: (subr message format-args rest); the message starts with file:line:column.
      (list 'read (if (and (pair? args) (pair? (cdr args)) (pair? (cddr args)))
@@ -272,7 +281,8 @@ const char* const kPreludeSource = R"SCM(
     ((unbound-variable)
      (let ((name (and (pair? args) (pair? (cdr args)) (pair? (cddr args)) (pair? (caddr args))
                       (car (caddr args)))))
-       (list 'unbound ""
+       (list (if (and (symbol? name) %gv-sandboxed (%gv-forbidden-name? name)) 'forbidden 'unbound)
+             ""
              (or (and name (symbol? name) %gv-current-form
                       (%gv-find-identifier-line %gv-current-form name))
                  0)
@@ -309,16 +319,29 @@ const char* const kPreludeSource = R"SCM(
                    (eq? (hashq-ref (module-submodules root) (car name)) m))
           (hashq-remove! (module-submodules root) (car name)))))))
 
+;; The limits (time, stack) stop the scene by aborting to this prompt rather than by throwing,
+;; so that a scene's own (catch #t ...) cannot swallow them (as (ice-9 sandbox) does).
+(define %gv-limit-tag (make-prompt-tag "geovis-limit"))
+(define (%gv-abort-limit kind) (abort-to-prompt %gv-limit-tag kind))
+
 ;; Runs thunk; returns #t or the description of the exception that stopped it. The stack limit
-;; turns runaway recursion into an error instead of exhausting memory.
-(define (%gv-run thunk stack-limit)
+;; turns runaway recursion into an error instead of exhausting memory. Without print-output the
+;; scene's own printing (display, ...) goes to a void port (-q).
+(define (%gv-run thunk stack-limit print-output)
   (let ((result
-         (catch #t
+         (call-with-prompt %gv-limit-tag
            (lambda ()
-             (call-with-stack-overflow-handler stack-limit thunk
-               (lambda () (throw 'gv-stack-overflow)))
-             #t)
-           (lambda (key . args) (%gv-describe-exception key args)))))
+             (catch #t
+               (lambda ()
+                 (call-with-stack-overflow-handler stack-limit
+                   (if print-output
+                       thunk
+                       (lambda () (with-output-to-port (%make-void-port "w") thunk)))
+                   (lambda () (%gv-abort-limit 'stack)))
+                 #t)
+               (lambda (key . args) (%gv-describe-exception key args))))
+           (lambda (k kind)
+             (list kind (if (eq? kind 'stack) "stack overflow (infinite recursion?)" "") 0 0 #f)))))
     (%gv-forget-scene-module)
     ;; What the scene displayed appears now, before anything the program prints next.
     (false-if-exception (force-output (current-output-port)))
@@ -357,9 +380,45 @@ const char* const kPreludeSource = R"SCM(
 
 (define %gv-prelude-module (current-module))  ; evaluated while (geovis prelude) is being defined
 
-(define (%gv-make-scene-module)
-  (let ((m (make-fresh-user-module))
+;; ---------------------------------------------------------------------------------------------
+;; The sandbox (docs/security.md). A sandboxed scene sees only the GeoViS names above, pure
+;; Scheme ((ice-9 sandbox)'s binding sets: no ports, files, processes, modules or eval), set! and
+;; printing to the terminal. Procedures are copied into the scene's module, so that its set!
+;; changes only its own copy; syntax (define, cond, else, ...) stays imported, because literals
+;; such as `else` are recognised by their binding, and set! of syntax is an error.
+(define %gv-sandboxed #t)  ; the scene being evaluated runs in the sandbox
+
+(define %gv-sandbox-bindings
+  (append all-pure-and-impure-bindings
+          ;; inexact->exact is missing from (ice-9 sandbox)'s number set; display and friends
+          ;; print to the terminal (a scene has no way to name another port).
+          '(((guile) set! inexact->exact display newline write write-char simple-format format))))
+
+;; Names of full Guile that the sandbox leaves out (for the "not available" error).
+(define (%gv-forbidden-name? sym)
+  (or (module-variable (resolve-module '(guile)) sym)
+      (or-map (lambda (name)
+                (false-if-exception (module-variable (resolve-interface name) sym)))
+              '((ice-9 popen) (ice-9 rdelim) (ice-9 ftw) (ice-9 textual-ports) (ice-9 binary-ports)
+                (ice-9 ports) (ice-9 sandbox) (ice-9 threads) (ice-9 eval-string)))))
+
+(define (%gv-make-sandbox-module)
+  (let ((m (make-sandbox-module %gv-sandbox-bindings)))
+    (for-each
+     (lambda (set)
+       (let ((iface (resolve-interface (car set))))
+         (for-each (lambda (import)  ; NAME or (NAME-IN-MODULE . NAME-IN-SCENE)
+                     (let ((v (module-ref iface (if (pair? import) (car import) import))))
+                       (unless (macro? v)
+                         (module-define! m (if (pair? import) (cdr import) import) v))))
+                   (cdr set))))
+     %gv-sandbox-bindings)
+    m))
+
+(define (%gv-make-scene-module sandboxed)
+  (let ((m (if sandboxed (%gv-make-sandbox-module) (make-fresh-user-module)))
         (here %gv-prelude-module))
+    (set! %gv-sandboxed sandboxed)
     (for-each (lambda (b) (module-define! m (car b) (module-ref here (cdr b))))
               %gv-scene-bindings)
     m))

@@ -412,7 +412,9 @@ TEST(SceneBuilder, CalcRayInMinkowskiIsAStraightLine) {
   // = e_(2) = +y; the ray is past-directed: k = -e0 + e2.
   s.add("calc-ray", {{"filename", file}, {"locted", "locTedObs"}, {"pos", vec({0, -10, 0, 0})},
                      {"dir", vec({90, 90})}});
-  SceneBuilder b(s.desc(), {});
+  BuildOptions bopts;  // the file goes to the output folder
+  bopts.output_dir = std::filesystem::temp_directory_path().string();
+  SceneBuilder b(s.desc(), bopts);
   std::ostringstream log;
   b.run_actions(log);
   std::ifstream in(file);
