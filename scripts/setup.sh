@@ -14,6 +14,7 @@ PACKAGES=(
   libgtest-dev             # tests
   libbenchmark-dev libgsl-dev  # benchmarks (GSL is the reference integrator)
   ffmpeg                   # --movie (optional at run time)
+  libopenmpi-dev openmpi-bin  # rendering on several MPI ranks (mpirun; optional)
 )
 
 missing=()
