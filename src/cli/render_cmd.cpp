@@ -1,6 +1,6 @@
 // `geovis render [SCENE] [-o OUT] [--frames A:B] [--res WxH] [--threads N] [--supersample N]
 //                [--texture-path DIR]... [--define NAME=VALUE]... [--strict] [--resume]
-//                [--movie out.mp4] [--tile-stats FILE] [--quiet] [--verbose]`
+//                [--movie out.mp4] [--tile-size N] [--tile-stats FILE] [--quiet] [--verbose]`
 //
 // Evaluates the scene (the built-in one without SCENE), builds each device (= frame) and renders
 // it. Every finished frame is written atomically (io/image.h) before the next one starts, so a
@@ -49,6 +49,7 @@ struct RenderArgs {
   std::string frames;
   std::string res;
   int threads = 0;
+  int tile_size = 16;
   int supersample = 1;
   std::vector<std::string> texture_paths;
   std::vector<std::string> defines;
@@ -294,6 +295,7 @@ std::string render_identity(const RenderArgs& a) {
 RenderOptions tile_render_options(const RenderArgs& a, bool quiet) {
   RenderOptions ro;
   ro.threads = a.threads;
+  ro.tile_size = a.tile_size;
   ro.progress = !quiet;
   return ro;
 }
@@ -371,6 +373,8 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
   std::optional<std::pair<int, int>> res;
   if (!a.res.empty()) res = parse_res(a.res);
   if (a.threads < 0) throw Error("--threads: expected 0 (all cores) or a positive number, found " + std::to_string(a.threads));
+  if (a.tile_size < 1 || a.tile_size > 4096)
+    throw Error("--tile-size: expected 1 to 4096 pixels, found " + std::to_string(a.tile_size));
   if (a.supersample < 1 || a.supersample > 64)
     throw Error("--supersample: expected 1 to 64 samples per pixel side, found " + std::to_string(a.supersample));
   if (!a.movie.empty() && to_lower(split_ext(a.movie).second).empty())
@@ -505,6 +509,8 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->add_option("--res", a->res, "override the camera resolution, WIDTHxHEIGHT (field of view kept)");
   sub->add_option("--threads", a->threads, "worker threads (0 = all cores)");
   sub->add_option("--supersample", a->supersample, "N x N samples per pixel");
+  sub->add_option("--tile-size", a->tile_size,
+                  "tiles of N x N pixels that threads and MPI ranks take one at a time (default 16)");
   sub->add_option("--texture-path", a->texture_paths,
                   "extra folder to search for textures and meshes (a file the scene names by a path that "
                   "does not exist here is looked up by its file name)")

@@ -432,6 +432,7 @@ class WorkerTiles final : public TileSchedule {
         const char* row = reinterpret_cast<const char*>(&result.data[size_t(y) * grid_.width + r.x0]);
         out.insert(out.end(), row, row + size_t(r.x1 - r.x0) * sizeof(PixelData));
       }
+    test_hook_tile_finished();
   }
 
  private:

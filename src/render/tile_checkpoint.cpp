@@ -1,7 +1,6 @@
 #include "render/tile_checkpoint.h"
 
 #include <fcntl.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -55,13 +54,6 @@ void write_all(int fd, const std::string& bytes, const std::string& path) {
     if (n <= 0) throw Error("checkpoint \"" + path + "\": write failed: " + std::strerror(errno));
     done += size_t(n);
   }
-}
-
-/// Test hook: GEOVIS_TEST_KILL_AFTER_TILES=N makes the process kill itself with SIGKILL right
-/// after the N-th tile is durable, so tests can crash a render half-way at a deterministic point.
-int kill_after_tiles() {
-  const char* v = std::getenv("GEOVIS_TEST_KILL_AFTER_TILES");
-  return v ? std::atoi(v) : 0;
 }
 
 }  // namespace
@@ -182,13 +174,11 @@ void TileCheckpoint::append(int tile, const RenderResult& result) {
                  size_t(r.x1 - r.x0) * sizeof(PixelData));
   put(rec, fnv1a64(rec.data(), rec.size()));
 
-  static const int kill_after = kill_after_tiles();
   std::lock_guard lock(mutex_);
   if (fd_ < 0) throw Error("checkpoint \"" + path_ + "\" is closed");
   write_all(fd_, rec, path_);
   if (::fdatasync(fd_) != 0) throw Error("checkpoint \"" + path_ + "\": fdatasync failed: " + std::strerror(errno));
   ++tiles_written_;
-  if (kill_after > 0 && tiles_written_ >= kill_after) ::raise(SIGKILL);
 }
 
 void TileCheckpoint::remove() {

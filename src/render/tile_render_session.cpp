@@ -15,7 +15,10 @@ class LocalTiles final : public TileSchedule {
  public:
   explicit LocalTiles(ImageInProgress& image) : image_(image) {}
   int next_tile(int) override { return image_.pop(); }
-  void tile_done(int, int tile, const TileCost& cost, const RenderResult&) override { image_.done(tile, 0, cost); }
+  void tile_done(int, int tile, const TileCost& cost, const RenderResult&) override {
+    image_.done(tile, 0, cost);
+    test_hook_tile_finished();
+  }
 
  private:
   ImageInProgress& image_;

@@ -1,9 +1,11 @@
 #include "render/tile_schedule.h"
 
+#include <signal.h>
 #include <time.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <exception>
 #include <thread>
 
@@ -77,6 +79,19 @@ std::vector<double> probe_tile_costs(const RenderJob& job, const TileGrid& grid,
   for (auto& th : pool) th.join();
   if (error) std::rethrow_exception(error);
   return cost;
+}
+
+void test_hook_tile_finished() {
+  static const int kill_after = [] {
+    const char* n = std::getenv("GEOVIS_TEST_KILL_AFTER_TILES");
+    if (!n) return 0;
+    const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+    const char* victim = std::getenv("GEOVIS_TEST_KILL_RANK");
+    if (std::atoi(rank ? rank : "0") != std::atoi(victim ? victim : "0")) return 0;
+    return std::atoi(n);
+  }();
+  static std::atomic<int> finished{0};
+  if (kill_after > 0 && ++finished >= kill_after) ::raise(SIGKILL);
 }
 
 double thread_cpu_seconds() {

@@ -62,6 +62,12 @@ class CostOrderedTiles {
 /// through each tile's centre (about 1/tile_size^2 of the frame's work), on `threads` threads.
 std::vector<double> probe_tile_costs(const RenderJob& job, const TileGrid& grid, int threads);
 
+/// Test hook, called when this process has finished a tile (after its checkpoint record is
+/// durable): with GEOVIS_TEST_KILL_AFTER_TILES=N the process kills itself with SIGKILL at its N-th
+/// tile, so that tests crash a render half-way at a deterministic point. Under MPI only the rank
+/// GEOVIS_TEST_KILL_RANK (default 0) does. Without the variable it does nothing.
+void test_hook_tile_finished();
+
 /// CPU seconds of the calling thread.
 double thread_cpu_seconds();
 
