@@ -1,6 +1,6 @@
 // Tile checkpoint of the frame in progress: every finished tile is appended to a file next to the
-// output image and made durable (write + fdatasync) before the next one, so a render killed at
-// any moment (crash, kill -9, a batch system's time limit) resumes from its finished tiles.
+// output image (write, then fdatasync at most every kSyncInterval), so a render killed at any
+// moment (crash, kill -9, a batch system's time limit) resumes from its finished tiles.
 //
 // File layout (little-endian, as the machine writes it; a checkpoint is read back on the machine
 // or cluster that wrote it):
@@ -12,6 +12,7 @@
 // together with everything after it; the file is truncated there before appending continues.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <mutex>
 #include <string>
@@ -44,8 +45,9 @@ class TileCheckpoint {
   TileCheckpoint(const TileCheckpoint&) = delete;
   TileCheckpoint& operator=(const TileCheckpoint&) = delete;
 
-  /// Appends the finished `tile` (its pixels taken from `result`) and syncs it to disk before
-  /// returning. Thread-safe. Throws Error when the write fails.
+  /// Appends the finished `tile` (its pixels taken from `result`): written before returning (a
+  /// killed process keeps it) and synced to disk unless the last sync is less than
+  /// kSyncInterval ago. Thread-safe. Throws Error when the write fails.
   void append(int tile, const RenderResult& result);
   /// Deletes the file (the image has been written).
   void remove();
@@ -70,6 +72,8 @@ class TileCheckpoint {
   int restored_count_ = 0;
   int tiles_written_ = 0;
   std::string note_;
+  std::chrono::steady_clock::time_point last_sync_{};
+  static constexpr std::chrono::milliseconds kSyncInterval{20};
 };
 
 }  // namespace geovis
