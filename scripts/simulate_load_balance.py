@@ -18,7 +18,9 @@ once with one rank to measure the costs, then:
                 as GeoViS's gvsRenderPar does; a tile's cost is spread evenly over its rows.
 
 With --measured, the files are the --tile-stats of real N-rank runs instead, and the efficiency
-of what each rank actually did (the rank column) is printed.
+of what each rank actually did (the rank column) is printed: from the CPU seconds of its tiles
+(unequal when the ranks get unequal shares of shared cores: then a dynamic schedule rightly gives
+the faster rank more tiles) and from the wall time at which its last tile came back.
 """
 import argparse
 import csv
@@ -34,7 +36,8 @@ def read_tiles(path, frame):
         sys.exit(f"{path}: no tiles of frame {frame}")
     tiles = []
     for r in rows:
-        tiles.append({k: (float(v) if k in ("order_cost", "cpu_seconds") else int(v)) for k, v in r.items()})
+        tiles.append({k: (float(v) if k in ("order_cost", "cpu_seconds", "done_at") else int(v))
+                      for k, v in r.items()})
     return tiles
 
 
@@ -77,16 +80,20 @@ def main():
     a = ap.parse_args()
 
     if a.measured:
-        print("| file | ranks | tiles | busy CPU s per rank (min / mean / max) | efficiency (mean/max) |")
-        print("|---|---|---|---|---|")
+        print("| file | ranks | tiles per rank (min-max) | busy CPU s per rank (min / mean / max) "
+              "| CPU efficiency | last tile back, s (min / max) | wall efficiency |")
+        print("|---|---|---|---|---|---|---|")
         for path in a.stats:
             tiles = read_tiles(path, a.frame)
-            busy = defaultdict(float)
+            busy, count, last = defaultdict(float), defaultdict(int), defaultdict(float)
             for t in tiles:
                 busy[t["rank"]] += t["cpu_seconds"]
-            b = list(busy.values())
-            print(f"| {path} | {len(b)} | {len(tiles)} | {min(b):.3f} / {sum(b) / len(b):.3f} / {max(b):.3f} "
-                  f"| {100 * efficiency(b):.1f} % |")
+                count[t["rank"]] += 1
+                last[t["rank"]] = max(last[t["rank"]], t["done_at"])
+            b, w = list(busy.values()), list(last.values())
+            print(f"| {path} | {len(b)} | {min(count.values())}-{max(count.values())} "
+                  f"| {min(b):.3f} / {sum(b) / len(b):.3f} / {max(b):.3f} | {100 * efficiency(b):.1f} % "
+                  f"| {min(w):.2f} / {max(w):.2f} | {100 * efficiency(w):.1f} % |")
         return
 
     tiles = read_tiles(a.stats[0], a.frame)

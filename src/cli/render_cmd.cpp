@@ -325,11 +325,11 @@ void report_tiles(const RenderArgs& a, const TileRenderSession& session, bool ve
   const std::vector<TileLogEntry>& log = session.tile_log();
   if (!a.tile_stats.empty()) {
     std::ostringstream csv;
-    csv << "frame,eye,tile,x0,y0,x1,y1,rank,order_cost,cpu_seconds,steps\n";
+    csv << "frame,eye,tile,x0,y0,x1,y1,rank,order_cost,cpu_seconds,steps,done_at\n";
     for (const TileLogEntry& e : log)
       csv << e.frame << ',' << e.eye << ',' << e.tile << ',' << e.rect.x0 << ',' << e.rect.y0 << ',' << e.rect.x1
           << ',' << e.rect.y1 << ',' << e.rank << ',' << e.order_cost << ',' << e.cost.cpu_seconds << ','
-          << e.cost.steps << '\n';
+          << e.cost.steps << ',' << e.done_at << '\n';
     write_file_atomic(a.tile_stats, csv.str());
   }
   if (!verbose || !mpi) return;

@@ -48,7 +48,8 @@ void ImageInProgress::done(int tile, int rank, const TileCost& cost) {
   if (checkpoint_) checkpoint_->append(tile, result_);
   progress_.add(grid.rect(tile).pixels());
   std::lock_guard lock(mutex_);
-  log_.push_back({frame, eye, tile, rank, grid.rect(tile), order_cost_[size_t(tile)], cost});
+  const double at = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  log_.push_back({frame, eye, tile, rank, grid.rect(tile), order_cost_[size_t(tile)], cost, at});
   if (++done_ == todo_) {
     progress_.finish();
     all_done_.notify_all();

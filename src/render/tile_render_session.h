@@ -4,6 +4,7 @@
 // costs measured in one frame order the tiles of the next (first frame: probe_tile_costs).
 #pragma once
 
+#include <chrono>
 #include <condition_variable>
 #include <map>
 #include <memory>
@@ -20,13 +21,14 @@
 namespace geovis {
 
 /// One rendered tile, for statistics (--tile-stats) and tests: who rendered it, the cost it was
-/// ordered by (probe steps in the first frame, CPU seconds measured in the previous one) and what
-/// it cost.
+/// ordered by (probe steps in the first frame, CPU seconds measured in the previous one), what it
+/// cost, and when it was done (wall seconds since the image started, on the writing process).
 struct TileLogEntry {
   int frame = 0, eye = 0, tile = 0, rank = 0;
   TileRect rect;
   double order_cost = 0;
   TileCost cost;
+  double done_at = 0;
 };
 
 /// The image being rendered: tiles still to hand out and what becomes of a finished one (stored
@@ -64,6 +66,7 @@ class ImageInProgress {
   const std::vector<double> order_cost_;
   const int todo_;
   Progress progress_;
+  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   mutable std::mutex mutex_;
   std::condition_variable all_done_;
   int done_ = 0;
