@@ -15,6 +15,7 @@ PACKAGES=(
   libbenchmark-dev libgsl-dev  # benchmarks (GSL is the reference integrator)
   ffmpeg                   # --movie (optional at run time)
   clang libclang-rt-14-dev # the fuzz_smoke test: libFuzzer, AddressSanitizer, UndefinedBehaviorSanitizer
+  libopenmpi-dev openmpi-bin  # rendering on several MPI ranks (mpirun; optional)
 )
 
 missing=()

@@ -1,10 +1,14 @@
 // `geovis render [SCENE] [-o OUT] [--frames A:B] [--res WxH] [--threads N] [--supersample N]
 //                [--texture-path DIR]... [--define NAME=VALUE]... [--strict] [--resume]
-//                [--movie out.mp4] [--quiet] [--verbose] [scene options: cli/scene_options.h]`
+//                [--movie out.mp4] [--tile-size N] [--tile-stats FILE] [--quiet] [--verbose]
+//                [scene options: cli/scene_options.h]`
 //
 // Evaluates the scene (the built-in one without SCENE), builds each device (= frame) and renders
 // it. Every finished frame is written atomically (io/image.h) before the next one starts, so a
 // failure in frame N never loses frames < N, and --resume continues an interrupted sequence.
+// Inside a frame, finished tiles go to a checkpoint next to the image (render/tile_checkpoint.h),
+// from which --resume continues an interrupted frame. Under mpirun the ranks share the tiles
+// (render/mpi_scheduler.h); rank 0 writes the files.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -17,6 +21,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -30,7 +36,9 @@
 #include "render/camera.h"
 #include "render/data_files.h"
 #include "render/frame_limits.h"
+#include "render/mpi_scheduler.h"
 #include "render/renderer.h"
+#include "render/tile_render_session.h"
 #include "scene/builder.h"
 #include "scene/default_scene.h"
 #include "scene/scheme.h"
@@ -49,12 +57,14 @@ struct RenderArgs {
   std::string frames;
   std::string res;
   int threads = 0;
+  int tile_size = 16;
   int supersample = 1;
   std::vector<std::string> texture_paths;
   SceneArgs scene_args;
   bool strict = false;
   bool resume = false;
   std::string movie;
+  std::string tile_stats;
   bool quiet = false;
   bool verbose = false;
 };
@@ -296,7 +306,7 @@ std::vector<std::string> render_settings(const RenderArgs& a) {
     text << f.rdbuf();
     s.push_back(text.str());
   }
-  for (const auto& d : a.defines) s.push_back("--define " + d);
+  for (const auto& d : a.scene_args.defines) s.push_back("--define " + d);
   s.push_back("--res " + a.res);
   s.push_back("--supersample " + std::to_string(a.supersample));
   for (const auto& t : a.texture_paths) s.push_back("--texture-path " + t);
@@ -322,19 +332,94 @@ bool frame_is_complete(const std::string& path, int frame, const std::vector<Fra
   return true;
 }
 
-/// SIGINT/SIGTERM stopped the render of `frame`: says so and returns 128 + the signal.
-int report_interrupted(const RenderInterrupted& e, int signal_number, int frame, int frames_written) {
+/// SIGINT/SIGTERM stopped the render of `frame`: says so (and where the finished tiles are kept for
+/// --resume) and returns 128 + the signal.
+int report_interrupted(const RenderInterrupted& e, int signal_number, int frame, int frames_written,
+                       const std::string& checkpoint) {
   std::cerr << "geovis: " << e.what() << ", nothing written";
+  if (!checkpoint.empty() && fs::exists(checkpoint))
+    std::cerr << "; the finished tiles are in \"" << checkpoint << "\" (--resume continues from them)";
   if (frames_written > 0)
     std::cerr << " (frame " << frame << "; the " << frames_written << " frame(s) before it are complete)";
   std::cerr << "\n";
   return 128 + (signal_number > 0 ? signal_number : SIGINT);
 }
 
+// ---- tiles: checkpoints, MPI ranks, statistics ----------------------------------------------------
+
+RenderOptions tile_render_options(const RenderArgs& a, bool quiet, const std::atomic<bool>* cancel = nullptr) {
+  RenderOptions ro;
+  ro.cancel = cancel;
+  ro.threads = a.threads;
+  ro.tile_size = a.tile_size;
+  ro.progress = !quiet;
+  return ro;
+}
+
+/// Renders image `eye` of frame `frame` with its tile checkpoint IMG.tiles (restored with
+/// --resume); the caller removes the checkpoint once the image is written.
+RenderedImage render_frame_image(TileRenderSession& session, const RenderArgs& a, const std::string& identity,
+                                 int frame, int eye, const FrameJob& fj, const std::string& img, bool quiet,
+                                 bool verbose) {
+  CheckpointSpec ckpt;
+  ckpt.path = img + ".tiles";
+  const std::string key = identity + "\nframe " + std::to_string(frame) + " " + fj.eye;
+  ckpt.hash = fnv1a64(key.data(), key.size());
+  ckpt.resume = a.resume;
+  std::string notes;
+  const std::string label = "frame " + std::to_string(frame) + (fj.eye.empty() ? "" : " " + fj.eye) + " -> " + img;
+  RenderedImage r = session.render_image(frame, eye, fj.job, label, ckpt, &notes);
+  if (!quiet) std::cerr << notes;
+  if (verbose)
+    std::cerr << "  tiles: " << r.tiles_rendered << " rendered, " << r.tiles_restored
+              << " restored from the checkpoint\n";
+  return r;
+}
+
+/// --tile-stats: one CSV line per rendered tile; with --verbose under MPI, each rank's busy CPU time.
+void report_tiles(const RenderArgs& a, const TileRenderSession& session, bool verbose, bool mpi) {
+  const std::vector<TileLogEntry>& log = session.tile_log();
+  if (!a.tile_stats.empty()) {
+    std::ostringstream csv;
+    csv << "frame,eye,tile,x0,y0,x1,y1,rank,order_cost,cpu_seconds,steps,done_at\n";
+    for (const TileLogEntry& e : log)
+      csv << e.frame << ',' << e.eye << ',' << e.tile << ',' << e.rect.x0 << ',' << e.rect.y0 << ',' << e.rect.x1
+          << ',' << e.rect.y1 << ',' << e.rank << ',' << e.order_cost << ',' << e.cost.cpu_seconds << ','
+          << e.cost.steps << ',' << e.done_at << '\n';
+    write_file_atomic(a.tile_stats, csv.str());
+  }
+  if (!verbose || !mpi) return;
+  std::map<int, std::pair<int, double>> per_rank;  // rank -> tiles, CPU seconds
+  for (const TileLogEntry& e : log) {
+    ++per_rank[e.rank].first;
+    per_rank[e.rank].second += e.cost.cpu_seconds;
+  }
+  for (const auto& [rank, busy] : per_rank)
+    std::cerr << "rank " << rank << ": " << busy.first << " tiles, " << busy.second << " s CPU\n";
+}
+
+/// Ranks 1..N-1 of an MPI job: render the tiles rank 0 hands out, building each frame's jobs
+/// when its first tile arrives.
+int render_as_mpi_worker(SceneBuilder& builder, const RenderArgs& a, MpiContext& mpi) {
+  int built = -1;
+  std::vector<FrameJob> jobs;
+  run_mpi_worker(mpi, tile_render_options(a, true), [&](int frame, int eye) -> const RenderJob& {
+    if (frame != built) {
+      jobs = builder.build(frame);
+      built = frame;
+    }
+    if (eye < 0 || size_t(eye) >= jobs.size())
+      throw Error("MPI: frame " + std::to_string(frame) + " has no image " + std::to_string(eye));
+    return jobs[size_t(eye)].job;
+  });
+  return 0;
+}
+
 // ---- the command -------------------------------------------------------------------------------
 
-int run_render(const RenderArgs& a, const GlobalOptions& g) {
-  const bool quiet = a.quiet || g.quiet;
+int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
+  const bool mpi_worker = mpi && mpi->rank() > 0;  // only rank 0 prints and writes
+  const bool quiet = a.quiet || g.quiet || mpi_worker;
   const bool verbose = (a.verbose || g.verbose) && !quiet;
   Diagnostics diag;
   diag.strict = a.strict;
@@ -344,6 +429,8 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
   std::optional<std::pair<int, int>> res;
   if (!a.res.empty()) res = parse_res(a.res);
   if (a.threads < 0) throw Error("--threads: expected 0 (all cores) or a positive number, found " + std::to_string(a.threads));
+  if (a.tile_size < 1 || a.tile_size > 4096)
+    throw Error("--tile-size: expected 1 to 4096 pixels, found " + std::to_string(a.tile_size));
   if (a.supersample < 1 || a.supersample > kMaxSupersample)
     throw Error("--supersample: expected 1 to " + std::to_string(kMaxSupersample) +
                 " samples per pixel side, found " + std::to_string(a.supersample));
@@ -401,10 +488,16 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
   std::ostringstream action_log;
   builder.run_actions(action_log);
   if (!quiet) std::cout << action_log.str();
+  if (mpi_worker) return render_as_mpi_worker(builder, a, *mpi);
 
+  std::unique_ptr<MpiTileDispatcher> dispatcher;
+  if (mpi) dispatcher = std::make_unique<MpiTileDispatcher>(*mpi);
+  const InterruptHandler interrupt;
+  TileRenderSession session(tile_render_options(a, quiet, interrupt.flag()), dispatcher.get());
+  std::string identity;  // what a tile checkpoint must match: the same settings as the images' hash
+  for (const std::string& line : settings) identity += line + "\n";
   int rendered = 0, skipped = 0;
   bool stereo = false;
-  const InterruptHandler interrupt;
   for (int f = first; f <= last; ++f) {
     const std::string path = frame_path(out, f, sequence);
     const std::vector<FrameJob> jobs = builder.build(f);
@@ -415,7 +508,8 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
       if (verbose) std::cerr << "frame " << f << ": " << path << " is complete, skipped (--resume)\n";
       continue;
     }
-    for (const FrameJob& fj : jobs) {
+    for (size_t eye = 0; eye < jobs.size(); ++eye) {
+      const FrameJob& fj = jobs[eye];
       const std::string img = eye_path(path, fj.eye);
       const fs::path parent = fs::path(img).parent_path();
       if (!parent.empty()) {
@@ -423,17 +517,13 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
         fs::create_directories(parent, ec);
         if (ec) throw Error("cannot create the output folder \"" + parent.string() + "\": " + ec.message());
       }
-      RenderOptions ro;
-      ro.threads = a.threads;
-      ro.progress = !quiet;
-      ro.label = "frame " + std::to_string(f) + (fj.eye.empty() ? "" : " " + fj.eye) + " -> " + img;
-      ro.cancel = interrupt.flag();
-      RenderResult r;
+      RenderedImage rendered_image;
       try {
-        r = render(fj.job, ro);
+        rendered_image = render_frame_image(session, a, identity, f, int(eye), fj, img, quiet, verbose);
       } catch (const RenderInterrupted& e) {
-        return report_interrupted(e, interrupt.signal_number(), f, rendered + skipped);
+        return report_interrupted(e, interrupt.signal_number(), f, rendered + skipped, img + ".tiles");
       }
+      const RenderResult& r = rendered_image.result;
       // Data files first, the image last: an existing image means a complete frame (--resume).
       if (!fj.data_files_wanted.empty()) {
         const std::string written =
@@ -441,12 +531,15 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
         if (verbose && !written.empty()) std::cerr << "  data: " << written << "\n";
       }
       write_image(img, r.image, 8, frame_description(settings, f, fj.eye));
+      if (rendered_image.checkpoint) rendered_image.checkpoint->remove();
       if (verbose)
         std::cerr << "  " << r.stats.rays << " rays, " << r.stats.steps << " steps, " << r.stats.rhs_evals
                   << " right-hand-side evaluations, " << r.stats.seconds << " s\n";
     }
     ++rendered;
   }
+  if (dispatcher) dispatcher->finish();
+  report_tiles(a, session, verbose, mpi != nullptr);
   if (!quiet && a.resume) std::cerr << rendered << " frame(s) rendered, " << skipped << " skipped (already on disk)\n";
 
   if (!a.movie.empty()) {
@@ -455,6 +548,23 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
     make_movie(a, ffmpeg, eye_path(movie_pattern(out, sequence), stereo ? "left" : ""), first, quiet);
   }
   return 0;
+}
+
+/// Runs the command in this process or, under mpirun, as one rank of an MPI job. An error ends
+/// the whole job and is reported once: by rank 0, or by rank 0 on behalf of the rank that failed.
+int run_render_in_mpi_job(const RenderArgs& a, const GlobalOptions& g) {
+  const std::unique_ptr<MpiContext> mpi = MpiContext::from_environment();
+  if (!mpi || mpi->size() == 1) return run_render(a, g, nullptr);
+  try {
+    return run_render(a, g, mpi.get());
+  } catch (const SceneExit& e) {
+    if (mpi->rank() > 0) return e.code();  // every rank stops at the scene's (exit); rank 0 says so
+    throw;
+  } catch (const std::exception& e) {
+    if (mpi->rank() > 0) mpi->fail(e.what());
+    std::cerr << "geovis: error: " << e.what() << "\n";
+    mpi->abort(1);
+  }
 }
 
 void setup(CLI::App& app, GlobalOptions& g) {
@@ -467,19 +577,24 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->add_option("--res", a->res, "override the camera resolution, WIDTHxHEIGHT (field of view kept)");
   sub->add_option("--threads", a->threads, "worker threads (0 = all cores)");
   sub->add_option("--supersample", a->supersample, "N x N samples per pixel");
+  sub->add_option("--tile-size", a->tile_size,
+                  "tiles of N x N pixels that threads and MPI ranks take one at a time (default 16)");
   sub->add_option("--texture-path", a->texture_paths,
                   "extra folder to search for textures and meshes (a file the scene names by a path that "
                   "does not exist here is looked up by its file name)")
       ->allow_extra_args(false);
   add_scene_options(sub, a->scene_args);
   sub->add_flag("--strict", a->strict, "treat warnings (unknown keys, ...) as errors");
-  sub->add_flag("--resume", a->resume, "skip frames whose image already exists");
+  sub->add_flag("--resume", a->resume,
+                "skip frames whose image already exists and continue a frame from its tile checkpoint");
   sub->add_option("--movie", a->movie, "assemble the frames into a movie with ffmpeg (e.g. out.mp4)");
+  sub->add_option("--tile-stats", a->tile_stats,
+                  "write one CSV line per rendered tile (rank, CPU seconds, steps) to FILE, for load-balance studies");
   sub->add_flag("-q,--quiet", a->quiet, "print nothing but errors");
   sub->add_flag("-v,--verbose", a->verbose, "print details (statistics per frame)");
   sub->callback([a, &g]() {
     try {
-      g.exit_code = run_render(*a, g);
+      g.exit_code = run_render_in_mpi_job(*a, g);
     } catch (const SceneExit& e) {
       // The scene called (exit [code]): GeoViS stops there without rendering. Not an error;
       // the exit status is the scene's code.

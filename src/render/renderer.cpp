@@ -11,6 +11,7 @@
 #include "core/progress.h"
 #include "render/camera.h"
 #include "render/frame_limits.h"
+#include "render/tile_schedule.h"
 #include "render/tracer.h"
 
 namespace geovis {
@@ -29,31 +30,64 @@ namespace {
 
 bool cancelled(const RenderOptions& opt) { return opt.cancel && opt.cancel->load(std::memory_order_relaxed); }
 
+/// Hands out the tiles 0, 1, 2, ... in order (the plain single-process render).
+class SequentialTiles final : public TileSchedule {
+ public:
+  explicit SequentialTiles(int n) : n_(n) {}
+  int next_tile(int) override {
+    const int t = next_.fetch_add(1, std::memory_order_relaxed);
+    return t < n_ ? t : -1;
+  }
+  void tile_done(int, int, const TileCost&, const RenderResult&) override {}
+
+ private:
+  const int n_;
+  std::atomic<int> next_{0};
+};
+
 }  // namespace
 
 RenderResult render(const RenderJob& job, const RenderOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
+  RenderResult result = allocate_render_result(job);
+  const TileGrid grid(result.image.width, result.image.height, opt.tile_size);
+  SequentialTiles tiles(grid.count());
+  render_tiles(job, opt, tiles, result);
+  result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+RenderResult allocate_render_result(const RenderJob& job) {
+  if (!job.camera) throw Error("render: the job has no camera");
+  const int W = job.camera->width(), H = job.camera->height();
+  if (W <= 0 || H <= 0) throw Error("render: the camera has an empty resolution");
+  check_frame_size("render", W, H, job.filter != Filter::RGB);
+  RenderResult result;
+  result.image = Image(W, H, 3);
+  if (job.filter != Filter::RGB) result.data.assign(size_t(W) * H, PixelData{});
+  return result;
+}
+
+void render_tiles(const RenderJob& job, const RenderOptions& opt, TileSchedule& schedule, RenderResult& result) {
   const Tracer tracer(job);  // validates the job
   const Camera& cam = *job.camera;
   const int W = cam.width(), H = cam.height();
-  if (W <= 0 || H <= 0) throw Error("render: the camera has an empty resolution");
   if (opt.tile_size < 1) throw Error("render: tile size must be positive");
-  check_frame_size("render", W, H, job.filter != Filter::RGB);
-
-  RenderResult result;
-  result.image = Image(W, H, 3);
+  const TileGrid grid(W, H, opt.tile_size);
+  if (result.image.width != W || result.image.height != H || result.image.channels != 3)
+    throw Error("render: the result image does not match the camera resolution");
   const bool want_data = job.filter != Filter::RGB;
-  if (want_data) result.data.assign(size_t(W) * H, PixelData{});
+  if (want_data && result.data.size() != size_t(W) * H)
+    throw Error("render: the result has no room for the filter data");
 
-  const int ts = opt.tile_size;
-  const int tiles_x = (W + ts - 1) / ts, tiles_y = (H + ts - 1) / ts;
-  const int n_tiles = tiles_x * tiles_y;
+  const int n_tiles = grid.count();
   int n_threads = opt.threads > 0 ? opt.threads : int(std::thread::hardware_concurrency());
   if (n_threads < 1) n_threads = 1;
   if (n_threads > n_tiles) n_threads = n_tiles;
 
   Progress progress(long(W) * H, opt.label, opt.progress);
-  std::atomic<int> next_tile{0}, tiles_done{0};
+  std::atomic<int> tiles_done{0};
+  std::atomic<bool> interrupted{false};
   std::atomic<bool> abort{false};
   std::exception_ptr error;
   std::mutex error_mutex;
@@ -68,13 +102,19 @@ RenderResult render(const RenderJob& job, const RenderOptions& opt) {
   auto worker = [&](int tid) {
     TraceStats& st = stats[size_t(tid)];
     try {
-      while (!abort.load(std::memory_order_relaxed) && !cancelled(opt)) {
-        const int tile = next_tile.fetch_add(1, std::memory_order_relaxed);
-        if (tile >= n_tiles) break;
-        const int x0 = (tile % tiles_x) * ts, y0 = (tile / tiles_x) * ts;
-        const int x1 = std::min(W, x0 + ts), y1 = std::min(H, y0 + ts);
-        for (int y = y0; y < y1; ++y) {
-          for (int x = x0; x < x1; ++x) {
+      while (!abort.load(std::memory_order_relaxed)) {
+        if (cancelled(opt)) {  // SIGINT/SIGTERM: stop at the next tile
+          interrupted = true;
+          break;
+        }
+        const int tile = schedule.next_tile(tid);
+        if (tile < 0) break;
+        if (tile >= n_tiles) throw Error("render: tile " + std::to_string(tile) + " is outside the image");
+        const double cpu0 = thread_cpu_seconds();
+        const long steps0 = st.steps;
+        const TileRect r = grid.rect(tile);
+        for (int y = r.y0; y < r.y1; ++y) {
+          for (int x = r.x0; x < r.x1; ++x) {
             PixelData* data = want_data ? &result.data[size_t(y) * W + x] : nullptr;
             Color sum;
             for (int b = 0; b < n; ++b) {
@@ -98,7 +138,8 @@ RenderResult render(const RenderJob& job, const RenderOptions& opt) {
             px[2] = float(c.b);
           }
         }
-        progress.add(long(x1 - x0) * (y1 - y0));
+        schedule.tile_done(tid, tile, TileCost{thread_cpu_seconds() - cpu0, st.steps - steps0}, result);
+        progress.add(r.pixels());
         tiles_done.fetch_add(1, std::memory_order_relaxed);
       }
     } catch (...) {
@@ -117,16 +158,14 @@ RenderResult render(const RenderJob& job, const RenderOptions& opt) {
     for (auto& th : pool) th.join();
   }
   if (error) std::rethrow_exception(error);
-  if (tiles_done.load() < n_tiles) throw RenderInterrupted(tiles_done.load(), n_tiles);
+  if (interrupted) throw RenderInterrupted(tiles_done.load(), n_tiles);
   progress.finish();
 
   TraceStats total;
   for (const auto& s : stats) total += s;
-  result.stats.rays = total.rays;
-  result.stats.steps = total.steps;
-  result.stats.rhs_evals = total.rhs_evals;
-  result.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return result;
+  result.stats.rays += total.rays;
+  result.stats.steps += total.steps;
+  result.stats.rhs_evals += total.rhs_evals;
 }
 
 }  // namespace geovis

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <numbers>
 #include <sstream>
 
@@ -17,6 +18,7 @@
 #include "render/data_files.h"
 #include "render/pinhole_camera.h"
 #include "render/renderer.h"
+#include "render/tile_schedule.h"
 #include "spacetime/metric_registry.h"
 
 namespace geovis {
@@ -97,6 +99,57 @@ TEST(Renderer, ThreadCountDoesNotChangeAPixel) {
   }
   opt.tile_size = 7;  // another tiling, same pixels
   EXPECT_EQ(render(job, opt).image.pixels, r1.image.pixels);
+}
+
+TEST(Renderer, TilesOfAnyScheduleMatchTheFullRender) {
+  const RenderJob job = schwarzschild_job(45, 37);
+  RenderOptions opt;
+  opt.progress = false;
+  opt.threads = 1;
+  const RenderResult full = render(job, opt);
+
+  // Every other tile, most expensive first by the probe, on 3 threads: those tiles are the full
+  // render's to the bit, the others are left alone, and every tile handed out is done once.
+  const TileGrid grid(45, 37, opt.tile_size);
+  std::vector<int> odd;
+  for (int t = 1; t < grid.count(); t += 2) odd.push_back(t);
+  struct Schedule final : TileSchedule {
+    CostOrderedTiles queue;
+    std::mutex mutex;
+    std::vector<int> done;
+    Schedule(std::vector<int> tiles, const std::vector<double>& cost) : queue(std::move(tiles), cost) {}
+    int next_tile(int) override { return queue.pop(); }
+    void tile_done(int, int tile, const TileCost& cost, const RenderResult&) override {
+      EXPECT_GT(cost.steps, 0);
+      std::lock_guard lock(mutex);
+      done.push_back(tile);
+    }
+  } schedule(odd, probe_tile_costs(job, grid, 2));
+  RenderResult part = allocate_render_result(job);
+  opt.threads = 3;
+  render_tiles(job, opt, schedule, part);
+  std::sort(schedule.done.begin(), schedule.done.end());
+  EXPECT_EQ(schedule.done, odd);
+  for (int t = 0; t < grid.count(); ++t) {
+    const TileRect r = grid.rect(t);
+    for (int y = r.y0; y < r.y1; ++y)
+      for (int x = r.x0; x < r.x1; ++x)
+        for (int c = 0; c < 3; ++c)
+          ASSERT_EQ(part.image.at(x, y)[c], t % 2 ? full.image.at(x, y)[c] : 0.f) << t << " " << x << "," << y;
+  }
+}
+
+TEST(TileSchedule, MostExpensiveTileFirstTiesByNumber) {
+  CostOrderedTiles q({0, 1, 2, 3, 4}, {1.0, 5.0, 5.0, 0.5, 2.0});
+  EXPECT_EQ(q.remaining(), 5);
+  for (int expected : {1, 2, 4, 0, 3, -1}) EXPECT_EQ(q.pop(), expected);
+  const TileGrid g(45, 37, 16);
+  EXPECT_EQ(g.count(), 9);
+  const TileRect corner = g.rect(8);
+  EXPECT_EQ(corner.x0, 32);
+  EXPECT_EQ(corner.x1, 45);
+  EXPECT_EQ(corner.y1, 37);
+  EXPECT_EQ(corner.pixels(), 13 * 5);
 }
 
 TEST(Renderer, SupersamplingAveragesSubpixelSamples) {

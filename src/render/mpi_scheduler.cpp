@@ -1,0 +1,567 @@
+#include "render/mpi_scheduler.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <memory>
+#include <map>
+#include <set>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "core/error.h"
+#include "render/renderer.h"
+
+#if GEOVIS_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace geovis {
+
+namespace {
+
+/// The number of ranks an MPI launcher announced in the environment; 0 without such a launch.
+int launcher_world_size() {
+  for (const char* var : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})
+    if (const char* v = std::getenv(var)) return std::max(1, std::atoi(v));
+  if (std::getenv("PMIX_RANK") || std::getenv("PMI_RANK")) return 1;
+  return 0;
+}
+
+std::string command_line() {
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  const std::string raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string out;
+  size_t start = 0;
+  while (start < raw.size()) {
+    size_t end = raw.find('\0', start);
+    if (end == std::string::npos) end = raw.size();
+    std::string arg = raw.substr(start, end - start);
+    if (arg.empty() || arg.find_first_of(" \t'\"$*?&;|<>()") != std::string::npos) arg = "'" + arg + "'";
+    out += (out.empty() ? "" : " ") + arg;
+    start = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string MpiContext::resume_command() const {
+  std::string cmd = command_line();
+  if ((" " + cmd + " ").find(" --resume ") == std::string::npos) cmd += " --resume";
+  return "mpirun -np " + std::to_string(size_) + " " + cmd;
+}
+
+#if GEOVIS_HAVE_MPI
+
+namespace {
+
+/// Every MPI call of the process is made under this mutex (MPI_THREAD_SERIALIZED).
+std::mutex& mpi_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+enum Tag : int {
+  kTagRequest = 1,  ///< rank -> 0: RequestHeader (+ the finished tile), asks for the next tile
+  kTagBye = 2,      ///< rank -> 0: all threads of the rank are done
+  kTagError = 3,    ///< rank -> 0: the rank failed; the text of the error
+  kTagAssign = 100  ///< 0 -> rank, + the requesting thread's slot: an Assignment
+};
+
+struct RequestHeader {
+  int32_t slot = 0, frame = -1, eye = -1, tile = -1;  ///< tile -1: no finished tile attached
+  double cpu_seconds = 0;
+  int64_t steps = 0;
+  int32_t n_floats = 0, n_doubles = 0;
+};
+
+struct Assignment {
+  enum Kind : int32_t { kUnknown = -1, kFinished = 0, kTile = 1 };
+  int32_t kind = kUnknown, frame = -1, eye = -1, tile = -1;
+};
+
+/// Polls a non-blocking operation to completion without holding the MPI mutex in between (other
+/// threads of the process keep communicating) and without spinning a core.
+void wait_for(MPI_Request& request) {
+  for (;;) {
+    int done = 0;
+    {
+      std::lock_guard lock(mpi_mutex());
+      MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    }
+    if (done) return;
+    std::this_thread::sleep_for(std::chrono::microseconds(50));
+  }
+}
+
+void send_bytes(const void* data, size_t n, int dest, int tag) {
+  MPI_Request r;
+  {
+    std::lock_guard lock(mpi_mutex());
+    MPI_Isend(data, int(n), MPI_BYTE, dest, tag, MPI_COMM_WORLD, &r);
+  }
+  wait_for(r);
+}
+
+// What rank 0 prints when the job is stopped from outside (SIGTERM: mpirun ending the job because
+// a rank died, or a batch system's time limit): a signal handler may only write() bytes that are
+// ready, so the communication thread keeps the message up to date in one of two buffers and
+// publishes it by switching the index.
+char g_status[2][8192];
+std::atomic<int> g_status_active{-1};
+
+void publish_status(const std::string& text) {
+  const int next = g_status_active.load() == 0 ? 1 : 0;
+  const size_t n = std::min(text.size(), sizeof g_status[next] - 1);
+  std::memcpy(g_status[next], text.data(), n);
+  g_status[next][n] = '\0';
+  g_status_active.store(next);
+}
+
+extern "C" void on_terminate(int sig) {
+  const int a = g_status_active.load();
+  if (a >= 0) {
+    const ssize_t ignored = ::write(2, g_status[a], std::strlen(g_status[a]));
+    (void)ignored;
+  }
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
+}
+
+}  // namespace
+
+std::unique_ptr<MpiContext> MpiContext::from_environment() {
+  if (launcher_world_size() == 0) return nullptr;
+  int provided = 0;
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  std::unique_ptr<MpiContext> mpi(new MpiContext(rank, size));
+  if (provided < MPI_THREAD_SERIALIZED) {
+    if (rank == 0)
+      std::cerr << "geovis: error: the MPI library does not support threads (MPI_THREAD_SERIALIZED); "
+                   "rebuild geovis with Open MPI (Debian: libopenmpi-dev)\n";
+    mpi->abort(1);
+  }
+  return mpi;
+}
+
+MpiContext::~MpiContext() {
+  std::lock_guard lock(mpi_mutex());
+  MPI_Finalize();
+}
+
+void MpiContext::abort(int code) {
+  std::cerr.flush();
+  mpi_mutex().lock();  // never released: the process ends here
+  MPI_Abort(MPI_COMM_WORLD, code);
+  std::_Exit(code);
+}
+
+void MpiContext::fail(const std::string& message) {
+  // Rank 0 reports the error and ends the job. When every rank fails the same way (a scene
+  // error), rank 0 reports its own and the others stay silent: the error appears once.
+  MPI_Request r;
+  {
+    std::lock_guard lock(mpi_mutex());
+    MPI_Isend(message.data(), int(message.size()), MPI_BYTE, 0, kTagError, MPI_COMM_WORLD, &r);
+  }
+  // Rank 0 may still be evaluating the scene; give it a minute to end the job, then end it here.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  std::cerr << "geovis: error: rank " << rank_ << ": " << message << "\n";
+  abort(1);
+}
+
+// ---- rank 0 ------------------------------------------------------------------------------------
+
+struct MpiTileDispatcher::State {
+  explicit State(MpiContext& m) : mpi(m) {}
+  MpiContext& mpi;
+  std::thread comm;
+  std::atomic<bool> stop{false};
+  std::mutex mutex;  // guards everything below
+  ImageInProgress* image = nullptr;
+  std::deque<std::pair<int, int>> waiting;      ///< (rank, slot) asking for work while there is none
+  std::set<std::pair<int, int>> in_flight;      ///< (rank, tile) handed out and not back yet
+  bool finishing = false;
+  int byes = 0;
+
+  void loop();
+  void handle_request(int source, const std::vector<char>& msg);
+  bool assign(int rank, int slot);
+  void serve_waiting();
+  void update_status();
+  std::string status_text() const;
+};
+
+std::string MpiTileDispatcher::State::status_text() const {
+  std::string s = "geovis: the MPI job was stopped (a rank died, or the batch system ended it)";
+  if (image) {
+    s += " while rendering frame " + std::to_string(image->frame);
+    if (image->eye > 0) s += " (image " + std::to_string(image->eye + 1) + " of the stereo pair)";
+    s += ": " + std::to_string(image->done_count()) + " of " + std::to_string(image->todo_count()) +
+         " tiles were finished";
+    if (image->checkpoint()) s += " and are kept in the checkpoint \"" + image->checkpoint()->path() + "\"";
+    if (!in_flight.empty()) {
+      s += "; unfinished:";
+      for (const auto& [rank, tile] : in_flight)
+        s += " tile " + std::to_string(tile) + " on rank " + std::to_string(rank) + ",";
+      s.pop_back();
+    }
+  }
+  return s + "\ngeovis: to continue, run: " + mpi.resume_command() + "\n";
+}
+
+void MpiTileDispatcher::State::update_status() { publish_status(status_text()); }
+
+bool MpiTileDispatcher::State::assign(int rank, int slot) {
+  Assignment a;
+  const int tile = image ? image->pop() : -1;
+  if (tile >= 0) {
+    a = {Assignment::kTile, image->frame, image->eye, tile};
+    in_flight.insert({rank, tile});
+  } else if (finishing) {
+    a.kind = Assignment::kFinished;
+  } else {
+    waiting.emplace_back(rank, slot);
+    return false;
+  }
+  send_bytes(&a, sizeof a, rank, kTagAssign + slot);
+  if (tile >= 0) update_status();
+  return true;
+}
+
+void MpiTileDispatcher::State::serve_waiting() {
+  while (!waiting.empty() && (finishing || (image && image->remaining() > 0))) {
+    const auto [rank, slot] = waiting.front();
+    waiting.pop_front();
+    if (!assign(rank, slot)) break;
+  }
+}
+
+void MpiTileDispatcher::State::handle_request(int source, const std::vector<char>& msg) {
+  RequestHeader h;
+  if (msg.size() < sizeof h) throw Error("MPI: a short request from rank " + std::to_string(source));
+  std::memcpy(&h, msg.data(), sizeof h);
+  if (h.tile >= 0) {
+    if (!image || h.frame != image->frame || h.eye != image->eye || h.tile >= image->grid.count())
+      throw Error("MPI: rank " + std::to_string(source) + " returned tile " + std::to_string(h.tile) + " of frame " +
+                  std::to_string(h.frame) + ", which is not being rendered");
+    const int px = image->grid.rect(h.tile).pixels();
+    const int doubles_per_px = int(sizeof(PixelData) / sizeof(double));
+    if (h.n_floats != 3 * px || (h.n_doubles != 0 && h.n_doubles != px * doubles_per_px) ||
+        msg.size() != sizeof h + size_t(h.n_floats) * sizeof(float) + size_t(h.n_doubles) * sizeof(double))
+      throw Error("MPI: tile " + std::to_string(h.tile) + " from rank " + std::to_string(source) + " has the wrong size");
+    // Copied out of the message: the byte buffer gives no alignment guarantee for float/double.
+    std::vector<float> pixels(size_t(h.n_floats));
+    std::memcpy(pixels.data(), msg.data() + sizeof h, pixels.size() * sizeof(float));
+    std::vector<PixelData> data(size_t(h.n_doubles / doubles_per_px));
+    std::memcpy(static_cast<void*>(data.data()), msg.data() + sizeof h + pixels.size() * sizeof(float),
+                data.size() * sizeof(PixelData));
+    image->done_remote(h.tile, source, TileCost{h.cpu_seconds, long(h.steps)}, pixels.data(),
+                       data.empty() ? nullptr : data.data());
+    in_flight.erase({source, h.tile});
+  }
+  assign(source, h.slot);
+}
+
+void MpiTileDispatcher::State::loop() {
+  std::vector<char> msg;
+  try {
+    while (!stop.load()) {
+      int flag = 0;
+      MPI_Status st;
+      {
+        std::lock_guard lock(mpi_mutex());
+        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
+      }
+      if (!flag) {
+        {
+          std::lock_guard lock(mutex);
+          serve_waiting();
+          if (finishing && byes == mpi.size() - 1) return;
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(100));
+        continue;
+      }
+      int count = 0;
+      {
+        std::lock_guard lock(mpi_mutex());
+        MPI_Get_count(&st, MPI_BYTE, &count);
+        msg.resize(size_t(std::max(count, 1)));
+        MPI_Recv(msg.data(), count, MPI_BYTE, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      }
+      msg.resize(size_t(count));
+      std::lock_guard lock(mutex);
+      if (st.MPI_TAG == kTagRequest) {
+        handle_request(st.MPI_SOURCE, msg);
+      } else if (st.MPI_TAG == kTagBye) {
+        ++byes;
+      } else if (st.MPI_TAG == kTagError) {
+        std::cerr << "geovis: error: rank " << st.MPI_SOURCE << ": " << std::string(msg.begin(), msg.end()) << "\n"
+                  << status_text();
+        mpi.abort(1);
+      } else {
+        throw Error("MPI: unexpected message (tag " + std::to_string(st.MPI_TAG) + ") from rank " +
+                    std::to_string(st.MPI_SOURCE));
+      }
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "geovis: error: " << e.what() << "\n" << status_text();
+    mpi.abort(1);
+  }
+}
+
+MpiTileDispatcher::MpiTileDispatcher(MpiContext& mpi) : state_(std::make_unique<State>(mpi)) {
+  state_->update_status();
+  ::signal(SIGTERM, on_terminate);
+  state_->comm = std::thread([s = state_.get()] { s->loop(); });
+}
+
+MpiTileDispatcher::~MpiTileDispatcher() {
+  if (state_->comm.joinable()) {
+    state_->stop = true;
+    state_->comm.join();
+  }
+}
+
+void MpiTileDispatcher::start_image(ImageInProgress& image) {
+  std::lock_guard lock(state_->mutex);
+  state_->image = &image;
+  state_->update_status();
+}
+
+void MpiTileDispatcher::end_image() {
+  std::lock_guard lock(state_->mutex);
+  state_->image = nullptr;
+  state_->update_status();
+}
+
+void MpiTileDispatcher::finish() {
+  {
+    std::lock_guard lock(state_->mutex);
+    state_->finishing = true;
+  }
+  state_->comm.join();
+  ::signal(SIGTERM, SIG_DFL);
+}
+
+// ---- ranks 1..N-1 ------------------------------------------------------------------------------
+
+namespace {
+
+/// The tiles rank 0 hands to this rank's render threads. Every thread keeps one request ahead:
+/// while it renders a tile, the reply with its next tile is already on the way, so a round trip
+/// to rank 0 (a sleeping communication thread to wake, a busy core) never idles a render thread.
+/// A reply may bring a tile of the next image; it waits ("stashed") until that image is rendered.
+class WorkerTiles final : public TileSchedule {
+ public:
+  explicit WorkerTiles(int slots) : slots_(size_t(slots)) {}
+
+  void begin_image(int frame, int eye, const TileGrid& grid) {
+    frame_ = frame;
+    eye_ = eye;
+    grid_ = grid;
+  }
+
+  /// The image of the earliest received tile; false when rank 0 has no more work. Called when no
+  /// render thread runs.
+  bool next_image(int& frame, int& eye) {
+    for (;;) {
+      bool any_finished = false, any_tile = false;
+      for (const Slot& slot : slots_)
+        for (const Assignment& a : slot.received) {
+          any_finished = any_finished || a.kind == Assignment::kFinished;
+          if (a.kind == Assignment::kTile &&
+              (!any_tile || std::make_pair(a.frame, a.eye) < std::make_pair(frame, eye))) {
+            frame = a.frame;
+            eye = a.eye;
+            any_tile = true;
+          }
+        }
+      if (any_tile) return true;
+      if (any_finished) return false;
+      size_t s = 0;
+      while (s < slots_.size() && slots_[s].receiving.empty()) ++s;
+      if (s == slots_.size()) {  // nothing asked for yet
+        s = 0;
+        exchange(0);
+      }
+      receive_one(int(s));
+    }
+  }
+
+  int next_tile(int slot) override {
+    Slot& me = slots_[size_t(slot)];
+    if (!me.finished_tile.empty()) exchange(slot);  // returns the last tile and asks for one more
+    for (;;) {
+      int tile = -1;
+      size_t ahead = 0;
+      bool later_image = false;
+      {
+        std::lock_guard lock(mutex_);
+        // A tile of this image received by any thread (another one may have stopped meanwhile).
+        for (Slot& other : slots_)
+          for (auto it = other.received.begin(); tile < 0 && it != other.received.end(); ++it)
+            if (it->kind == Assignment::kTile && it->frame == frame_ && it->eye == eye_) {
+              tile = it->tile;
+              other.received.erase(it);
+              break;
+            }
+        ahead = me.receiving.size() + me.received.size();
+        // The next reply is for a later image, or rank 0 has no more work: this thread is done.
+        later_image = tile < 0 && !me.received.empty();
+      }
+      if (tile >= 0) {
+        if (ahead == 0) exchange(slot);  // the next tile is on its way while this one renders
+        return tile;
+      }
+      if (later_image) return -1;
+      if (me.receiving.empty()) exchange(slot);
+      receive_one(slot);
+    }
+  }
+
+  void tile_done(int slot, int tile, const TileCost& cost, const RenderResult& result) override {
+    const TileRect r = grid_.rect(tile);
+    const bool with_data = !result.data.empty();
+    RequestHeader h;
+    h.slot = slot;
+    h.frame = frame_;
+    h.eye = eye_;
+    h.tile = tile;
+    h.cpu_seconds = cost.cpu_seconds;
+    h.steps = cost.steps;
+    h.n_floats = 3 * r.pixels();
+    h.n_doubles = with_data ? r.pixels() * int(sizeof(PixelData) / sizeof(double)) : 0;
+    std::vector<char>& out = slots_[size_t(slot)].finished_tile;
+    out.assign(reinterpret_cast<const char*>(&h), reinterpret_cast<const char*>(&h) + sizeof h);
+    for (int y = r.y0; y < r.y1; ++y) {
+      const char* row = reinterpret_cast<const char*>(result.image.at(r.x0, y));
+      out.insert(out.end(), row, row + size_t(r.x1 - r.x0) * 3 * sizeof(float));
+    }
+    if (with_data)
+      for (int y = r.y0; y < r.y1; ++y) {
+        const char* row = reinterpret_cast<const char*>(&result.data[size_t(y) * grid_.width + r.x0]);
+        out.insert(out.end(), row, row + size_t(r.x1 - r.x0) * sizeof(PixelData));
+      }
+    test_hook_tile_finished();
+  }
+
+  /// Waits for the replies to every request still out (rank 0 answers each one).
+  void drain() {
+    for (size_t s = 0; s < slots_.size(); ++s)
+      while (!slots_[s].receiving.empty()) receive_one(int(s));
+    for (Slot& slot : slots_)
+      if (slot.send_pending) wait_for(slot.send);
+  }
+
+ private:
+
+  struct Slot {
+    std::deque<Assignment> received;  ///< replies not used yet (guarded by mutex_)
+    std::deque<std::pair<MPI_Request, std::unique_ptr<Assignment>>> receiving;  ///< posted, in order
+    std::vector<char> finished_tile;  ///< the request carrying the thread's last finished tile
+    std::vector<char> sending;        ///< the request in flight
+    MPI_Request send{};
+    bool send_pending = false;
+  };
+
+  /// Sends the slot's request (with its finished tile, if any) and posts the receive of the reply.
+  void exchange(int slot) {
+    Slot& me = slots_[size_t(slot)];
+    if (me.send_pending) wait_for(me.send);  // its buffer is reused
+    me.sending.swap(me.finished_tile);
+    me.finished_tile.clear();
+    if (me.sending.empty()) {
+      RequestHeader h;
+      h.slot = slot;
+      me.sending.assign(reinterpret_cast<const char*>(&h), reinterpret_cast<const char*>(&h) + sizeof h);
+    }
+    auto reply = std::make_unique<Assignment>();
+    std::lock_guard lock(mpi_mutex());
+    me.receiving.emplace_back(MPI_Request{}, std::move(reply));
+    MPI_Irecv(me.receiving.back().second.get(), sizeof(Assignment), MPI_BYTE, 0, kTagAssign + slot, MPI_COMM_WORLD,
+              &me.receiving.back().first);
+    MPI_Isend(me.sending.data(), int(me.sending.size()), MPI_BYTE, 0, kTagRequest, MPI_COMM_WORLD, &me.send);
+    me.send_pending = true;
+  }
+
+  /// Waits for the slot's oldest outstanding reply.
+  void receive_one(int slot) {
+    Slot& me = slots_[size_t(slot)];
+    wait_for(me.receiving.front().first);
+    std::lock_guard lock(mutex_);
+    me.received.push_back(*me.receiving.front().second);
+    me.receiving.pop_front();
+  }
+
+  std::mutex mutex_;  // guards every Slot::received
+  std::vector<Slot> slots_;
+  int frame_ = -1, eye_ = -1;
+  TileGrid grid_;
+};
+
+}  // namespace
+
+void run_mpi_worker(MpiContext& mpi, const RenderOptions& options,
+                    const std::function<const RenderJob&(int frame, int eye)>& job_for) {
+  (void)mpi;
+  const int slots = std::max(1, options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency()));
+  WorkerTiles tiles(slots);
+  RenderOptions ro = options;
+  ro.threads = slots;
+  ro.progress = false;
+  int frame = -1, eye = -1;
+  while (tiles.next_image(frame, eye)) {
+    const RenderJob& job = job_for(frame, eye);
+    RenderResult result = allocate_render_result(job);
+    tiles.begin_image(frame, eye, TileGrid(result.image.width, result.image.height, ro.tile_size));
+    render_tiles(job, ro, tiles, result);
+  }
+  tiles.drain();
+  const int32_t bye = 0;
+  send_bytes(&bye, sizeof bye, 0, kTagBye);
+}
+
+#else  // built without MPI
+
+std::unique_ptr<MpiContext> MpiContext::from_environment() {
+  if (launcher_world_size() > 1)
+    throw Error("geovis was built without MPI, so every rank would render the whole job; run it without "
+                "mpirun, or rebuild with Open MPI (Debian: libopenmpi-dev)");
+  return nullptr;
+}
+MpiContext::~MpiContext() = default;
+void MpiContext::abort(int code) { std::_Exit(code); }
+void MpiContext::fail(const std::string& message) {
+  std::cerr << "geovis: error: " << message << "\n";
+  std::_Exit(1);
+}
+struct MpiTileDispatcher::State {};
+MpiTileDispatcher::MpiTileDispatcher(MpiContext&) { throw Error("geovis was built without MPI"); }
+MpiTileDispatcher::~MpiTileDispatcher() = default;
+void MpiTileDispatcher::start_image(ImageInProgress&) {}
+void MpiTileDispatcher::end_image() {}
+void MpiTileDispatcher::finish() {}
+void run_mpi_worker(MpiContext&, const RenderOptions&, const std::function<const RenderJob&(int, int)>&) {
+  throw Error("geovis was built without MPI");
+}
+
+#endif
+
+}  // namespace geovis
