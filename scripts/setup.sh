@@ -14,6 +14,8 @@ PACKAGES=(
   libgtest-dev             # tests
   libbenchmark-dev libgsl-dev  # benchmarks (GSL is the reference integrator)
   ffmpeg                   # --movie (optional at run time)
+  fonts-dejavu-core        # labels of geovis post --colorbar
+  libtinyexr-dev           # tests: an OpenEXR reader independent of OpenImageIO for the data files
 )
 
 missing=()

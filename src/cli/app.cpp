@@ -23,7 +23,7 @@ bool register_command(const char* name, CommandSetup setup) {
 
 int run(int argc, const char* const* argv) {
   CLI::App app{"geovis - general-relativistic ray tracer (GeoViS-compatible scenes)"};
-  app.set_version_flag("--version", "geovis 0.1.0");
+  app.set_version_flag("--version", std::string("geovis ") + kVersion);
   GlobalOptions opts;
   app.add_flag("-q,--quiet", opts.quiet, "print nothing but errors");
   app.add_flag("-v,--verbose", opts.verbose, "print details (warnings, statistics)");

@@ -1,6 +1,6 @@
 // `geovis render [SCENE] [-o OUT] [--frames A:B] [--res WxH] [--threads N] [--supersample N]
 //                [--texture-path DIR]... [--define NAME=VALUE]... [--strict] [--resume]
-//                [--movie out.mp4] [--quiet] [--verbose]`
+//                [--movie out.mp4] [--data] [--quiet] [--verbose]`
 //
 // Evaluates the scene (the built-in one without SCENE), builds each device (= frame) and renders
 // it. Every finished frame is written atomically (io/image.h) before the next one starts, so a
@@ -14,6 +14,7 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -21,6 +22,7 @@
 #include "cli/command.h"
 #include "core/error.h"
 #include "io/image.h"
+#include "render/data_exr.h"
 #include "render/data_files.h"
 #include "render/renderer.h"
 #include "scene/builder.h"
@@ -47,6 +49,7 @@ struct RenderArgs {
   bool strict = false;
   bool resume = false;
   std::string movie;
+  bool data = false;  ///< write the EXR data file without a data filter
   bool quiet = false;
   bool verbose = false;
 };
@@ -294,13 +297,21 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
   sopts.diag = &diag;
   SceneDescription scene;
   std::string base;
+  DataFileInfo data_info;
+  data_info.version = kVersion;
   if (a.scene.empty()) {
     scene = evaluate_scene_string(default_scene_text(), default_scene_name() + ".scm", sopts);
     base = default_scene_name();
+    data_info.scene_hash = fnv1a_hex(default_scene_text());
   } else {
     if (!fs::exists(a.scene)) throw Error("scene file \"" + a.scene + "\" does not exist");
     scene = evaluate_scene_file(a.scene, sopts);
     base = fs::path(a.scene).stem().string();
+    std::ifstream text(a.scene, std::ios::binary);
+    std::stringstream ss;
+    ss << text.rdbuf();
+    data_info.scene_file = fs::path(a.scene).filename().string();
+    data_info.scene_hash = fnv1a_hex(ss.str());
   }
   print_warnings(diag, quiet, printed);
 
@@ -338,10 +349,11 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
       if (verbose) std::cerr << "frame " << f << ": " << path << " exists, skipped (--resume)\n";
       continue;
     }
-    const std::vector<FrameJob> jobs = builder.build(f);
+    std::vector<FrameJob> jobs = builder.build(f);
     stereo = stereo || jobs.size() == 2;
     print_warnings(diag, quiet, printed);
-    for (const FrameJob& fj : jobs) {
+    for (FrameJob& fj : jobs) {
+      fj.job.keep_data = a.data;
       const std::string img = eye_path(path, fj.eye);
       const fs::path parent = fs::path(img).parent_path();
       if (!parent.empty()) {
@@ -359,6 +371,11 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
         const std::string written =
             write_filter_data(img, fj.job.filter, r.image.width, r.image.height, r.data);
         if (verbose && !written.empty()) std::cerr << "  data: " << written << "\n";
+      }
+      if (!r.data.empty()) {
+        data_info.frame = f;
+        const std::string written = write_data_exr(img, fj.job, r.image, r.data, data_info);
+        if (verbose) std::cerr << "  data: " << written << "\n";
       }
       write_image(img, r.image);
       if (verbose)
@@ -396,6 +413,9 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->add_flag("--strict", a->strict, "treat warnings (unknown keys, ...) as errors");
   sub->add_flag("--resume", a->resume, "skip frames whose image already exists");
   sub->add_option("--movie", a->movie, "assemble the frames into a movie with ffmpeg (e.g. out.mp4)");
+  sub->add_flag("--data", a->data,
+                "also write the OpenEXR data file (hit event, direction, 1+z, object, stop reason per pixel; "
+                "docs/data-format.md) next to each image, as the data filters do");
   sub->add_flag("-q,--quiet", a->quiet, "print nothing but errors");
   sub->add_flag("-v,--verbose", a->verbose, "print details (statistics per frame)");
   sub->callback([a, &g]() {

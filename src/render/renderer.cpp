@@ -29,7 +29,7 @@ RenderResult render(const RenderJob& job, const RenderOptions& opt) {
 
   RenderResult result;
   result.image = Image(W, H, 3);
-  const bool want_data = job.filter != Filter::RGB;
+  const bool want_data = job.filter != Filter::RGB || job.keep_data;
   if (want_data) result.data.assign(size_t(W) * H, PixelData{});
 
   const int ts = opt.tile_size;
