@@ -119,7 +119,8 @@ TEST_F(DataExr, ChannelsMissesAndHeader) {
     EXPECT_EQ(o[img.channel("lambda")], float(p.lambda));
     if (p.hit) {
       ++hits;
-      for (int k = 0; k < 4; ++k) EXPECT_EQ(o[img.channel("x" + std::to_string(k))], float(p.pos[k]));
+      const char* x[4] = {"x0", "x1", "x2", "x3"};
+      for (int k = 0; k < 4; ++k) EXPECT_EQ(o[img.channel(x[k])], float(p.pos[k]));
       EXPECT_EQ(o[img.channel("k0")], float(p.dir[0]));
       EXPECT_EQ(o[img.channel("z")], float(p.freqshift));
       EXPECT_EQ(o[img.channel("objid")], 1.f);
