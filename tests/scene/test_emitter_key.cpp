@@ -3,11 +3,13 @@
 // coordinates; GeoViS scenes (no key) keep the disk at rest.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 
 #include "core/error.h"
 #include "render/shapes.h"
+#include "render/tracer.h"
 #include "scene/builder.h"
 #include "scene/scheme.h"
 
@@ -69,6 +71,33 @@ TEST(EmitterKey, ClearErrors) {
   EXPECT_NE(build_error(disk_scene("Schwarzschild", "'(emitter \"keplerian\") '(center #(0 0 1))"))
                 .find("equatorial plane"),
             std::string::npos);
+}
+
+TEST(EmitterVelocity, LocalObjectOnItsMotionGivesTheRelativisticDoppler) {
+  // Minkowski: a sphere moving with β along the line of sight, seen head-on by an observer at
+  // rest. 1+z = ω_src/ω_obs = √((1 − β)/(1 + β)) when it approaches and √((1 + β)/(1 − β)) when it
+  // recedes (longitudinal relativistic Doppler effect, e.g. Rindler, Relativity (2006) eq. 4.45).
+  for (const double beta : {0.5, -0.5}) {  // velocity along −x: towards the observer at x = −10
+    const std::string scene =
+        "(init-metric '(type \"Minkowski\") '(id \"metric\"))\n"
+        "(init-solver '(type \"GSL_RK_Cash-Karp\") '(geodType \"lightlike\") '(id \"s\"))\n"
+        "(init-camera '(type \"PinHoleCam\") '(dir #(1 0 0)) '(vup #(0 0 1)) '(res #(9 9)) '(id \"cam\"))\n"
+        "(init-raygen '(type \"RayGenSimple\") '(solver \"s\")\n"
+        "  `(boundBoxLL ,(vector (- gpDBLMAX) -50.0 -50.0 -50.0)) `(boundBoxUR ,(vector gpDBLMAX 50.0 50.0 50.0)))\n"
+        "(local-tetrad '(pos #(0 -10 0 0)) '(e0 #(1 0 0 0)) '(e1 #(0 1 0 0)) '(e2 #(0 0 1 0)) '(e3 #(0 0 0 1))\n"
+        "  '(incoords #f) '(id \"obs\"))\n"
+        "(init-projector '(localtetrad \"obs\") '(id \"proj\"))\n"
+        "(init-motion '(type \"ConstVelocity\") '(boost #(" + std::to_string(-beta) + " 0 0)) '(id \"move\"))\n"
+        "(solid-ellipsoid `(objtype ,gpObjTypeInCoords) '(axlen #(1 1 1)) '(motion \"move\") '(id \"ball\"))\n"
+        "(init-device '(type \"standard\") '(obj \"ball\") '(camera \"cam\"))\n";
+    SceneBuilder b(evaluate_scene_string(scene, "moving.scm"), BuildOptions{});
+    const auto jobs = b.build(0);
+    const Tracer tracer(jobs.at(0).job);
+    TraceStats st;
+    const TraceResult r = tracer.trace_direction(Vec3{1, 0, 0}, st);
+    ASSERT_TRUE(r.hit) << beta;
+    EXPECT_NEAR(r.freqshift, std::sqrt((1 - beta) / (1 + beta)), 1e-9) << beta;
+  }
 }
 
 }  // namespace
