@@ -87,6 +87,38 @@ TEST(DiskRedshift, ApproachingAndRecedingSidesOfAnInclinedDisk) {
   EXPECT_NEAR(r.freqshift, std::sqrt(1 - 2 / r_obs) / std::sqrt(1 - 2 / r.pos[1]), 1e-8);
 }
 
+TEST(DiskRedshift, KerrProgradeDiskFromTheConservedQuantitiesOfTheRay) {
+  // Kerr a = 0.9: the disk matter on prograde circular orbits has Ω = √M/(r^{3/2} + a√M) and
+  // u^t = (r^{3/2} + a√M)/(r^{3/4}√(r^{3/2} − 3M√r + 2a√M)) (Bardeen, Press & Teukolsky 1972,
+  // eqs. 2.16, 2.12), so ω_src = −p·u = u^t (E − Ω L) with the conserved E = −p_t, L = p_φ of the
+  // photon, computed here from its momentum at the observer (ω_obs = 1).
+  const double a = 0.9, r_obs = 500, th = 75 * M_PI / 180;
+  RenderJob job = disk_job(r_obs, th);
+  auto kerr = make_metric("KerrBL");
+  kerr->set_params({{"mass", 1.0}, {"angmom", a}});
+  job.metric = std::move(kerr);
+  job.observer.e = job.metric->natural_tetrad(job.observer.pos, TetradKind::Default);
+  const Tracer tracer(job);
+  TraceStats st;
+  Mat4 g;
+  job.metric->metric_tensor(job.observer.pos, g);
+  for (double side : {1.0, -1.0}) {
+    const Vec3 d = normalize(Vec3{-1, 0.004, side * 0.025});
+    const TraceResult r = tracer.trace_direction(d, st);
+    ASSERT_TRUE(r.hit) << side;
+    const Vec4 k0 = local_null_direction(job.observer.e, d, true);  // p = −k0
+    double E = 0, L = 0;
+    for (int n = 0; n < 4; ++n) {
+      E += g[0][n] * k0[n];   // E = −p_t = g_tν k^ν
+      L -= g[3][n] * k0[n];   // L = p_φ = −g_φν k^ν
+    }
+    const double rh = r.pos[1], sa = a, r32 = std::pow(rh, 1.5);
+    const double omega = 1 / (r32 + sa);
+    const double ut = (r32 + sa) / (std::pow(rh, 0.75) * std::sqrt(r32 - 3 * std::sqrt(rh) + 2 * sa));
+    EXPECT_NEAR(r.freqshift, ut * (E - omega * L), 1e-7) << "side " << side << ", r = " << rh;
+  }
+}
+
 TEST(StoredHitPositions, LieOnTheSurface) {
   // The .pdz file of a Schwarzschild render of a coordinate sphere r = 5 and the disk z = 0: every
   // stored hit event is on its surface to 1e-9 of the object's size.
