@@ -299,6 +299,7 @@ int run_render(const RenderArgs& a, const GlobalOptions& g) {
   std::string base;
   DataFileInfo data_info;
   data_info.version = kVersion;
+  for (const auto& d : a.defines) data_info.defines += (data_info.defines.empty() ? "" : " ") + d;
   if (a.scene.empty()) {
     scene = evaluate_scene_string(default_scene_text(), default_scene_name() + ".scm", sopts);
     base = default_scene_name();

@@ -27,6 +27,7 @@ struct DataFileInfo {
   std::string version;     ///< geovis version
   std::string scene_file;  ///< scene file name ("" for the built-in scene)
   std::string scene_hash;  ///< FNV-1a 64 of the scene text, hex
+  std::string defines;     ///< the --define overrides, "NAME=VALUE ..." (they change what the scene renders)
   int frame = 0;
 };
 

@@ -305,8 +305,9 @@ void Tracer::fill_data(const TraceResult& r, PixelData& d) const {
   d.stop = r.reason;
   d.lambda = r.lambda;
   if (!r.hit) return;  // GeoViS: pixels without intersection are all zero
-  // Everything known about the hit; the GeoViS files keep the fields of their filter
-  // (render/data_files.h: geovis_filter_record).
+  // Everything known about the hit (the EXR data file stores it all); each GeoViS file layout
+  // picks its own fields (render/data_files.cpp; write_filter_data keeps only pos and uv for
+  // FilterRGBIntersec, as GeoViS).
   for (int i = 0; i < 4; ++i) d.pos[i] = r.pos[i];
   d.uv[0] = r.hit_info.u;
   d.uv[1] = r.hit_info.v;

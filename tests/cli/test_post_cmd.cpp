@@ -61,13 +61,16 @@ class PostCmd : public ::testing::Test {
 
 TEST_F(PostCmd, DataFlagWritesTheExrAndPostMakesEveryPicture) {
   const std::string scene = write_scene("FilterRGB");
-  ASSERT_EQ(run_args({"render", scene, "-o", path("disk.png"), "--data", "--quiet", "--threads", "1"}), 0);
+  ASSERT_EQ(run_args({"render", scene, "-o", path("disk.png"), "--data", "--quiet", "--threads", "1", "--define",
+                      "unused=1"}),
+            0);
   ASSERT_TRUE(fs::exists(path("disk.exr")));
   EXPECT_FALSE(fs::exists(path("disk.pdz")));  // no GeoViS file without a data filter
   const ChannelImage d = read_data_file(path("disk.exr"));
   EXPECT_EQ(d.meta("geovis:scene.file"), "disk.scm");
   EXPECT_EQ(d.meta("geovis:scene.hash").size(), 16u);
   EXPECT_EQ(d.meta("geovis:version"), kVersion);
+  EXPECT_EQ(d.meta("geovis:scene.defines"), "unused=1");
   for (const char* shader : {"redshift", "disk-flux", "time", "stop"}) {
     const std::string out = path(std::string(shader) + ".png");
     ASSERT_EQ(run_args({"post", path("disk.exr"), "-o", out, "--shader", shader, "--quiet"}), 0) << shader;
