@@ -16,6 +16,8 @@ PACKAGES=(
   ffmpeg                   # --movie (optional at run time)
   clang libclang-rt-14-dev # the fuzz_smoke test: libFuzzer, AddressSanitizer, UndefinedBehaviorSanitizer
   libopenmpi-dev openmpi-bin  # rendering on several MPI ranks (mpirun; optional)
+  fonts-dejavu-core        # labels of geovis post --colorbar
+  libtinyexr-dev           # tests: an OpenEXR reader independent of OpenImageIO for the data files
 )
 
 missing=()

@@ -30,5 +30,11 @@ render examples/stereo_minkowski.scm --res 240x192 -o "$out/stereo.png"
 # README row: Kerr disk (paper Fig. 3a) and the fall into a black hole (paper Fig. 7, tau = 34.8).
 render examples/kerr_disk.scm -o "$out/kerr_disk.png"
 render examples/fig7_fall_into_blackhole.scm --frames 6:6 --res 360x60 -o "$out/fall_into_blackhole.png"
+# Paper Fig. 9 from the data file, without tracing again: Page-Thorne disk flux and 1+z.
+tmp=$(mktemp -d)
+"$geovis" render examples/fig9_disk_flux.scm -o "$tmp/fig9.png" --quiet
+"$geovis" post "$tmp/fig9.exr" --shader disk-flux --colorbar -o "$out/fig9_disk_flux.png" --quiet
+"$geovis" post "$tmp/fig9.exr" --shader redshift --colorbar -o "$out/fig9_redshift.png" --quiet
+rm -r "$tmp"
 
 ls -l "$out"/*.png

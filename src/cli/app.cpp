@@ -28,7 +28,7 @@ int run(int argc, const char* const* argv) {
   app.footer(
       "geovis [render options] [SCENE] is geovis render: without SCENE it renders the built-in scene.\n"
       "geovis SUBCOMMAND --help describes a subcommand's options.");
-  app.set_version_flag("--version", "geovis 0.1.0");
+  app.set_version_flag("--version", std::string("geovis ") + kVersion);
   GlobalOptions opts;
   app.add_flag("-q,--quiet", opts.quiet, "print nothing but errors");
   app.add_flag("-v,--verbose", opts.verbose, "print details (warnings, statistics)");

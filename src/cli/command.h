@@ -5,6 +5,9 @@
 
 namespace geovis::cli {
 
+/// The program version (`geovis --version`, the data files' header).
+inline constexpr const char* kVersion = "0.1.0";
+
 struct GlobalOptions {
   bool quiet = false;
   bool verbose = false;

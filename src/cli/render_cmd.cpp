@@ -1,6 +1,6 @@
 // `geovis render [SCENE] [-o OUT] [--frames A:B] [--res WxH] [--threads N] [--supersample N]
 //                [--texture-path DIR]... [--define NAME=VALUE]... [--strict] [--resume]
-//                [--movie out.mp4] [--tile-size N] [--tile-stats FILE] [--quiet] [--verbose]
+//                [--movie out.mp4] [--tile-size N] [--tile-stats FILE] [--data] [--quiet] [--verbose]
 //                [scene options: cli/scene_options.h]`
 //
 // Evaluates the scene (the built-in one without SCENE), builds each device (= frame) and renders
@@ -34,6 +34,7 @@
 #include "io/atomic_file.h"
 #include "io/image.h"
 #include "render/camera.h"
+#include "render/data_exr.h"
 #include "render/data_files.h"
 #include "render/frame_limits.h"
 #include "render/mpi_scheduler.h"
@@ -65,6 +66,7 @@ struct RenderArgs {
   bool resume = false;
   std::string movie;
   std::string tile_stats;
+  bool data = false;  ///< write the EXR data file without a data filter
   bool quiet = false;
   bool verbose = false;
 };
@@ -309,6 +311,7 @@ std::vector<std::string> render_settings(const RenderArgs& a) {
   for (const auto& d : a.scene_args.defines) s.push_back("--define " + d);
   s.push_back("--res " + a.res);
   s.push_back("--supersample " + std::to_string(a.supersample));
+  if (a.data) s.push_back("--data");
   for (const auto& t : a.texture_paths) s.push_back("--texture-path " + t);
   return s;
 }
@@ -406,6 +409,7 @@ int render_as_mpi_worker(SceneBuilder& builder, const RenderArgs& a, MpiContext&
   run_mpi_worker(mpi, tile_render_options(a, true), [&](int frame, int eye) -> const RenderJob& {
     if (frame != built) {
       jobs = builder.build(frame);
+      for (FrameJob& fj : jobs) fj.job.keep_data = a.data;
       built = frame;
     }
     if (eye < 0 || size_t(eye) >= jobs.size())
@@ -447,13 +451,22 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
   const SchemeOptions sopts = scheme_options(a.scene_args, &diag, quiet);
   SceneDescription scene;
   std::string base;
+  DataFileInfo data_info;
+  data_info.version = kVersion;
+  for (const auto& d : a.scene_args.defines) data_info.defines += (data_info.defines.empty() ? "" : " ") + d;
   if (a.scene.empty()) {
     scene = evaluate_scene_string(default_scene_text(), default_scene_name() + ".scm", sopts);
     base = default_scene_name();
+    data_info.scene_hash = fnv1a_hex(default_scene_text());
   } else {
     if (!fs::exists(a.scene)) throw Error("scene file \"" + a.scene + "\" does not exist");
     scene = evaluate_scene_file(a.scene, sopts);
     base = fs::path(a.scene).stem().string();
+    std::ifstream text(a.scene, std::ios::binary);
+    std::stringstream ss;
+    ss << text.rdbuf();
+    data_info.scene_file = fs::path(a.scene).filename().string();
+    data_info.scene_hash = fnv1a_hex(ss.str());
   }
   print_warnings(diag, quiet, printed);
 
@@ -500,7 +513,8 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
   bool stereo = false;
   for (int f = first; f <= last; ++f) {
     const std::string path = frame_path(out, f, sequence);
-    const std::vector<FrameJob> jobs = builder.build(f);
+    std::vector<FrameJob> jobs = builder.build(f);
+    for (FrameJob& fj : jobs) fj.job.keep_data = a.data;
     stereo = stereo || jobs.size() == 2;
     print_warnings(diag, quiet, printed);
     if (a.resume && frame_is_complete(path, f, jobs, settings, quiet)) {
@@ -529,6 +543,11 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
         const std::string written =
             write_filter_data(img, fj.job.filter, r.image.width, r.image.height, r.data);
         if (verbose && !written.empty()) std::cerr << "  data: " << written << "\n";
+      }
+      if (!r.data.empty()) {
+        data_info.frame = f;
+        const std::string written = write_data_exr(img, fj.job, r.image, r.data, data_info);
+        if (verbose) std::cerr << "  data: " << written << "\n";
       }
       write_image(img, r.image, 8, frame_description(settings, f, fj.eye));
       if (rendered_image.checkpoint) rendered_image.checkpoint->remove();
@@ -590,6 +609,9 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->add_option("--movie", a->movie, "assemble the frames into a movie with ffmpeg (e.g. out.mp4)");
   sub->add_option("--tile-stats", a->tile_stats,
                   "write one CSV line per rendered tile (rank, CPU seconds, steps) to FILE, for load-balance studies");
+  sub->add_flag("--data", a->data,
+                "also write the OpenEXR data file (hit event, direction, 1+z, object, stop reason per pixel; "
+                "docs/data-format.md) next to each image, as the data filters do");
   sub->add_flag("-q,--quiet", a->quiet, "print nothing but errors");
   sub->add_flag("-v,--verbose", a->verbose, "print details (statistics per frame)");
   sub->callback([a, &g]() {

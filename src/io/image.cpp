@@ -4,6 +4,8 @@
 #include "io/image.h"
 
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 #include <sys/mman.h>
 #include <unistd.h>
@@ -274,6 +276,86 @@ void write_image(const std::string& path, const Image& img, int bits, const std:
                 did_you_mean(ext, kExts) + " (valid: " + join(kExts) + ")");
   const std::vector<unsigned char> bytes = encode_image(path, ext, img, bits, description);
   write_file_atomic(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
+int ChannelImage::channel(const std::string& name) const {
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? -1 : int(it - names.begin());
+}
+
+std::string ChannelImage::meta(const std::string& name) const {
+  for (const auto& [k, v] : metadata)
+    if (k == name) return v;
+  return {};
+}
+
+void write_channel_image(const std::string& path, const ChannelImage& img) {
+  const size_t nc = img.names.size();
+  if (img.width <= 0 || img.height <= 0 || nc == 0 || img.pixels.size() != size_t(img.width) * img.height * nc)
+    throw Error("cannot write \"" + path + "\": the channel image is empty or inconsistent");
+  if (lower_extension(path) != ".exr")
+    throw Error("cannot write \"" + path + "\": named float channels need an OpenEXR file (.exr)");
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) throw Error("cannot write \"" + path + "\": " + first_line(OIIO::geterror(), "no writer for this format"));
+  // 32-bit floats (not half): positions and frequency shifts need the precision.
+  OIIO::ImageSpec spec(img.width, img.height, int(nc), OIIO::TypeDesc::FLOAT);
+  spec.channelnames = img.names;
+  spec.alpha_channel = -1;
+  spec.attribute("compression", "zip");
+  for (const auto& [k, v] : img.metadata) spec.attribute(k, v);
+  // Encoded into memory, then written like every other file (io/atomic_file.h).
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  void* proxy = &memory;
+  spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+  bool ok;
+  {
+    const CodecOutputCapture quiet_codec;
+    ok = out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, img.pixels.data());
+    ok = out->close() && ok;
+  }
+  if (!ok) throw Error("cannot write \"" + path + "\": " + first_line(out->geterror(), "the image could not be encoded"));
+  write_file_atomic(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
+ChannelImage read_channel_image(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) {
+    std::string why = OIIO::geterror();
+    if (!fs::exists(path)) why = "no such file";
+    throw Error("cannot read \"" + path + "\": " + why);
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  ChannelImage img;
+  img.width = spec.width;
+  img.height = spec.height;
+  const int nc = spec.nchannels;
+  if (img.width <= 0 || img.height <= 0 || nc <= 0) throw Error("cannot read \"" + path + "\": empty image");
+  img.names = spec.channelnames;
+  img.names.resize(size_t(nc));
+  img.pixels.resize(size_t(img.width) * img.height * nc);
+  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, img.pixels.data())) {
+    const std::string why = in->geterror();
+    throw Error("cannot read \"" + path + "\": " + why);
+  }
+  for (const auto& p : spec.extra_attribs)
+    if (p.type() == OIIO::TypeDesc::STRING) img.metadata.emplace_back(p.name().string(), p.get_string());
+  in->close();
+  return img;
+}
+
+void draw_text(Image& img, int x, int y, const std::string& text, int size, const float rgb[3], int align) {
+  if (text.empty() || img.channels != 3) return;
+  static const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  const std::string font = fs::exists(kFont) ? kFont : "";
+  // Wraps the pixels (no copy): render_text blends into them in place.
+  OIIO::ImageBuf buf(OIIO::ImageSpec(img.width, img.height, 3, OIIO::TypeDesc::FLOAT), img.pixels.data());
+  const auto ax = align == 1 ? OIIO::ImageBufAlgo::TextAlignX::Center
+                             : (align == 2 ? OIIO::ImageBufAlgo::TextAlignX::Right : OIIO::ImageBufAlgo::TextAlignX::Left);
+  if (!OIIO::ImageBufAlgo::render_text(buf, x, y, text, size, font, {rgb, 3}, ax))
+    throw Error("cannot draw text \"" + text + "\": " + buf.geterror() +
+                " (install a font: Debian package fonts-dejavu-core)");
+}
 }
 
 std::string find_file(const std::string& name, const std::vector<std::string>& search_dirs,

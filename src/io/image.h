@@ -44,6 +44,33 @@ struct ImageFileCheck {
 /// not readable); never throws for a bad file.
 ImageFileCheck check_image_file(const std::string& path);
 
+/// A float image with named channels and text metadata: the EXR data files (render/data_exr.h).
+struct ChannelImage {
+  int width = 0, height = 0;
+  std::vector<std::string> names;  ///< channel names, in the order of `pixels`
+  std::vector<float> pixels;       ///< width * height * names.size(), row 0 = top, interleaved
+  std::vector<std::pair<std::string, std::string>> metadata;  ///< header attributes (strings)
+  /// Index of channel `name`, or -1.
+  int channel(const std::string& name) const;
+  /// The value of header attribute `name`, or "" when absent.
+  std::string meta(const std::string& name) const;
+};
+
+/// Writes an OpenEXR file with 32-bit float channels and the metadata as string attributes,
+/// atomically like write_image. Throws Error unless the path ends in .exr or on failure.
+void write_channel_image(const std::string& path, const ChannelImage& img);
+
+/// Reads every channel (as float) and every string attribute of an image file. Throws Error
+/// naming the file when it cannot be read.
+ChannelImage read_channel_image(const std::string& path);
+
+/// Draws `text` into `img` with its baseline at row y: x is the left end (align 0), the centre
+/// (align 1) or the right end (align 2); `size` is the font size in pixels. Uses the DejaVu Sans
+/// font of Debian's fonts-dejavu-core package (or OpenImageIO's default font). Throws Error when
+/// no font can be found.
+void draw_text(Image& img, int x, int y, const std::string& text, int size, const float rgb[3], int align = 0);
+
+
 /// Finds a file: as given (absolute, or relative to the working directory), then relative to each
 /// of `search_dirs`. Returns the path found or throws Error naming the file and every place
 /// searched.

@@ -153,7 +153,19 @@ std::string write_filter_data(const std::string& image_path, Filter f, int width
                               const std::vector<PixelData>& data) {
   if (channels(f) == 0) return {};
   const std::string path = filter_data_path(image_path, f);
-  write_file_atomic(path, encode_filter_data(f, width, height, data));
+  if (f != Filter::RGBIntersec) {
+    write_file_atomic(path, encode_filter_data(f, width, height, data));
+    return path;
+  }
+  // GeoViS's FilterRGBIntersec stores only the position and the texture coordinates of a hit
+  // (catalogue §3); its other gvsData fields stay zero.
+  std::vector<PixelData> intersec(data.size());
+  for (size_t i = 0; i < data.size(); ++i) {
+    for (int k = 0; k < 4; ++k) intersec[i].pos[k] = data[i].pos[k];
+    intersec[i].uv[0] = data[i].uv[0];
+    intersec[i].uv[1] = data[i].uv[1];
+  }
+  write_file_atomic(path, encode_filter_data(f, width, height, intersec));
   return path;
 }
 

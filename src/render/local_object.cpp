@@ -322,6 +322,7 @@ bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
     if (dot(pc_hit - pc_obj, pc_hit - pc_obj) > r * r) return false;
   }
   best.emitter_u = frame_.body_velocity(best_state, best.point, x_hit);
+  best.keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)
   hit = best;
   return true;
 }

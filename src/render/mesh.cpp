@@ -116,6 +116,7 @@ bool MeshObject::intersect(const Segment& seg, Hit& hit) const {
   hit.object_id = object_id;
   hit.time = seg.x0[0] + best * (seg.x1[0] - seg.x0[0]);
   hit.emitter_u = Vec4{{0, 0, 0, 0}};
+  hit.keplerian = false;
   hit.part = 0;
   return true;
 }

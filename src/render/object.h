@@ -63,6 +63,10 @@ struct Hit {
   /// Four-velocity of the emitting surface (coordinates), zero when the object is at rest in the
   /// natural static frame; used for the frequency shift.
   Vec4 emitter_u{{0, 0, 0, 0}};
+  /// The surface is a thin disk of matter on circular Keplerian orbits (plane-ring `emitter
+  /// "keplerian"`): the tracer takes the emitter velocity from spacetime/circular_orbit.h at the
+  /// refined hit event (emitter_u zero).
+  bool keplerian = false;
   /// Part of a multi-part primitive (box face 0..5: -x,+x,-y,+y,-z,+z as GeoViS GvsSolBox;
   /// cylinder/ring 0 outer side, 1 base, 2 top, 3 ring inner side); 0 otherwise. Used by DieT2D.
   int part = 0;

@@ -120,7 +120,11 @@ std::vector<ParamSpec> object_specific(const std::string& cmd) {
     return with(primitive_common(), {spec("center", ParamType::Vec3, "centre, default #(0 0 0)"),
                                      spec("normal", ParamType::Vec3, "normal, default #(0 0 1)"),
                                      spec("rout", ParamType::Number, "outer radius", true),
-                                     spec("rin", ParamType::Number, "inner radius, default 0")});
+                                     spec("rin", ParamType::Number, "inner radius, default 0"),
+                                     spec("emitter", ParamType::String,
+                                          "geovis: velocity of the emitting matter for 1+z: \"rest\" (default, at rest "
+                                          "in the natural frame) or \"keplerian\" (thin disk on circular geodesics "
+                                          "turning in +phi; spherical coordinates, centre 0, normal along z)")});
   if (cmd == "plane-triangle" || cmd == "plane-parallelogram")
     return with(primitive_common(), {spec("p1", ParamType::Vec3, "corner", true), spec("p2", ParamType::Vec3, "corner", true),
                                      spec("p3", ParamType::Vec3, "corner", true)});
@@ -504,7 +508,21 @@ SceneObjectPtr make_object(const ParamSet& ps, BuildContext& ctx) {
     const double rout = positive(ps, "rout", ps.get_number("rout"));
     const double rin = ps.get_number("rin", 0.0);
     if (!(rin >= 0 && rin < rout)) ps.fail("rin", "expected 0 <= rin < rout, found rin = " + Value(rin).describe());
-    return primitive(ps, ctx, std::make_shared<PlaneRing>(get3(ps, "center", std::vector<double>{0, 0, 0}), n, rin, rout));
+    const Vec3 center = get3(ps, "center", std::vector<double>{0, 0, 0});
+    auto ring = std::make_shared<PlaneRing>(center, n, rin, rout);
+    const std::string emitter = canonical_name(ps, "emitter", ps.get_string("emitter", "rest"),
+                                               {"rest", "keplerian"}, "emitter velocity");
+    if (emitter == "keplerian") {
+      // circular_orbit_velocity needs the equatorial plane of spherical-like coordinates.
+      if (!ctx.metric || ctx.metric->info().coord_type != CoordType::Spherical)
+        ps.fail("emitter", "\"keplerian\" needs a metric in spherical coordinates (t, r, theta, phi)" +
+                               (ctx.metric ? std::string(", found ") + ctx.metric->name() : std::string()));
+      if (norm(center) != 0 || n.x != 0 || n.y != 0 || ps.has("transform"))
+        ps.fail("emitter", "\"keplerian\" needs a ring in the equatorial plane: centre #(0 0 0), normal along z, "
+                           "no transform");
+      ring->keplerian_disk = true;
+    }
+    return primitive(ps, ctx, ring);
   }
   if (cmd == "plane-triangle" || cmd == "plane-parallelogram") {
     const Vec3 p1 = get3(ps, "p1"), p2 = get3(ps, "p2"), p3 = get3(ps, "p3");

@@ -42,6 +42,9 @@ struct RenderJob {
   /// gives the precedence and the GeoViS defaults (a black shadow).
   std::optional<Color> error_color, constraint_color, break_color;
   Filter filter = Filter::RGB;
+  /// Also keep the per-pixel data without a data filter (`geovis render --data`: the EXR data
+  /// file, render/data_exr.h).
+  bool keep_data = false;
   int supersample = 1;  ///< n x n samples per pixel
 };
 
@@ -55,14 +58,21 @@ struct RenderOptions {
   const std::atomic<bool>* cancel = nullptr;
 };
 
-/// Per-pixel physics data (the RGBpdz/RGBjac/RGBpt filters).
+/// Per-pixel physics data of the pixel-centre ray (the RGBpdz/RGBjac/RGBpt filters and the EXR
+/// data file). GeoViS fills pixels without a hit with zeros; `hit`, `stop` and `lambda` say what
+/// happened to the ray, so that the EXR file can tell a miss from a hit at the origin.
 struct PixelData {
-  double pos[4] = {0, 0, 0, 0};
-  double dir[4] = {0, 0, 0, 0};
+  double pos[4] = {0, 0, 0, 0};   ///< hit event (coordinates)
+  double dir[4] = {0, 0, 0, 0};   ///< future-directed light direction at the hit (coordinates)
   double object_id = 0;
-  double freqshift = 0;
-  double jacobi[5] = {0, 0, 0, 0, 0};
+  double freqshift = 0;           ///< 1+z = ω_src/ω_obs (paper eq. 15); 0 when unknown
+  double jacobi[5] = {0, 0, 0, 0, 0};  ///< d+, d-, μ, angle, ellipticity (jacobi_params)
   double uv[2] = {0, 0};
+  bool traced = false;            ///< false where the camera has no ray (dome corner)
+  bool hit = false;
+  StopReason stop = StopReason::None;  ///< why the integration ended (Callback for a hit)
+  double lambda = 0;              ///< affine parameter at the hit or at the end of the ray
+  double jacobi_matrix[4] = {0, 0, 0, 0};  ///< J11 J12 J21 J22 at the hit (RGBjac only)
 };
 
 struct RenderStats {

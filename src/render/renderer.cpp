@@ -61,10 +61,10 @@ RenderResult allocate_render_result(const RenderJob& job) {
   if (!job.camera) throw Error("render: the job has no camera");
   const int W = job.camera->width(), H = job.camera->height();
   if (W <= 0 || H <= 0) throw Error("render: the camera has an empty resolution");
-  check_frame_size("render", W, H, job.filter != Filter::RGB);
+  check_frame_size("render", W, H, job.filter != Filter::RGB || job.keep_data);
   RenderResult result;
   result.image = Image(W, H, 3);
-  if (job.filter != Filter::RGB) result.data.assign(size_t(W) * H, PixelData{});
+  if (job.filter != Filter::RGB || job.keep_data) result.data.assign(size_t(W) * H, PixelData{});
   return result;
 }
 
@@ -76,7 +76,7 @@ void render_tiles(const RenderJob& job, const RenderOptions& opt, TileSchedule& 
   const TileGrid grid(W, H, opt.tile_size);
   if (result.image.width != W || result.image.height != H || result.image.channels != 3)
     throw Error("render: the result image does not match the camera resolution");
-  const bool want_data = job.filter != Filter::RGB;
+  const bool want_data = job.filter != Filter::RGB || job.keep_data;
   if (want_data && result.data.size() != size_t(W) * H)
     throw Error("render: the result has no room for the filter data");
 

@@ -95,6 +95,7 @@ void fill_hit_from_crossing(const Crossing& c, const Segment& seg, Hit& hit) {
   hit.object_id = c.prim->object_id;
   hit.time = seg.x0[0] + c.t * (seg.x1[0] - seg.x0[0]);
   hit.emitter_u = Vec4{{0, 0, 0, 0}};
+  hit.keplerian = false;
   hit.part = c.part;
 }
 
@@ -368,6 +369,7 @@ bool PlanarPrimitive::intersect(const Segment& seg, Hit& hit) const {
   hit.object_id = object_id;
   hit.time = seg.x0[0] + t * (seg.x1[0] - seg.x0[0]);
   hit.emitter_u = Vec4{{0, 0, 0, 0}};
+  hit.keplerian = keplerian_disk;
   hit.part = 0;
   return true;
 }

@@ -187,6 +187,8 @@ class PlanarPrimitive : public SceneObject, public PrimitiveData {
   virtual bool local_intersect(const Vec3& o, const Vec3& d, double tmax, double& t, Vec3& n, double& u,
                                double& v) const = 0;
   virtual Bounds3 local_bounds() const = 0;
+  /// Matter on circular Keplerian orbits (plane-ring `emitter "keplerian"`; Hit::keplerian).
+  bool keplerian_disk = false;
 };
 
 /// GvsPlanarRing: annulus rin <= r <= rout around `center` in the plane ⟂ `normal` (the thin

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "spacetime/circular_orbit.h"
 #include "spacetime/jacobi.h"
 #include "spacetime/metric.h"
 
@@ -219,7 +220,9 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
     const double w_obs = dot(g, k0, obs.e[0]);  // = 1 for the normalised k of eq. 7
     Vec4 u_src = rs.best.emitter_u;
     bool have_u = !is_zero(u_src);
-    if (!have_u) {
+    if (!have_u && rs.best.keplerian) {
+      have_u = circular_orbit_velocity(m, res.pos, u_src);  // false inside the photon orbit
+    } else if (!have_u) {
       try {
         u_src = m.natural_tetrad(res.pos, TetradKind::Default)[0];
         have_u = true;
@@ -236,6 +239,7 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
     // J and λ at the hit, linearly interpolated inside the step (as GeoViS).
     double J[4];
     for (int i = 0; i < 4; ++i) J[i] = rs.y0[16 + i] + rs.frac * (rs.y1[16 + i] - rs.y0[16 + i]);
+    for (int i = 0; i < 4; ++i) res.jacobi_matrix[i] = J[i];
     const JacobiParams jp = jacobi_params(J, res.lambda);
     res.jacobi[0] = jp.d_plus;
     res.jacobi[1] = jp.d_minus;
@@ -296,21 +300,23 @@ Color Tracer::stop_color(StopReason reason) const {
 
 void Tracer::fill_data(const TraceResult& r, PixelData& d) const {
   d = PixelData{};
+  d.traced = r.traced;
+  d.hit = r.hit;
+  d.stop = r.reason;
+  d.lambda = r.lambda;
   if (!r.hit) return;  // GeoViS: pixels without intersection are all zero
-  const Filter f = job_.filter;
+  // Everything known about the hit (the EXR data file stores it all); each GeoViS file layout
+  // picks its own fields (render/data_files.cpp; write_filter_data keeps only pos and uv for
+  // FilterRGBIntersec, as GeoViS).
   for (int i = 0; i < 4; ++i) d.pos[i] = r.pos[i];
-  if (f == Filter::RGBpt || f == Filter::RGBIntersec) {
-    d.uv[0] = r.hit_info.u;
-    d.uv[1] = r.hit_info.v;
-    if (f == Filter::RGBpt) d.object_id = r.hit_info.object_id;
-    return;  // Intersec: only pos and uv (catalogue §3)
-  }
+  d.uv[0] = r.hit_info.u;
+  d.uv[1] = r.hit_info.v;
   // dir = future-directed light direction at the hit (minus the past-directed tangent).
   for (int i = 0; i < 4; ++i) d.dir[i] = -r.k[i];
   d.object_id = r.hit_info.object_id;
   d.freqshift = r.freqshift;
-  if (f == Filter::RGBjac)
-    for (int i = 0; i < 5; ++i) d.jacobi[i] = r.jacobi[i];
+  for (int i = 0; i < 5; ++i) d.jacobi[i] = r.jacobi[i];
+  for (int i = 0; i < 4; ++i) d.jacobi_matrix[i] = r.jacobi_matrix[i];
 }
 
 void Tracer::trace_pixel(double px, double py, Color& color, PixelData* data, TraceStats& stats) const {
@@ -319,7 +325,7 @@ void Tracer::trace_pixel(double px, double py, Color& color, PixelData* data, Tr
     // No ray there (outside the dome circle): GeoViS GvsProjector::getSampleColor returns its error
     // colour (default black), not the background.
     color = job_.error_color.value_or(Color{0, 0, 0});
-    if (data) *data = PixelData{};
+    if (data) *data = PixelData{};  // traced = false
     return;
   }
   const TraceResult r = trace_direction(d, stats);

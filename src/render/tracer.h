@@ -35,6 +35,7 @@ struct TraceResult {
   double lambda = 0;       ///< affine parameter there (0 at the observer)
   double freqshift = 0;    ///< ω_src/ω_obs (0 when it cannot be computed)
   double jacobi[5] = {0, 0, 0, 0, 0};
+  double jacobi_matrix[4] = {0, 0, 0, 0};  ///< J at the hit (Jacobi system only)
   Color color;
 };
 
