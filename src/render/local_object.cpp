@@ -155,6 +155,14 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
           rotation_rate_ += std::fabs(op.omega) * factor;
         }
       }
+      // Rotations turn the axes about the origin and boosts move it uniformly: the origin's
+      // worldline is a straight line in the Cartesian Minkowski coordinates (= pseudo-Cartesian).
+      if (m.name() == "Minkowski") {
+        const Vec4 a = cv->at_coordinate_time(0.0).x, b = cv->at_coordinate_time(1.0).x;
+        inertial_origin_ = true;
+        origin_at_t0_ = {a[1], a[2], a[3]};
+        origin_velocity_ = Vec3{b[1], b[2], b[3]} - origin_at_t0_;
+      }
     }
     // Analytic motion defined for all times (ConstVelocity): the tube is built per segment from
     // the worldline at the segment's times; the object may be anywhere.
@@ -251,7 +259,8 @@ bool LocalObject::world_tube_test(const Segment& seg, double& s0, double& s1) co
     Bounds3 box;
     for (double t : {ta, tb}) {
       Vec3 p;
-      frame_.metric().to_pseudo_cartesian(m.at_coordinate_time(t).x, p);
+      if (inertial_origin_) p = origin_at_t0_ + t * origin_velocity_;
+      else frame_.metric().to_pseudo_cartesian(m.at_coordinate_time(t).x, p);
       box.expand(p);
     }
     const double w = radius_pc_;

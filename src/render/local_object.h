@@ -109,6 +109,10 @@ class LocalObject final : public SceneObject {
   /// Upper bound of the frame's rotation rate per unit coordinate time (rotating ConstVelocity
   /// motions; 0 otherwise).
   double rotation_rate_ = 0;
+  /// ConstVelocity in Minkowski: the origin's pseudo-Cartesian position is
+  /// origin_at_t0_ + t·origin_velocity_ (saves evaluating the motion in the world-tube test).
+  bool inertial_origin_ = false;
+  Vec3 origin_at_t0_, origin_velocity_;
   Bounds3 bounds_;
 };
 

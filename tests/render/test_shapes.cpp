@@ -158,7 +158,7 @@ TEST(ShapesRing, OuterInnerAndAnnulusHits) {
   ASSERT_TRUE(r.intersect(make_segment({1.5, 0, 5}, {1.5, 0, -5}), top));
   EXPECT_NEAR(top.s, 0.4, kTol);
   expect_vec(top.normal, {0, 0, 1});
-  EXPECT_NEAR(top.v, 0.5, kTol);
+  EXPECT_NEAR(top.v, 0.75, kTol);  // GvsSolRing: √(x² + y²) in the outer unit frame, 1.5/2
   Hit hole;
   EXPECT_FALSE(r.intersect(make_segment({0.5, 0, 5}, {0.5, 0, -5}), hole));
 }
