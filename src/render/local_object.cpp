@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "spacetime/motion_const_velocity.h"
 
 namespace geovis {
 
@@ -142,6 +143,27 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
     return;
   }
   if (frame_.motion()->unbounded()) {
+    if (auto* cv = dynamic_cast<const ConstVelocityMotion*>(frame_.motion())) {
+      // The object turns by ω t' in the frame of the boosts before the rotation; along a light
+      // ray dt'/dt <= γ(1 + |v|) per boost.
+      double factor = 1;
+      for (const ConstVelocityMotion::Op& op : cv->ops()) {
+        if (op.is_boost) {
+          const double v = norm(op.v);
+          factor *= (1 + v) / std::sqrt(1 - v * v);
+        } else {
+          rotation_rate_ += std::fabs(op.omega) * factor;
+        }
+      }
+      // Rotations turn the axes about the origin and boosts move it uniformly: the origin's
+      // worldline is a straight line in the Cartesian Minkowski coordinates (= pseudo-Cartesian).
+      if (m.name() == "Minkowski") {
+        const Vec4 a = cv->at_coordinate_time(0.0).x, b = cv->at_coordinate_time(1.0).x;
+        inertial_origin_ = true;
+        origin_at_t0_ = {a[1], a[2], a[3]};
+        origin_velocity_ = Vec3{b[1], b[2], b[3]} - origin_at_t0_;
+      }
+    }
     // Analytic motion defined for all times (ConstVelocity): the tube is built per segment from
     // the worldline at the segment's times; the object may be anywhere.
     radius_pc_ = pseudo_cartesian_radius(frame_.state(0.0));
@@ -225,7 +247,7 @@ double LocalObject::pseudo_cartesian_radius(const LocalFrame::State& s) const {
   return 1.25 * radius_local_ * std::sqrt(sum);
 }
 
-bool LocalObject::world_tube_test(const Segment& seg) const {
+bool LocalObject::world_tube_test(const Segment& seg, double& s0, double& s1) const {
   if (!frame_.moving()) return segment_point_dist2(seg.p0, seg.p1, center_pc_) <= radius_pc_ * radius_pc_;
   if (frame_.motion()->unbounded()) {
     // Box around the worldline between the segment's times (± margin), widened by the object's
@@ -237,15 +259,15 @@ bool LocalObject::world_tube_test(const Segment& seg) const {
     Bounds3 box;
     for (double t : {ta, tb}) {
       Vec3 p;
-      frame_.metric().to_pseudo_cartesian(m.at_coordinate_time(t).x, p);
+      if (inertial_origin_) p = origin_at_t0_ + t * origin_velocity_;
+      else frame_.metric().to_pseudo_cartesian(m.at_coordinate_time(t).x, p);
       box.expand(p);
     }
     const double w = radius_pc_;
     box.lo = box.lo - Vec3{w, w, w};
     box.hi = box.hi + Vec3{w, w, w};
     const Vec3 d = seg.p1 - seg.p0;
-    double t0 = 0, t1 = 1;
-    return segment_box(seg.p0, Vec3{1.0 / d.x, 1.0 / d.y, 1.0 / d.z}, box, t0, t1);
+    return segment_box(seg.p0, Vec3{1.0 / d.x, 1.0 / d.y, 1.0 / d.z}, box, s0, s1);
   }
   const double ta = std::min(seg.x0[0], seg.x1[0]) - tube_margin_t_;
   const double tb = std::max(seg.x0[0], seg.x1[0]) + tube_margin_t_;
@@ -271,7 +293,35 @@ bool LocalObject::world_tube_test(const Segment& seg) const {
 
 bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
   if (seg.chart0 != chart || seg.chart1 != chart) return false;
-  if (!world_tube_test(seg)) return false;
+  double s0 = 0, s1 = 1;
+  if (!world_tube_test(seg, s0, s1)) return false;
+  const double turn = rotation_rate_ * std::fabs(seg.x1[0] - seg.x0[0]) * (s1 - s0);
+  if (!(turn > kMaxTurnPerPiece)) return intersect_piece(seg, hit);
+  // A rotating frame: the pieces of the part inside the tube in order, the first hit is the
+  // closest. Hit::s of a piece is mapped to and from the fraction of the whole segment.
+  const int n = static_cast<int>(std::min<double>(kMaxPieces, std::ceil(turn / kMaxTurnPerPiece)));
+  const Vec4 dseg = frame_.delta(seg.x1, seg.x0);
+  const Vec3 dp = seg.p1 - seg.p0;
+  for (int i = 0; i < n; ++i) {
+    const double fa = s0 + (s1 - s0) * i / n, fb = i + 1 == n ? s1 : s0 + (s1 - s0) * (i + 1) / n;
+    if (hit.s <= fa) return false;
+    Segment piece = seg;
+    piece.x0 = seg.x0 + fa * dseg;
+    piece.x1 = seg.x0 + fb * dseg;
+    piece.p0 = seg.p0 + fa * dp;
+    piece.p1 = seg.p0 + fb * dp;
+    Hit h = hit;
+    h.s = hit.valid() ? (hit.s - fa) / (fb - fa) : hit.s;
+    if (intersect_piece(piece, h)) {
+      hit = h;
+      hit.s = fa + h.s * (fb - fa);
+      return true;
+    }
+  }
+  return false;
+}
+
+bool LocalObject::intersect_piece(const Segment& seg, Hit& hit) const {
   const Vec4 dseg = frame_.delta(seg.x1, seg.x0);
   Vec4 x_ref = seg.x0 + 0.5 * dseg;
   double tau = 0;
@@ -324,6 +374,25 @@ bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
   best.emitter_u = frame_.body_velocity(best_state, best.point, x_hit);
   best.keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)
   hit = best;
+  return true;
+}
+
+// ---- PseudoCartesianMotionObject ----------------------------------------------------------------
+
+PseudoCartesianMotionObject::PseudoCartesianMotionObject(std::shared_ptr<LocalObject> moving)
+    : moving_(std::move(moving)) {
+  chart = moving_->chart;
+  id = moving_->id;
+}
+
+bool PseudoCartesianMotionObject::intersect(const Segment& seg, Hit& hit) const {
+  Segment flat = seg;
+  flat.x0 = Vec4{{seg.x0[0], seg.p0.x, seg.p0.y, seg.p0.z}};
+  flat.x1 = Vec4{{seg.x1[0], seg.p1.x, seg.p1.y, seg.p1.z}};
+  flat.metric = &moving_->frame().metric();
+  flat.step = nullptr;
+  if (!moving_->intersect(flat, hit)) return false;
+  hit.emitter_u = Vec4{{0, 0, 0, 0}};
   return true;
 }
 

@@ -11,7 +11,11 @@
 // straight 4D segment in local coordinates, its local time X^0 varying along it: the spatial
 // path is tested against the object at rest in that frame, which accounts for the light travel
 // time across the object. For a rotating or accelerated frame τ is re-evaluated at the hit event
-// and the test repeated until τ is stable. The hit's point/normal/ray_dir are in the local frame.
+// and the test repeated until τ is stable. For a rotating frame the frozen-frame chord is right
+// only near the event of τ: where the frame turns by more than kMaxTurnPerPiece during the part of
+// the segment inside the world tube, that part is cut into pieces, each with its own τ, so that a
+// thin object far from the axis (a clock hand's tip) is not missed by a chord taken at the wrong
+// time. The hit's point/normal/ray_dir are in the local frame.
 #pragma once
 
 #include <memory>
@@ -65,6 +69,10 @@ class LocalFrame {
 /// An object (usually a compound or primitive of gpObjTypeLocal) seen through a local frame.
 class LocalObject final : public SceneObject {
  public:
+  /// Largest angle (radians) the frame may turn during one tested piece of a segment: the
+  /// frozen-frame chord is then off by at most R/128 at distance R from the axis.
+  static constexpr double kMaxTurnPerPiece = 1.0 / 64;
+  static constexpr int kMaxPieces = 4096;
   LocalObject(SceneObjectPtr child, LocalFrame frame);
   bool intersect(const Segment& seg, Hit& hit) const override;
   Bounds3 bounds() const override { return bounds_; }
@@ -78,7 +86,11 @@ class LocalObject final : public SceneObject {
     double t0, t1;  ///< coordinate-time interval of the worldline piece
     Bounds3 box;    ///< pseudo-Cartesian box of the swept sphere
   };
-  bool world_tube_test(const Segment& seg) const;
+  /// Whether the segment passes the world tube; [s0, s1] narrowed to the fraction of the segment
+  /// inside it where known (the analytic-motion box), else left as given.
+  bool world_tube_test(const Segment& seg, double& s0, double& s1) const;
+  /// The intersection test of one piece of a segment (one frame state found by iteration).
+  bool intersect_piece(const Segment& seg, Hit& hit) const;
   /// Pseudo-Cartesian radius covering a local sphere of radius_local_ at frame state s.
   double pseudo_cartesian_radius(const LocalFrame::State& s) const;
   /// Coordinate-time spread of the body's simultaneous events at frame state s.
@@ -94,7 +106,31 @@ class LocalObject final : public SceneObject {
   std::vector<TubeBox> tube_;
   std::vector<TubeBox> chunks_;  ///< unions of kChunk consecutive tube_ boxes
   double tube_margin_t_ = 0;
+  /// Upper bound of the frame's rotation rate per unit coordinate time (rotating ConstVelocity
+  /// motions; 0 otherwise).
+  double rotation_rate_ = 0;
+  /// ConstVelocity in Minkowski: the origin's pseudo-Cartesian position is
+  /// origin_at_t0_ + t·origin_velocity_ (saves evaluating the motion in the world-tube test).
+  bool inertial_origin_ = false;
+  Vec3 origin_at_t0_, origin_velocity_;
   Bounds3 bounds_;
+};
+
+/// An object on a ConstVelocity motion in a metric other than Minkowski. GeoViS applies such a
+/// motion to the pseudo-Cartesian points (t, x, y, z) of every ray segment as if they were
+/// Minkowski coordinates (GvsStMotionConstVelocity::getTransformedPolygon for any metric); so
+/// does this: the segment's events are replaced by (x^0, pseudo-Cartesian position) and tested
+/// against `moving`, a LocalObject whose frame is the motion in Minkowski spacetime. It is not a
+/// physical motion of the curved spacetime: the hit has no emitter four-velocity (frequency shift
+/// as for an object at rest in the natural frame).
+class PseudoCartesianMotionObject final : public SceneObject {
+ public:
+  explicit PseudoCartesianMotionObject(std::shared_ptr<LocalObject> moving);
+  bool intersect(const Segment& seg, Hit& hit) const override;
+  Bounds3 bounds() const override { return moving_->bounds(); }
+
+ private:
+  std::shared_ptr<LocalObject> moving_;
 };
 
 }  // namespace geovis

@@ -104,6 +104,8 @@ bool MeshObject::intersect(const Segment& seg, Hit& hit) const {
   else
     n = cross(vertices_[t.v[1]] - vertices_[t.v[0]], vertices_[t.v[2]] - vertices_[t.v[0]]);
   hit.normal = normalize(transformed ? to_local.transposed_dir(n) : n);
+  hit.shade_normal = hit.normal;
+  hit.shade_dir = hit.ray_dir;
   if (t.vt[0] >= 0 && t.vt[1] >= 0 && t.vt[2] >= 0) {
     hit.u = b0 * texcoords_[2 * t.vt[0]] + best_b1 * texcoords_[2 * t.vt[1]] + best_b2 * texcoords_[2 * t.vt[2]];
     hit.v = b0 * texcoords_[2 * t.vt[0] + 1] + best_b1 * texcoords_[2 * t.vt[1] + 1] +

@@ -10,6 +10,7 @@
 #include "render/shapes.h"
 #include "render/surface_shader.h"
 #include "render/textures.h"
+#include "spacetime/metric_registry.h"
 
 namespace geovis {
 
@@ -68,7 +69,10 @@ std::vector<ParamSpec> texture_specific(const std::string& type) {
             spec("start", ParamType::Vec2, "start point in (u, v), default #(0 0.5)"),
             spec("end", ParamType::Vec2, "end point in (u, v), default #(1 0.5)"),
             spec("gradtype", ParamType::String, "linear | radial | hsv | texCoords")};
-  if (type == "Image") return {spec("file", ParamType::String, "image file", true)};
+  if (type == "Image")
+    return {spec("file", ParamType::String, "image file", true),
+            spec("sampling", ParamType::String,
+                 "geovis extension: nearest (default, as GeoViS), bilinear or bicubic texel interpolation")};
   return {};
 }
 
@@ -175,16 +179,13 @@ const SceneObjectPtr& ref_object(const ParamSet& ps, BuildContext& ctx, const st
   return ctx.lookup(ctx.objects, id, ps, key, "object");
 }
 
-/// Children of a group: every `obj`, which must be placeable in coordinates.
+/// Children of a group: every `obj`.
 std::vector<SceneObjectPtr> group_children(const ParamSet& ps, BuildContext& ctx) {
   std::vector<SceneObjectPtr> out;
   for (const auto& id : ps.get_strings("obj")) {
-    const SceneObjectPtr& o = ref_object(ps, ctx, id, "obj");
-    if (object_type_of(*o) == ObjType::Local)
-      ps.fail("obj", "object \"" + id +
-                         "\" has objtype gpObjTypeLocal (0): it is defined in a local frame and must be wrapped "
-                         "by local-comp-object");
-    out.push_back(o);
+    // GeoViS ignores objtype when intersecting: an object of gpObjTypeLocal inside a plain group
+    // is placed in coordinates like any other (appViewMovBall.scm).
+    out.push_back(ref_object(ps, ctx, id, "obj"));
   }
   return out;
 }
@@ -224,9 +225,21 @@ SceneObjectPtr finish_primitive(const ParamSet& ps, BuildContext& ctx, std::shar
     const MotionPtr& motion = ctx.ref(ctx.motions, ps, "motion", "motion");
     auto metric = require_metric(ps, ctx, "motion");
     try {
+      const bool pseudo_cartesian = std::string_view(motion->type_name()) == "ConstVelocity" &&
+                                    metric->name() != "Minkowski";
+      if (pseudo_cartesian) {
+        diag_of(ctx).warn(ps.loc(), ps.command(), "motion",
+                          "the ConstVelocity motion \"" + ps.get_string("motion") + "\" is special-relativistic; in the " +
+                              metric->name() +
+                              " metric it is applied, as GeoViS does, to the pseudo-Cartesian coordinates (t, x, y, "
+                              "z) of the rays as if they were Minkowski coordinates: a kinematic effect, not a motion "
+                              "of this spacetime");
+        metric = make_metric("Minkowski");
+      }
       auto moving = std::make_shared<LocalObject>(obj, LocalFrame(metric, motion));
       moving->id = obj->id;
       moving->chart = obj->chart;
+      if (pseudo_cartesian) return std::make_shared<PseudoCartesianMotionObject>(moving);
       return moving;
     } catch (const SceneError&) {
       throw;
@@ -408,8 +421,12 @@ TexturePtr make_texture(const ParamSet& ps, BuildContext& ctx) {
     tex = std::make_shared<ColorGradTexture>(color3(c1), color3(c2), st[0], st[1], en[0], en[1], kind);
   } else {  // Image
     const std::string file = ps.get_string("file");
+    const auto& names = ImageTexture::sampling_names();
+    const std::string s = canonical_name(ps, "sampling", ps.get_string("sampling", "nearest"), names, "sampling");
+    const auto sampling = static_cast<ImageTexture::Sampling>(std::find(names.begin(), names.end(), s) - names.begin());
     try {
-      tex = std::make_shared<ImageTexture>(load_image_cached(find_file(file, ctx.search_paths, "texture image")));
+      tex = std::make_shared<ImageTexture>(load_image_cached(find_file(file, ctx.search_paths, "texture image")),
+                                           sampling);
     } catch (const SceneError&) {
       throw;
     } catch (const Error& e) {

@@ -10,14 +10,6 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
-/// Angle in [0, 2π).
-double angle_0_2pi(double y, double x) {
-  double a = std::atan2(y, x);
-  if (a < 0) a += kTwoPi;
-  if (a >= kTwoPi) a = 0;
-  return a;
-}
-
 /// Real roots t0 <= t1 of A t² + B t + C = 0 (numerically stable form, Press et al., Numerical
 /// Recipes §5.6). False when there is none.
 bool solve_quadratic(double A, double B, double C, double& t0, double& t1) {
@@ -36,6 +28,7 @@ Crossing make_crossing(double t, const SolidPrimitive* prim, const Vec3& o, cons
   c.t = t;
   c.prim = prim;
   c.p_local = o + t * d;
+  c.d_local = d;
   c.part = part;
   return c;
 }
@@ -90,6 +83,8 @@ void fill_hit_from_crossing(const Crossing& c, const Segment& seg, Hit& hit) {
   Vec3 n = c.prim->parent_normal(c.p_local, c.part);
   hit.normal = c.flip ? -n : n;
   hit.ray_dir = normalize(d);
+  c.prim->shading_frame(c.p_local, c.d_local, c.part, hit.shade_normal, hit.shade_dir);
+  if (c.flip) hit.shade_normal = -hit.shade_normal;
   c.prim->uv(c.p_local, c.part, hit.u, hit.v);
   hit.shader = c.prim->shader;
   hit.object_id = c.prim->object_id;
@@ -168,6 +163,12 @@ void Ellipsoid::uv(const Vec3& p, int, double& u, double& v) const {
   ellipsoid_uv(normalize(q), u, v);
 }
 
+void Ellipsoid::shading_frame(const Vec3& p, const Vec3& d, int, Vec3& n, Vec3& dir) const {
+  // Unit sphere q = (p − c)/a (GvsSolEllipsoid: the normal is the local point).
+  n = normalize(Vec3{(p.x - center.x) / axlen.x, (p.y - center.y) / axlen.y, (p.z - center.z) / axlen.z});
+  dir = normalize(Vec3{d.x / axlen.x, d.y / axlen.y, d.z / axlen.z});
+}
+
 // ---- Box ----------------------------------------------------------------------------------------
 
 Box::Box(const Vec3& c0, const Vec3& c1)
@@ -201,6 +202,12 @@ Vec3 Box::local_normal(const Vec3&, int part) const {
   return n;
 }
 
+void Box::shading_frame(const Vec3& p, const Vec3& d, int part, Vec3& n, Vec3& dir) const {
+  // Unit cube [0,1]³ (GvsSolBox): the face normals are the axes.
+  n = local_normal(p, part);
+  dir = normalize(Vec3{d.x / (hi.x - lo.x), d.y / (hi.y - lo.y), d.z / (hi.z - lo.z)});
+}
+
 void Box::uv(const Vec3& p, int part, double& u, double& v) const {
   const Vec3 q{(p.x - lo.x) / (hi.x - lo.x), (p.y - lo.y) / (hi.y - lo.y), (p.z - lo.z) / (hi.z - lo.z)};
   switch (part) {
@@ -218,14 +225,36 @@ CylinderFrame::CylinderFrame(const Vec3& b, const Vec3& top) : base(b) {
   const Vec3 axis = top - b;
   height = norm(axis);
   ez = axis / height;
-  // Helper: the coordinate axis least aligned with the cylinder axis.
-  const Vec3 ax{std::fabs(ez.x), std::fabs(ez.y), std::fabs(ez.z)};
-  Vec3 h = (ax.x <= ax.y && ax.x <= ax.z) ? Vec3{1, 0, 0} : (ax.y <= ax.z ? Vec3{0, 1, 0} : Vec3{0, 0, 1});
-  e1 = normalize(h - dot(h, ez) * ez);
-  e2 = cross(ez, e1);
+  const double alpha = std::atan2(axis.y, axis.x);
+  const double beta = std::atan2(std::hypot(axis.x, axis.y), axis.z);
+  e1 = {std::cos(alpha) * std::cos(beta), std::sin(alpha) * std::cos(beta), -std::sin(beta)};
+  e2 = {-std::sin(alpha), std::cos(alpha), 0.0};
 }
 
 namespace {
+/// GvsSolCylinder/GvsSolRing::calcTexUVParam at the point l of the unit cylinder: caps
+/// u = (atan2(y, x) + π)/2π, v = √(x² + y²); side u = acos(x)/2π (1 − that for y < 0), v = z.
+void unit_cylinder_uv(const Vec3& l, bool cap, double& u, double& v) {
+  if (cap) {
+    u = (std::atan2(l.y, l.x) + M_PI) / kTwoPi;
+    v = std::hypot(l.x, l.y);
+  } else {
+    const double a = std::acos(std::clamp(l.x, -1.0, 1.0)) / kTwoPi;
+    u = l.y < 0 ? 1.0 - a : a;
+    v = l.z;
+  }
+}
+
+/// Normal and unit direction in the unit cylinder of radii (r1, r2) and height h (point l of the
+/// unit cylinder, frame direction dq): caps ∓ẑ, side (x, y, 0)/|…|.
+void unit_cylinder_shading(const Vec3& l, const Vec3& dq, double r1, double r2, double h, int part, Vec3& n,
+                           Vec3& dir) {
+  if (part == 1) n = {0, 0, -1};
+  else if (part == 2) n = {0, 0, 1};
+  else n = normalize(Vec3{l.x, l.y, 0});
+  dir = normalize(Vec3{dq.x / r1, dq.y / r2, dq.z / h});
+}
+
 /// Span of the infinite elliptic cylinder (x/r1)² + (y/r2)² <= 1 along q + t dq (frame coords).
 /// Returns false when the line misses; an infinite span when it runs parallel inside.
 bool elliptic_span(const Vec3& q, const Vec3& dq, double r1, double r2, double& t0, double& t1) {
@@ -300,8 +329,13 @@ Vec3 Cylinder::local_normal(const Vec3& p, int part) const {
 
 void Cylinder::uv(const Vec3& p, int part, double& u, double& v) const {
   const Vec3 q = frame.to_frame(p);
-  u = angle_0_2pi(q.y / r2, q.x / r1) / kTwoPi;
-  v = part == 0 ? q.z / frame.height : std::min(1.0, std::hypot(q.x / r1, q.y / r2));
+  unit_cylinder_uv({q.x / r1, q.y / r2, q.z / frame.height}, part != 0, u, v);
+}
+
+void Cylinder::shading_frame(const Vec3& p, const Vec3& d, int part, Vec3& n, Vec3& dir) const {
+  const Vec3 q = frame.to_frame(p);
+  unit_cylinder_shading({q.x / r1, q.y / r2, q.z / frame.height}, frame.dir_to_frame(d), r1, r2, frame.height, part,
+                        n, dir);
 }
 
 Ring::Ring(const Vec3& base, const Vec3& top, double r1, double r2, double ri1, double ri2)
@@ -334,18 +368,17 @@ Vec3 Ring::local_normal(const Vec3& p, int part) const {
 
 void Ring::uv(const Vec3& p, int part, double& u, double& v) const {
   const Vec3 q = frame.to_frame(p);
-  u = angle_0_2pi(q.y / r2, q.x / r1) / kTwoPi;
-  if (part == 0 || part == 3) {
-    v = q.z / frame.height;
-  } else {
-    // Radial coordinate across the annulus: 0 at the inner, 1 at the outer edge (along the ray
-    // from the axis, in elliptic units).
-    const double ro = std::hypot(q.x / r1, q.y / r2);
-    const double ri = std::hypot(q.x / ri1, q.y / ri2);
-    // Point at elliptic radius ro (outer units) lies at the fraction 1/ri·ro of the inner edge.
-    const double inner = ri > 0 ? ro / ri : 0.0;  // outer-units radius of the inner edge on this ray
-    v = (1.0 - inner) > 0 ? std::clamp((ro - inner) / (1.0 - inner), 0.0, 1.0) : 0.0;
-  }
+  const double ra = part == 3 ? ri1 : r1, rb = part == 3 ? ri2 : r2;
+  unit_cylinder_uv({q.x / ra, q.y / rb, q.z / frame.height}, part == 1 || part == 2, u, v);
+}
+
+void Ring::shading_frame(const Vec3& p, const Vec3& d, int part, Vec3& n, Vec3& dir) const {
+  const Vec3 q = frame.to_frame(p);
+  const double ra = part == 3 ? ri1 : r1, rb = part == 3 ? ri2 : r2;
+  // The inner side in the unit frame of the inner cylinder, its normal towards the axis.
+  unit_cylinder_shading({q.x / ra, q.y / rb, q.z / frame.height}, frame.dir_to_frame(d), ra, rb, frame.height,
+                        part == 3 ? 0 : part, n, dir);
+  if (part == 3) n = -n;
 }
 
 // ---- planar -------------------------------------------------------------------------------------
@@ -361,7 +394,10 @@ bool PlanarPrimitive::intersect(const Segment& seg, Hit& hit) const {
   hit.s = t;
   hit.point = seg.p0 + t * dw;
   hit.ray_dir = normalize(dw);
-  n = transformed ? normalize(to_local.transposed_dir(n)) : normalize(n);
+  // GeoViS GvsPlanarSurf: the plane's normal and the ray's direction in the surface's own frame.
+  hit.shade_normal = normalize(n);
+  hit.shade_dir = normalize(d);
+  n = transformed ? normalize(to_local.transposed_dir(n)) : hit.shade_normal;
   hit.normal = dot(n, hit.ray_dir) > 0 ? -n : n;  // two-sided: face the incoming ray
   hit.u = u;
   hit.v = v;
@@ -394,8 +430,8 @@ bool PlaneRing::local_intersect(const Vec3& o, const Vec3& d, double tmax, doubl
   const double rho = std::hypot(x, y);
   if (rho < rin || rho > rout) return false;
   n = normal;
-  u = angle_0_2pi(y, x) / kTwoPi;
-  v = rout > rin ? (rho - rin) / (rout - rin) : 0.0;
+  u = rout > rin ? (rho - rin) / (rout - rin) : 0.0;
+  v = std::atan2(r.y, r.x) / kTwoPi + 0.5;
   return true;
 }
 

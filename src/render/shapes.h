@@ -62,6 +62,7 @@ struct Crossing {
   double t = 0;
   const SolidPrimitive* prim = nullptr;  ///< whose surface (computes normal and uv on demand)
   Vec3 p_local;  ///< the point in the primitive's local frame
+  Vec3 d_local;  ///< the line's direction in the primitive's local frame
   int part = 0;  ///< face index
   bool flip = false;  ///< normal reversed (boundary taken from the subtracted solid of a CSG difference)
 };
@@ -105,6 +106,10 @@ class SolidPrimitive : public Solid, public PrimitiveData {
   virtual void uv(const Vec3& p, int part, double& u, double& v) const = 0;
   /// Outward unit normal in the parent frame.
   Vec3 parent_normal(const Vec3& p_local, int part) const;
+  /// Hit::shade_normal and Hit::shade_dir at local point p for local direction d: the outward
+  /// normal and the unit direction in the normalised frame of the primitive (GeoViS GvsSol*:
+  /// unit sphere, unit cube, unit cylinder).
+  virtual void shading_frame(const Vec3& p, const Vec3& d, int part, Vec3& n, Vec3& dir) const = 0;
 };
 
 /// GvsSolEllipsoid: centre c, semi-axes a. uv (catalogue §4) from n = (p − c)/a on the unit
@@ -116,6 +121,7 @@ class Ellipsoid final : public SolidPrimitive {
   Bounds3 local_bounds() const override;
   Vec3 local_normal(const Vec3& p, int part) const override;
   void uv(const Vec3& p, int part, double& u, double& v) const override;
+  void shading_frame(const Vec3& p, const Vec3& d, int part, Vec3& n, Vec3& dir) const override;
   Vec3 center, axlen;
 };
 /// The GeoViS uv of a point n on the unit sphere (catalogue §4).
@@ -131,11 +137,14 @@ class Box final : public SolidPrimitive {
   Bounds3 local_bounds() const override { return {lo, hi}; }
   Vec3 local_normal(const Vec3& p, int part) const override;
   void uv(const Vec3& p, int part, double& u, double& v) const override;
+  void shading_frame(const Vec3& p, const Vec3& d, int part, Vec3& n, Vec3& dir) const override;
   Vec3 lo, hi;
 };
 
-/// Frame of a cylinder: axis from base to top, e1/e2 across (e1 ⟂ axis chosen from the
-/// coordinate axis least aligned with it, e2 = axis × e1).
+/// Frame of a cylinder (GeoViS GvsSolCylinder::setGeometry): the unit cylinder mapped by
+/// T(base)·Rz(α)·Ry(β)·S(r1, r2, h) with a = top − base, α = atan2(a_y, a_x),
+/// β = atan2(√(a_x² + a_y²), a_z), h = |a|; so ez = a/h, e1 = Rz(α)Ry(β) x̂ =
+/// (cos α cos β, sin α cos β, −sin β), e2 = Rz(α) ŷ = (−sin α, cos α, 0).
 struct CylinderFrame {
   Vec3 base, e1, e2, ez;
   double height = 0;
@@ -150,8 +159,10 @@ struct CylinderFrame {
   Vec3 from_frame_dir(const Vec3& d) const { return d.x * e1 + d.y * e2 + d.z * ez; }
 };
 
-/// GvsSolCylinder: closed elliptic cylinder, radii (r1 along e1, r2 along e2). Parts: 0 side
-/// (u = φ/2π, v = z/h), 1 base cap and 2 top cap (u = φ/2π, v = ρ, ρ = elliptic radius in [0,1]).
+/// GvsSolCylinder: closed elliptic cylinder, radii (r1 along e1, r2 along e2). Parts: 0 side,
+/// 1 base cap, 2 top cap. uv (GvsSolCylinder::calcTexUVParam) from the point (x, y, z) of the unit
+/// cylinder (x = q·e1/r1, y = q·e2/r2, z = q·ez/h): side u = acos(x)/2π (1 − that for y < 0),
+/// v = z; caps u = (atan2(y, x) + π)/2π, v = √(x² + y²).
 class Cylinder final : public SolidPrimitive {
  public:
   Cylinder(const Vec3& base, const Vec3& top, double r1, double r2);
@@ -159,12 +170,15 @@ class Cylinder final : public SolidPrimitive {
   Bounds3 local_bounds() const override;
   Vec3 local_normal(const Vec3& p, int part) const override;
   void uv(const Vec3& p, int part, double& u, double& v) const override;
+  void shading_frame(const Vec3& p, const Vec3& d, int part, Vec3& n, Vec3& dir) const override;
   CylinderFrame frame;
   double r1, r2;
 };
 
 /// GvsSolRing: the cylinder (radii) minus the coaxial inner cylinder (innerradii) — a thick ring.
 /// Parts: 0 outer side, 1 base annulus, 2 top annulus, 3 inner side (normal towards the axis).
+/// uv as the cylinder's (GvsSolRing::calcTexUVParam), in the unit frame of the outer cylinder,
+/// except on the inner side: in the unit frame of the inner cylinder (radii innerradii).
 class Ring final : public SolidPrimitive {
  public:
   Ring(const Vec3& base, const Vec3& top, double r1, double r2, double ri1, double ri2);
@@ -172,6 +186,7 @@ class Ring final : public SolidPrimitive {
   Bounds3 local_bounds() const override;
   Vec3 local_normal(const Vec3& p, int part) const override;
   void uv(const Vec3& p, int part, double& u, double& v) const override;
+  void shading_frame(const Vec3& p, const Vec3& d, int part, Vec3& n, Vec3& dir) const override;
   CylinderFrame frame;
   double r1, r2, ri1, ri2;
 };
@@ -192,8 +207,12 @@ class PlanarPrimitive : public SceneObject, public PrimitiveData {
 };
 
 /// GvsPlanarRing: annulus rin <= r <= rout around `center` in the plane ⟂ `normal` (the thin
-/// accretion disk of paper §4.2). uv = (φ/2π, (r − rin)/(rout − rin)); φ from e1 (the x axis
-/// projected into the plane, or y when the normal is along x) towards e2 = normal × e1.
+/// accretion disk of paper §4.2). uv (GvsPlanarRing::calcTexUVParam) of the point p, r = p − c:
+/// u = (|r| − rin)/(rout − rin) (radial), v = atan2(r·ŷ, r·x̂)/2π + 1/2 — the angle about the
+/// frame's z axis for any normal (GeoViS's e1/e2 are always the x and y axes: the test that would
+/// choose others reads e1 before setting it). GeoViS takes the angle of p itself, not of p − c;
+/// the same for every ring centred at the origin (docs/geovis-differences.md). e1, e2 here only
+/// span the plane for the bounds.
 class PlaneRing final : public PlanarPrimitive {
  public:
   PlaneRing(const Vec3& center, const Vec3& normal, double rin, double rout);

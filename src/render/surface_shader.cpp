@@ -18,7 +18,9 @@ Color SurfaceShader::shade(const Hit& hit, const ShadeContext& ctx) const {
   // Normal towards the viewer (the ray arrives along ray_dir).
   Vec3 n = hit.normal;
   if (dot(n, hit.ray_dir) > 0) n = -n;
-  Vec3 n_diffuse = n;
+  // The diffuse term in the primitive's normalised local frame (GeoViS reflArtifColor).
+  Vec3 n_diffuse = hit.shade_normal;
+  if (dot(n_diffuse, hit.shade_dir) > 0) n_diffuse = -n_diffuse;
   if (normalmap) {
     const Color c = normalmap->sample_part(hit.u, hit.v, hit.time, hit.part);
     const Vec3 m{c.r, c.g, c.b};
@@ -26,7 +28,7 @@ Color SurfaceShader::shade(const Hit& hit, const ShadeContext& ctx) const {
     if (len > 0) n_diffuse = -(m / len);
   }
   Color c = P * ambient * lm.ambient;
-  const double cos_nl = std::max(0.0, dot(n_diffuse, -hit.ray_dir));
+  const double cos_nl = std::max(0.0, dot(n_diffuse, -hit.shade_dir));
   c += P * (diffuse * cos_nl) * lm.diffuse;
 
   if (ctx.light_visible) {

@@ -8,7 +8,8 @@ namespace geovis {
 
 /// GvsSurfaceShader. With P the object colour (texture `objcolor` at the hit's (u, v), black
 /// without one), n the surface normal turned towards the incoming ray (GeoViS inverts it when
-/// n·d > 0) and d the ray direction at the hit:
+/// n·d > 0) and d the ray direction at the hit, both in the primitive's normalised local frame
+/// (Hit::shade_normal, Hit::shade_dir; GeoViS GvsSurfaceShader::reflArtifColor):
 ///   C = P·ka·A + P·kd·max(0, n'·(−d))·D + Σ_lights P·L_c·visible/att(dist)
 /// A, D: ambient and diffuse light of the light manager (GeoViS uses its ambient light for both;
 /// the two coincide in every GeoViS scene). The diffuse term is a light source at the observer:

@@ -143,24 +143,50 @@ Color ColorGradTexture::sample(double u, double v, double) const {
 
 // ---- Image --------------------------------------------------------------------------------------
 
+const std::vector<std::string>& ImageTexture::sampling_names() {
+  static const std::vector<std::string> names = {"nearest", "bilinear", "bicubic"};
+  return names;
+}
+
+namespace {
+/// Catmull-Rom weights of the four samples at offsets -1, 0, 1, 2 for the fraction t in [0, 1)
+/// (Keys 1981, eq. 15 with a = -1/2).
+void catmull_rom_weights(double t, double w[4]) {
+  const double t2 = t * t, t3 = t2 * t;
+  w[0] = 0.5 * (-t3 + 2 * t2 - t);
+  w[1] = 0.5 * (3 * t3 - 5 * t2 + 2);
+  w[2] = 0.5 * (-3 * t3 + 4 * t2 + t);
+  w[3] = 0.5 * (t3 - t2);
+}
+}  // namespace
+
 Color ImageTexture::sample(double u, double v, double) const {
   double ut, vt;
   uv_transform.apply(u, v, ut, vt);
   const Image& img = *image;
   const int w = img.width, h = img.height;
-  // Continuous pixel coordinates with pixel centres at integers; periodic in both directions.
-  const double x = ut * w, y = vt * h;
-  const double fx = std::floor(x), fy = std::floor(y);
-  const double tx = x - fx, ty = y - fy;
   auto wrap = [](long long i, int n) { long long r = i % n; return static_cast<int>(r < 0 ? r + n : r); };
-  const int x0 = wrap(static_cast<long long>(fx), w), x1 = wrap(static_cast<long long>(fx) + 1, w);
-  const int y0 = wrap(static_cast<long long>(fy), h), y1 = wrap(static_cast<long long>(fy) + 1, h);
-  auto px = [&](int i, int j) {
-    const float* p = img.at(i, j);
+  auto px = [&](long long i, long long j) {
+    const float* p = img.at(wrap(i, w), wrap(j, h));
     return img.channels >= 3 ? Color{p[0], p[1], p[2]} : Color{p[0], p[0], p[0]};
   };
-  return (1 - tx) * (1 - ty) * px(x0, y0) + tx * (1 - ty) * px(x1, y0) + (1 - tx) * ty * px(x0, y1) +
-         tx * ty * px(x1, y1);
+  // Continuous pixel coordinates with pixel centres at integers; periodic in both directions.
+  const double x = ut * w, y = vt * h;
+  if (sampling == Sampling::Nearest)
+    return px(static_cast<long long>(std::floor(x + 0.5)), static_cast<long long>(std::floor(y + 0.5)));
+  const double fx = std::floor(x), fy = std::floor(y);
+  const double tx = x - fx, ty = y - fy;
+  const long long ix = static_cast<long long>(fx), iy = static_cast<long long>(fy);
+  if (sampling == Sampling::Bilinear)
+    return (1 - tx) * (1 - ty) * px(ix, iy) + tx * (1 - ty) * px(ix + 1, iy) + (1 - tx) * ty * px(ix, iy + 1) +
+           tx * ty * px(ix + 1, iy + 1);
+  double wx[4], wy[4];
+  catmull_rom_weights(tx, wx);
+  catmull_rom_weights(ty, wy);
+  Color c{0, 0, 0};
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) c += (wx[i] * wy[j]) * px(ix - 1 + i, iy - 1 + j);
+  return c.clamped();
 }
 
 std::shared_ptr<const Image> load_image_cached(const std::string& path) {

@@ -105,13 +105,22 @@ class ColorGradTexture final : public Texture2D {
 Color hsv_to_rgb(double h_deg, double s, double v);
 
 /// GvsImg2DSampler: an image mapped onto [0,1)² with periodic wrap. Pixel (i, j) (j = 0 top row)
-/// is centred at (u, v) = (i/W, j/H) (GeoViS's nearest-neighbour rule px = (long)(u W + 0.5));
-/// here filtered bilinearly between the four nearest pixel centres.
+/// is centred at (u, v) = (i/W, j/H). `Nearest` (the default, as GeoViS GvsChannelImg2D::
+/// sampleColor) takes the texel (floor(u W + 1/2), floor(v H + 1/2)) of the transformed (u, v);
+/// GeoViS truncates toward zero instead of flooring, which shifts the texture by one texel where a
+/// coordinate is negative — not copied. `Bilinear` interpolates between the four nearest pixel
+/// centres, `Bicubic` is the Catmull-Rom cubic convolution of the 4×4 nearest (R. Keys, IEEE
+/// Trans. ASSP 29 (1981) 1153, a = −1/2), clamped to [0, 1].
 class ImageTexture final : public Texture2D {
  public:
-  explicit ImageTexture(std::shared_ptr<const Image> img) : image(std::move(img)) {}
+  enum class Sampling { Nearest, Bilinear, Bicubic };
+  explicit ImageTexture(std::shared_ptr<const Image> img, Sampling s = Sampling::Nearest)
+      : image(std::move(img)), sampling(s) {}
   Color sample(double u, double v, double time) const override;
+  /// Names of the `sampling` key, in the order of Sampling.
+  static const std::vector<std::string>& sampling_names();
   std::shared_ptr<const Image> image;
+  Sampling sampling;
 };
 
 /// Reads an image once per resolved path (thread-safe cache shared by all scenes/frames).

@@ -256,7 +256,10 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
   }
   const bool at_rest = is_zero(hit.emitter_u);
   if (point_lights_ && at_rest) {
-    // Minkowski and an object at rest: a straight shadow ray from the hit point to the light.
+    // Minkowski and an object at rest: the shadow ray is the straight light ray from the light to
+    // the hit point, arriving there at the hit's time t, traced backwards (GeoViS
+    // GvsSurfaceShader::reflLightColor: direction (−1, l̂)): it left the light at t − |l − p|,
+    // so moving objects cast their shadow from where they were when the light passed them.
     const SceneObject* scene = job_.scene.get();
     const double t = res.pos[0];
     auto visible = [scene, &m, t](const Vec3& p, const PointLight& light) -> bool {
@@ -267,7 +270,7 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
       // Start just off the surface so that the surface itself does not shadow the point.
       const double eps = 1e-9 * (1.0 + norm(p)) + 1e-9 * len;
       const Vec3 p0 = p + (eps / len) * dl;
-      Segment seg{Vec4{{t, p0.x, p0.y, p0.z}}, Vec4{{t, lp.x, lp.y, lp.z}}, p0, lp, 0, 0, nullptr, &m};
+      Segment seg{Vec4{{t - eps, p0.x, p0.y, p0.z}}, Vec4{{t - len, lp.x, lp.y, lp.z}}, p0, lp, 0, 0, nullptr, &m};
       Hit h;
       return !(scene->intersect(seg, h) && h.s <= 1.0);
     };

@@ -82,10 +82,9 @@ MotionPtr make_geodesic(const ParamSet& ps, std::shared_ptr<const Metric> metric
   }
 }
 
-MotionPtr make_const_velocity(const ParamSet& ps, const std::shared_ptr<const Metric>& metric) {
-  if (metric && metric->name() != "Minkowski")
-    ps.fail("type", "ConstVelocity motions are special-relativistic and need the Minkowski metric, but the metric is " +
-                        metric->name());
+MotionPtr make_const_velocity(const ParamSet& ps) {
+  // In a metric other than Minkowski the object applies the motion to pseudo-Cartesian
+  // coordinates, as GeoViS does (render/local_object.h, PseudoCartesianMotionObject).
   auto motion = std::make_shared<ConstVelocityMotion>();
   for (const Param& p : ps.entries()) {
     std::vector<double> v;
@@ -216,7 +215,7 @@ MotionPtr make_motion(const ParamSet& ps, std::shared_ptr<const Metric> metric, 
   if (!metric && type != MotionType::ConstVelocity) ps.fail("metric", "no metric is defined for this motion");
   switch (type) {
     case MotionType::Geodesic: return make_geodesic(ps, std::move(metric), solver);
-    case MotionType::ConstVelocity: return make_const_velocity(ps, metric);
+    case MotionType::ConstVelocity: return make_const_velocity(ps);
     case MotionType::Worldline: return make_worldline(ps, std::move(metric));
   }
   return nullptr;

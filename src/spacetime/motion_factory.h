@@ -3,7 +3,8 @@
 //                   maxnumpoints, stepsize; the solver (`solver` key) is resolved by the caller
 //                   and passed in;
 //   ConstVelocity — boost #(vx vy vz) and rotation #(ω ax ay az), repeatable, applied in order
-//                   (Minkowski only);
+//                   (to Minkowski coordinates; in another metric to the pseudo-Cartesian
+//                   coordinates of the ray, as GeoViS);
 //   Worldline (GeoViS "file") — events from `points` (list of #(x0 x1 x2 x3), or
 //                   #(tau x0 x1 x2 x3) with havetau #t) or `filename` (one event per line, same
 //                   columns, '#' starts a comment); frame e0..e3/incoords/localframe at the first

@@ -365,5 +365,72 @@ TEST(ObjLocal, RollingWheelMaterialVelocity) {
   EXPECT_NEAR(add_velocities({0, -0.8, 0}, cross(Vec3{0.4, 0, 0}, Vec3{0, 0, 2})).y, -1.6 / 1.64, 1e-15);
 }
 
+TEST(ObjLocal, RotatingThinPaddleIsNotMissedOnALongStep) {
+  // A paddle |X| <= 2, |Y| <= 0.05, |Z| <= 1 turning about z with ω = 0.4 (ConstVelocity
+  // rotation: object coordinates X = R(−ωt) x). One light-ray step of length 20 along +y at
+  // x = 1.8 from y = −14 at t_o = 14 reaches y ≈ 0 at t ≈ 0, when the paddle lies along x; at the
+  // step's middle (t = 4) it has turned by 1.6 rad and is nowhere near the ray, so a chord taken
+  // with the frame of one time misses it (the holes near the tip of movClock's hand). Expected:
+  // the first event of the ray inside the paddle, X(λ) = R(−ω(t_o − λ)) (1.8, −14 + λ, 0).
+  auto metric = minkowski();
+  ConstVelocityMotion::Op rot;
+  rot.is_boost = false;
+  rot.omega = 0.4;
+  rot.axis = {0, 0, 1};
+  auto motion = std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{rot});
+  LocalObject paddle(std::make_shared<Box>(Vec3{-2, -0.05, -1}, Vec3{2, 0.05, 1}), LocalFrame(metric, motion));
+  const double t_o = 14, omega = 0.4;
+  auto inside = [&](double lam) {
+    const double th = omega * (t_o - lam), x = 1.8, y = -14 + lam;
+    const double X = std::cos(th) * x + std::sin(th) * y, Y = -std::sin(th) * x + std::cos(th) * y;
+    return std::fabs(X) <= 2 && std::fabs(Y) <= 0.05;
+  };
+  double lo = 0, hi = 20;
+  for (double lam = 0; lam < 20; lam += 1e-3)
+    if (inside(lam + 1e-3)) {
+      lo = lam, hi = lam + 1e-3;
+      break;
+    }
+  ASSERT_LT(hi, 20) << "the ray should enter the paddle";
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (inside(mid) ? hi : lo) = mid;
+  }
+  Hit hit;
+  ASSERT_TRUE(paddle.intersect(testing::light_segment(t_o, {1.8, -14, 0}, {0, 1, 0}, 20), hit));
+  EXPECT_NEAR(hit.s, hi / 20, 1e-9);
+}
+
+TEST(ObjLocal, ConstVelocityInCurvedMetricActsOnPseudoCartesianPoints) {
+  // GeoViS applies a ConstVelocity motion to the pseudo-Cartesian points of the rays in any
+  // metric (mtContactRings.scm, Morris-Thorne): a boosted sphere in Schwarzschild is hit where the
+  // Minkowski sphere with the same motion is hit by the same pseudo-Cartesian segment.
+  BuildContext ctx;
+  Diagnostics diag;
+  ctx.diag = &diag;
+  ctx.metric = std::shared_ptr<const Metric>(make_metric("Schwarzschild"));
+  ConstVelocityMotion::Op boost;
+  boost.v = {0.6, 0, 0};
+  ctx.motions["cv"] = std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{boost});
+  ParamSet ps("solid-ellipsoid", {});
+  ps.add("motion", "cv");
+  const SceneObjectPtr obj = make_object(ps, ctx);
+  ASSERT_NE(std::dynamic_pointer_cast<PseudoCartesianMotionObject>(obj), nullptr);
+  ASSERT_EQ(diag.warnings().size(), 1u);
+  EXPECT_NE(diag.warnings()[0].find("pseudo-Cartesian"), std::string::npos) << diag.warnings()[0];
+  const Vec3 n = normalize(Vec3{0.1, 1, 0});
+  double lambda;
+  ASSERT_TRUE(analytic_moving_sphere(0.6, 1.0, 10, {0, -10, 0}, n, lambda));
+  Segment seg = testing::light_segment(10, {0, -10, 0}, n, 20);
+  // The events in Schwarzschild coordinates (t, r, θ, φ) of the same pseudo-Cartesian points.
+  for (Vec4* x : {&seg.x0, &seg.x1}) {
+    const Vec3 p{(*x)[1], (*x)[2], (*x)[3]};
+    *x = Vec4{{(*x)[0], norm(p), std::acos(p.z / norm(p)), std::atan2(p.y, p.x)}};
+  }
+  Hit hit;
+  ASSERT_TRUE(obj->intersect(seg, hit));
+  EXPECT_NEAR(hit.s, lambda / 20, 1e-11);
+}
+
 }  // namespace
 }  // namespace geovis

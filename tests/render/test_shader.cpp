@@ -24,9 +24,13 @@ struct ObjShader : ::testing::Test {
     sh.objcolor = std::make_shared<UniTexture>(Color{0.5, 0.4, 0.2});
     sh.ambient = 0.2;
     sh.diffuse = 0.8;
-    hit.normal = {0, 0, 1};
-    hit.ray_dir = normalize(Vec3{1, 0, -1});  // 45° incidence
+    set_geometry({0, 0, 1}, normalize(Vec3{1, 0, -1}));  // 45° incidence
     hit.point = {0, 0, 0};
+  }
+  /// The same normal and direction in the parent frame and in the primitive's local frame.
+  void set_geometry(const Vec3& n, const Vec3& d) {
+    hit.normal = hit.shade_normal = n;
+    hit.ray_dir = hit.shade_dir = d;
   }
 };
 
@@ -37,10 +41,10 @@ TEST_F(ObjShader, AmbientPlusDiffuseFromTheObserver) {
   const double f = 0.2 + 0.8 / std::sqrt(2.0);
   expect_color(sh.shade(hit, ctx), {0.5 * f, 0.4 * f, 0.2 * f});
   // The normal is turned towards the viewer first: the back side looks the same.
-  hit.normal = {0, 0, -1};
+  set_geometry({0, 0, -1}, hit.ray_dir);
   expect_color(sh.shade(hit, ctx), {0.5 * f, 0.4 * f, 0.2 * f});
   // Grazing view: only ambient.
-  hit.ray_dir = {1, 0, 0};
+  set_geometry(hit.normal, {1, 0, 0});
   expect_color(sh.shade(hit, ctx), {0.1, 0.08, 0.04});
   // Light colours scale their terms.
   lm.ambient = {0.5, 0.5, 0.5};

@@ -158,7 +158,7 @@ TEST(ShapesRing, OuterInnerAndAnnulusHits) {
   ASSERT_TRUE(r.intersect(make_segment({1.5, 0, 5}, {1.5, 0, -5}), top));
   EXPECT_NEAR(top.s, 0.4, kTol);
   expect_vec(top.normal, {0, 0, 1});
-  EXPECT_NEAR(top.v, 0.5, kTol);
+  EXPECT_NEAR(top.v, 0.75, kTol);  // GvsSolRing: √(x² + y²) in the outer unit frame, 1.5/2
   Hit hole;
   EXPECT_FALSE(r.intersect(make_segment({0.5, 0, 5}, {0.5, 0, -5}), hole));
 }
@@ -205,15 +205,21 @@ TEST(ShapesPlaneRing, AccretionDiskUVAndTwoSidedNormal) {
   EXPECT_NEAR(hit.s, 0.5, kTol);
   expect_vec(hit.point, {5, 0, 0});
   expect_vec(hit.normal, {0, 0, 1});
-  EXPECT_NEAR(hit.u, 0.0, kTol);
-  EXPECT_NEAR(hit.v, (5.0 - 3.0) / 12.0, kTol);
+  // GvsPlanarRing::calcTexUVParam: u = (r − rin)/(rout − rin), v = atan2(y, x)/2π + 1/2.
+  EXPECT_NEAR(hit.u, (5.0 - 3.0) / 12.0, kTol);
+  EXPECT_NEAR(hit.v, 0.5, kTol);
   Hit below;
   ASSERT_TRUE(disk.intersect(make_segment({0, -5, -10}, {0, -5, 10}), below));
   expect_vec(below.normal, {0, 0, -1});  // faces the ray coming from below
-  EXPECT_NEAR(below.u, 0.75, kTol);      // φ = 3π/2
+  EXPECT_NEAR(below.v, 0.25, kTol);      // atan2 = −π/2
   Hit side;
-  ASSERT_TRUE(disk.intersect(make_segment({0, 5, 1}, {0, 5, -1}), side));
-  EXPECT_NEAR(side.u, 0.25, kTol);
+  ASSERT_TRUE(disk.intersect(make_segment({0, 9, 1}, {0, 9, -1}), side));
+  EXPECT_NEAR(side.u, 0.5, kTol);
+  EXPECT_NEAR(side.v, 0.75, kTol);  // atan2 = π/2
+  Hit back;
+  ASSERT_TRUE(disk.intersect(make_segment({-15, 0, 1}, {-15, 0, -1}), back));
+  EXPECT_NEAR(back.u, 1.0, kTol);
+  EXPECT_NEAR(back.v, 1.0, kTol);  // atan2(+0, −15) = π
   Hit miss;
   EXPECT_FALSE(disk.intersect(make_segment({2, 0, 1}, {2, 0, -1}), miss));   // in the hole
   EXPECT_FALSE(disk.intersect(make_segment({16, 0, 1}, {16, 0, -1}), miss));  // outside
@@ -314,19 +320,19 @@ TEST(ShapesFactory, ClearErrors) {
   EXPECT_NE(diag.warnings()[0].find("axlen"), std::string::npos);
 }
 
-TEST(ShapesFactory, LocalObjectsMustBeWrapped) {
+TEST(ShapesFactory, LocalObjectInPlainCompoundIsPlacedInCoordinates) {
+  // GeoViS ignores objtype when intersecting (appViewMovBall.scm puts gpObjTypeLocal spheres in
+  // a comp-object): the unit sphere at the origin is hit where it would be with InCoords.
   BuildContext ctx;
   ParamSet a = params("solid-ellipsoid");
   a.add("objtype", 0);
   ctx.objects["local"] = make_object(a, ctx);
   ParamSet c = params("comp-object");
   c.add("obj", "local");
-  try {
-    make_object(c, ctx);
-    FAIL();
-  } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("local-comp-object"), std::string::npos) << e.what();
-  }
+  const SceneObjectPtr comp = make_object(c, ctx);
+  Hit hit;
+  ASSERT_TRUE(comp->intersect(make_segment({-5, 0, 0}, {5, 0, 0}), hit));
+  EXPECT_NEAR(hit.s, 0.4, kTol);
 }
 
 TEST(ShapesFactory, AddObjectAppendsToCompound) {
@@ -352,6 +358,137 @@ TEST(ShapesFactory, AddObjectAppendsToCompound) {
   bad.add("add-to", "a");
   bad.add("obj", "b");
   EXPECT_THROW(add_objects(bad, ctx), SceneError);
+}
+
+// ---- GeoViS semantics (issue 12): expected values from the GeoViS formulas by hand ------------
+
+TEST(ShapesCylinder, GeoViSFrameAndTextureCoordinatesAxisZ) {
+  // Axis along +z: α = atan2(0, 0) = 0, β = atan2(0, 2) = 0, so e1 = x̂, e2 = ŷ; the unit
+  // cylinder point is (x, y, z/2). Side: u = acos(x)/2π (1 − that for y < 0), v = z/2.
+  Cylinder c({0, 0, 0}, {0, 0, 2}, 1, 1);
+  expect_vec(c.frame.e1, {1, 0, 0});
+  expect_vec(c.frame.e2, {0, 1, 0});
+  Hit a;  // enters the side at (0, 1, 0.5)
+  ASSERT_TRUE(c.intersect(make_segment({0, 5, 0.5}, {0, -5, 0.5}), a));
+  EXPECT_EQ(a.part, 0);
+  EXPECT_NEAR(a.u, 0.25, kTol);  // acos(0)/2π
+  EXPECT_NEAR(a.v, 0.25, kTol);
+  Hit b;  // enters the side at (0, −1, 1.5): y < 0
+  ASSERT_TRUE(c.intersect(make_segment({0, -5, 1.5}, {0, 5, 1.5}), b));
+  EXPECT_NEAR(b.u, 0.75, kTol);
+  EXPECT_NEAR(b.v, 0.75, kTol);
+  Hit d;  // (−1, 0, 1): acos(−1)/2π
+  ASSERT_TRUE(c.intersect(make_segment({-5, 0, 1}, {5, 0, 1}), d));
+  EXPECT_NEAR(d.u, 0.5, kTol);
+  // Caps: u = (atan2(y, x) + π)/2π, v = √(x² + y²).
+  Hit top;  // (0.5, 0, 2)
+  ASSERT_TRUE(c.intersect(make_segment({0.5, 0, 5}, {0.5, 0, -5}), top));
+  EXPECT_EQ(top.part, 2);
+  EXPECT_NEAR(top.u, 0.5, kTol);
+  EXPECT_NEAR(top.v, 0.5, kTol);
+  Hit bottom;  // (0, −0.8, 0): atan2 = −π/2
+  ASSERT_TRUE(c.intersect(make_segment({0, -0.8, -5}, {0, -0.8, 5}), bottom));
+  EXPECT_EQ(bottom.part, 1);
+  EXPECT_NEAR(bottom.u, 0.25, kTol);
+  EXPECT_NEAR(bottom.v, 0.8, kTol);
+}
+
+TEST(ShapesCylinder, GeoViSFrameAxisX) {
+  // Axis along +x, length 2: α = 0, β = atan2(2, 0) = π/2, so e1 = (cos α cos β, sin α cos β,
+  // −sin β) = (0, 0, −1), e2 = (−sin α, cos α, 0) = (0, 1, 0). Radii 1 (e1) and 0.5 (e2).
+  Cylinder c({0, 0, 0}, {2, 0, 0}, 1, 0.5);
+  expect_vec(c.frame.e1, {0, 0, -1});
+  expect_vec(c.frame.e2, {0, 1, 0});
+  expect_vec(c.frame.ez, {1, 0, 0});
+  Hit a;  // (1, 0, −1): x_l = 1, y_l = 0 → u = acos(1)/2π = 0, v = 1/2
+  ASSERT_TRUE(c.intersect(make_segment({1, 0, -5}, {1, 0, 5}), a));
+  EXPECT_NEAR(a.u, 0.0, kTol);
+  EXPECT_NEAR(a.v, 0.5, kTol);
+  Hit b;  // (0.5, 0, 1): x_l = −1 → u = 1/2, v = 1/4
+  ASSERT_TRUE(c.intersect(make_segment({0.5, 0, 5}, {0.5, 0, -5}), b));
+  EXPECT_NEAR(b.u, 0.5, kTol);
+  EXPECT_NEAR(b.v, 0.25, kTol);
+  Hit e;  // (1.5, 0.5, 0): y_l = 0.5/0.5 = 1 → u = 1/4
+  ASSERT_TRUE(c.intersect(make_segment({1.5, 5, 0}, {1.5, -5, 0}), e));
+  EXPECT_NEAR(e.u, 0.25, kTol);
+  EXPECT_NEAR(e.v, 0.75, kTol);
+  Hit cap;  // top cap (2, 0.25, −0.5): x_l = 0.5, y_l = 0.5 → u = (π/4 + π)/2π = 5/8, v = √0.5
+  ASSERT_TRUE(c.intersect(make_segment({5, 0.25, -0.5}, {-5, 0.25, -0.5}), cap));
+  EXPECT_EQ(cap.part, 2);
+  EXPECT_NEAR(cap.u, 0.625, kTol);
+  EXPECT_NEAR(cap.v, std::sqrt(0.5), kTol);
+}
+
+TEST(ShapesRing, GeoViSTextureCoordinates) {
+  // Axis z, outer radius 2, inner 1, height 1: caps and outer side in the outer unit frame
+  // (coordinates / 2), the inner side in the inner unit frame (coordinates / 1).
+  Ring r({0, 0, 0}, {0, 0, 1}, 2, 2, 1, 1);
+  Hit top;  // (−1.5, 0, 1): (x, y) = (−0.75, 0) → u = (π + π)/2π = 1, v = 0.75
+  ASSERT_TRUE(r.intersect(make_segment({-1.5, 0, 5}, {-1.5, 0, -5}), top));
+  EXPECT_EQ(top.part, 2);
+  EXPECT_NEAR(top.u, 1.0, kTol);
+  EXPECT_NEAR(top.v, 0.75, kTol);
+  Hit outer;  // (0, 2, 0.25): (0, 1) → u = 1/4, v = 1/4
+  ASSERT_TRUE(r.intersect(make_segment({0, 5, 0.25}, {0, 1.5, 0.25}), outer));
+  EXPECT_EQ(outer.part, 0);
+  EXPECT_NEAR(outer.u, 0.25, kTol);
+  EXPECT_NEAR(outer.v, 0.25, kTol);
+  Hit inner;  // from the hole: (0, −1, 0.5), inner frame (0, −1) → u = 1 − 1/4
+  ASSERT_TRUE(r.intersect(make_segment({0, 0, 0.5}, {0, -5, 0.5}), inner));
+  EXPECT_EQ(inner.part, 3);
+  EXPECT_NEAR(inner.u, 0.75, kTol);
+  EXPECT_NEAR(inner.v, 0.5, kTol);
+}
+
+TEST(ShapesBox, DiffuseFrameIsTheUnitCube) {
+  // Box [0,2]×[0,1]×[0,1] turned 90° about z. In the box's own frame the ray runs along
+  // d = (−1, −1, 0) and enters the +y face (normal ŷ) at (1, 1, 0.5); GeoViS shades in the
+  // unit cube, where d becomes (−1/2, −1, 0): cos = 1/√(1/4 + 1) = 2/√5 (the parent frame
+  // would give 1/√2).
+  Box b({0, 0, 0}, {2, 1, 1});
+  b.set_transform(rotate_z(90));
+  // Parent frame: R(90°) maps (1, 1, 0.5) to (−1, 1, 0.5) and d to (1, −1, 0).
+  Hit hit;
+  ASSERT_TRUE(b.intersect(make_segment({-1.5, 1.5, 0.5}, {-0.5, 0.5, 0.5}), hit));
+  EXPECT_NEAR(hit.s, 0.5, kTol);
+  EXPECT_EQ(hit.part, 3);
+  expect_vec(hit.shade_normal, {0, 1, 0});
+  expect_vec(hit.shade_dir, normalize(Vec3{-0.5, -1, 0}));
+  SurfaceShader sh;
+  sh.objcolor = std::make_shared<UniTexture>(Color{1, 1, 1});
+  sh.ambient = 0.1;
+  sh.diffuse = 0.5;
+  const Color c = sh.shade(hit, ShadeContext{});
+  EXPECT_NEAR(c.r, 0.1 + 0.5 * 2 / std::sqrt(5.0), 1e-12);
+  // The −y face from inside the box frame's first quadrant: box-frame d = (1, 1, 0) entering at
+  // (1, 0, 0.5), i.e. parent d = (−1, 1, 0) at (0, 1, 0.5); unit-cube d = (1/2, 1, 0)/√(5/4).
+  Hit under;
+  ASSERT_TRUE(b.intersect(make_segment({0.5, 0.5, 0.5}, {-0.5, 1.5, 0.5}), under));
+  EXPECT_EQ(under.part, 2);
+  EXPECT_NEAR(sh.shade(under, ShadeContext{}).r, 0.1 + 0.5 * 2 / std::sqrt(5.0), 1e-12);
+  // A normal map replaces the normal in the same frame, n = −normalize(rgb): rgb (1, 0, 0) gives
+  // n = −x̂ and cos = n·(−d) = (1/2)/√(5/4) = 1/√5.
+  sh.normalmap = std::make_shared<UniTexture>(Color{1, 0, 0});
+  EXPECT_NEAR(sh.shade(under, ShadeContext{}).r, 0.1 + 0.5 / std::sqrt(5.0), 1e-12);
+  // Seen from the other side (the +y face hit above, d = (−1/2, −1, 0)/|…|) the same map gives
+  // n·(−d) < 0: ambient only.
+  EXPECT_NEAR(sh.shade(hit, ShadeContext{}).r, 0.1, 1e-12);
+}
+
+TEST(ShapesEllipsoid, DiffuseFrameIsTheUnitSphere) {
+  // Ellipsoid with semi-axes (2, 1, 1): the ray along +x at y = 0.5 enters x²/4 + y² = 1 at
+  // x = −√3. Unit sphere: n = (−√3/2, 0.5, 0), d = (1/2, 0, 0)/|…| =
+  // x̂: cos = √3/2 (the parent-frame normal ∝ (x/4, y, 0) would give a different factor).
+  Ellipsoid e({0, 0, 0}, {2, 1, 1});
+  Hit hit;
+  ASSERT_TRUE(e.intersect(make_segment({-5, 0.5, 0}, {5, 0.5, 0}), hit));
+  expect_vec(hit.shade_normal, {-std::sqrt(3.0) / 2, 0.5, 0});
+  expect_vec(hit.shade_dir, {1, 0, 0});
+  SurfaceShader sh;
+  sh.objcolor = std::make_shared<UniTexture>(Color{1, 1, 1});
+  sh.ambient = 0;
+  sh.diffuse = 1;
+  EXPECT_NEAR(sh.shade(hit, ShadeContext{}).g, std::sqrt(3.0) / 2, 1e-12);
 }
 
 }  // namespace

@@ -121,7 +121,7 @@ TEST_F(ObjTextures, ImageBilinearPeriodic) {
   set(1, 1, 1, 1, 1);
   write_image(dir + "/tex2x2.png", img, 16);
   ctx.search_paths = {dir};
-  auto t = make("Image", {{"file", "tex2x2.png"}}, false);
+  auto t = make("Image", {{"file", "tex2x2.png"}, {"sampling", "bilinear"}}, false);
   const double tol = 1.0 / 65535;
   // Pixel (i, j) is centred at (u, v) = (i/W, j/H), row 0 on top.
   expect_color(t->sample(0.0, 0.0), {1, 0, 0}, tol);
@@ -132,13 +132,69 @@ TEST_F(ObjTextures, ImageBilinearPeriodic) {
   expect_color(t->sample(1.0, 1.0), t->sample(0.0, 0.0), tol);  // periodic
   expect_color(t->sample(0.25, 0.25), {0.5, 0.5, 0.5}, tol);    // mean of all four
   // scale-obj #(-1 -1) as in the GeoViS background spheres: (u, v) -> (−u, −v), wrapped.
-  auto flipped = make("Image", {{"file", "tex2x2.png"}, {"transform", scale2(-1, -1)}}, false);
+  auto flipped =
+      make("Image", {{"file", "tex2x2.png"}, {"transform", scale2(-1, -1)}, {"sampling", "bilinear"}}, false);
   expect_color(flipped->sample(0.5, 0.0), t->sample(0.5, 0.0), tol);
   expect_color(flipped->sample(0.25, 0.0), t->sample(0.75, 0.0), tol);
   // Same path -> same decoded image.
   auto again = make("Image", {{"file", "tex2x2.png"}}, false);
   EXPECT_EQ(std::dynamic_pointer_cast<ImageTexture>(again)->image,
             std::dynamic_pointer_cast<ImageTexture>(t)->image);
+}
+
+/// A 4 x 1 image with grey values 0.2, 0.4, 0.6, 1.0 (columns 0..3), written as 16-bit PNG.
+struct ObjImageRow : ObjTextures {
+  const double tol = 1.0 / 65535;
+  ObjImageRow() {
+    const std::string dir = std::string(GEOVIS_BINARY_DIR) + "/test_textures_tmp";
+    std::filesystem::create_directories(dir);
+    Image img(4, 1);
+    const float g[4] = {0.2f, 0.4f, 0.6f, 1.0f};
+    for (int x = 0; x < 4; ++x)
+      for (int c = 0; c < 3; ++c) img.at(x, 0)[c] = g[x];
+    write_image(dir + "/row4.png", img, 16);
+    ctx.search_paths = {dir};
+  }
+  double grey(const TexturePtr& t, double u) { return t->sample(u, 0.0).r; }
+};
+
+TEST_F(ObjImageRow, NearestTexelIsTheDefault) {
+  // GeoViS GvsChannelImg2D::sampleColor: texel floor(u W + 1/2), periodic.
+  auto t = make("Image", {{"file", "row4.png"}}, false);
+  EXPECT_EQ(std::dynamic_pointer_cast<ImageTexture>(t)->sampling, ImageTexture::Sampling::Nearest);
+  EXPECT_NEAR(grey(t, 0.3), 0.4, tol);    // u W = 1.2 -> texel 1
+  EXPECT_NEAR(grey(t, 0.37), 0.4, tol);   // 1.48 -> 1
+  EXPECT_NEAR(grey(t, 0.38), 0.6, tol);   // 1.52 -> 2
+  EXPECT_NEAR(grey(t, 0.9), 0.2, tol);    // 3.6 -> 4 = texel 0 (wrap)
+  EXPECT_NEAR(grey(t, -0.05), 0.2, tol);  // −0.2 -> floor(0.3) = 0
+  // −0.8 + 0.5 = −0.3: floor gives −1 = texel 3; GeoViS's (long) cast would truncate to 0 and
+  // shift every negative coordinate by one texel.
+  EXPECT_NEAR(grey(t, -0.2), 1.0, tol);
+  EXPECT_NEAR(grey(t, -0.45), 0.6, tol);  // −1.8 + 0.5 = −1.3 -> −2 = texel 2 (GeoViS: 3)
+}
+
+TEST_F(ObjImageRow, BicubicIsCatmullRom) {
+  auto t = make("Image", {{"file", "row4.png"}, {"sampling", "bicubic"}}, false);
+  // At a texel centre the cubic passes through the texel.
+  EXPECT_NEAR(grey(t, 0.25), 0.4, tol);
+  // Halfway between texels 1 and 2 (u W = 1.5): weights (−1, 9, 9, −1)/16 of texels 0..3
+  // (Keys 1981 with a = −1/2 at t = 1/2): (−0.2 + 3.6 + 5.4 − 1.0)/16 = 0.4875.
+  EXPECT_NEAR(grey(t, 0.375), 0.4875, tol);
+  // Halfway between 2 and 3: texels 1, 2, 3, 0: (−0.4 + 5.4 + 9 − 0.2)/16 = 0.8625.
+  EXPECT_NEAR(grey(t, 0.625), 0.8625, tol);
+  // Halfway between 3 and 0 (texels 2, 3, 0, 1): (−0.6 + 9 + 1.8 − 0.4)/16 = 0.6125.
+  EXPECT_NEAR(grey(t, 0.875), 0.6125, tol);
+}
+
+TEST_F(ObjImageRow, UnknownSamplingIsAnErrorWithSuggestion) {
+  try {
+    make("Image", {{"file", "row4.png"}, {"sampling", "bilinaer"}}, false);
+    FAIL();
+  } catch (const SceneError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("t.scm:4: init-texture: sampling"), std::string::npos) << m;
+    EXPECT_NE(m.find("did you mean \"bilinear\""), std::string::npos) << m;
+  }
 }
 
 TEST_F(ObjTextures, ClearErrors) {
