@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/hash.h"
 #include "render/camera.h"
 #include "render/data_files.h"
 #include "spacetime/metric.h"
@@ -188,14 +189,8 @@ RayStop ray_stop(const PixelData& d) {
 }
 
 std::string fnv1a_hex(const std::string& text) {
-  // FNV-1a, 64 bit (offset basis and prime of the published FNV definition).
-  uint64_t h = 14695981039346656037ull;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
   char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(fnv1a64(text.data(), text.size())));
   return buf;
 }
 

@@ -59,15 +59,6 @@ void write_all(int fd, const std::string& bytes, const std::string& path) {
 
 }  // namespace
 
-uint64_t fnv1a64(const void* data, size_t n, uint64_t h) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (size_t i = 0; i < n; ++i) {
-    h ^= p[i];
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
 TileCheckpoint::TileCheckpoint(std::string path, const CheckpointKey& key, bool resume, RenderResult& result)
     : path_(std::move(path)), key_(key), restored_(size_t(key.grid.count()), 0) {
   std::error_code ec;

@@ -18,13 +18,11 @@
 #include <string>
 #include <vector>
 
+#include "core/hash.h"  // fnv1a64: record checksums and key hashes
 #include "render/render_job.h"
 #include "render/tile_schedule.h"
 
 namespace geovis {
-
-/// 64-bit FNV-1a, continuing from `h` (the checkpoint's record checksums and key hashes).
-uint64_t fnv1a64(const void* data, size_t n, uint64_t h = 14695981039346656037ull);
 
 /// What a checkpoint belongs to: the hash of the scene and every option that changes pixels
 /// (made by the caller), and the film layout.
