@@ -7,6 +7,7 @@
 #include <signal.h>
 #include <spawn.h>
 #include <sys/mount.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -198,6 +199,37 @@ TEST_F(RenderOutputs, ResolutionLimitsAreClearErrors) {
   EXPECT_NE(err_.find("needs 112 GiB for the frame buffer"), std::string::npos) << err_;
   EXPECT_EQ(err_.find("internal error"), std::string::npos) << err_;
   EXPECT_FALSE(exists("a.png"));
+}
+
+TEST_F(RenderOutputs, AddressSpaceLimitIsAClearErrorNotBadAlloc) {
+  // A real child process under `ulimit -v` 2 GiB: a frame that needs 3.2 GiB is refused before
+  // anything is allocated (before: "internal error: std::bad_alloc", exit status 2).
+  int err_pipe[2];
+  ASSERT_EQ(::pipe(err_pipe), 0);
+  const std::string exe = std::string(GEOVIS_BINARY_DIR) + "/geovis", out = path("x.png");
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const struct rlimit as = {2UL << 30, 2UL << 30};
+    ::setrlimit(RLIMIT_AS, &as);
+    ::dup2(err_pipe[1], 2);
+    ::close(err_pipe[0]);
+    ::execl(exe.c_str(), exe.c_str(), "--res", "12000x12000", "-q", "-o", out.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(err_pipe[1]);
+  std::string err;
+  char buf[1024];
+  for (ssize_t n; (n = ::read(err_pipe[0], buf, sizeof buf)) > 0;) err.append(buf, size_t(n));
+  ::close(err_pipe[0]);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << err;
+  EXPECT_EQ(WEXITSTATUS(status), 1) << err;
+  EXPECT_NE(err.find("a 12000x12000 frame needs 1.6 GiB for the frame buffer"), std::string::npos) << err;
+  EXPECT_NE(err.find("the limit is 2.0 GiB"), std::string::npos) << err;
+  EXPECT_EQ(err.find("internal error"), std::string::npos) << err;
+  EXPECT_FALSE(exists("x.png"));
 }
 
 // ---- output folders ------------------------------------------------------------------------------
