@@ -356,7 +356,6 @@ void draw_text(Image& img, int x, int y, const std::string& text, int size, cons
     throw Error("cannot draw text \"" + text + "\": " + buf.geterror() +
                 " (install a font: Debian package fonts-dejavu-core)");
 }
-}
 
 std::string find_file(const std::string& name, const std::vector<std::string>& search_dirs,
                       const std::string& what) {
