@@ -30,9 +30,11 @@ for target in fuzz_scene fuzz_files; do
   corpus="$build/corpus/$target"
   rm -rf "$corpus"
   mkdir -p "$corpus"
-  cp "$src/fuzz/corpus/$target/"* "$corpus/"
-  if [ "$target" = fuzz_scene ]; then cp "$src"/tests/scene/broken/*.scm "$src"/examples/*.scm "$corpus/"; fi
-  rm -f "$corpus/README.md"
+  if [ "$target" = fuzz_scene ]; then
+    cp "$src"/tests/data/geovis/scenes/*.scm "$src"/tests/scene/broken/*.scm "$src"/examples/*.scm "$corpus/"
+  else
+    cp "$src/fuzz/corpus/$target/"* "$corpus/"
+  fi
   start=$(date +%s)
   # -timeout: one input may take 10 s (the scene's own time limit is 2 s); -rss_limit_mb: the
   # scene's memory limit is 256 MiB, Guile and the sanitizers add their own.

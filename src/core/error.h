@@ -1,7 +1,7 @@
 // Error and diagnostic types shared by every layer.
 //
 // A user-facing error always says where it comes from: file:line, the command, the key, what was
-// expected and what was found (DEVELOPERS.md, "Bad input gets a clear error").
+// expected and what was found, and an unknown name suggests the closest valid one.
 #pragma once
 
 #include <stdexcept>

@@ -2,7 +2,7 @@
 // `geovis check --strict`: it evaluates, every frame builds, and there is no warning at all (an
 // unknown key, an unset environment variable, a substituted texture, ... would be one). Each is
 // described in examples/README.md, and together they use every GeoViS command of the catalogue
-// (../shared/reference/geovis-catalogue.md §1) but the two README.md explains.
+// (docs/geovis-catalogue.md §1) but the two README.md explains.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -80,7 +80,7 @@ TEST(Examples, TogetherUseEveryGeoViSCommand) {
       text += ss.str() + "\n";
     }
   // Not in an example on purpose (examples/README.md, "Coverage"): getenv makes a scene depend on
-  // the machine (kastorTraschen.scm and morristhorne.scm in ../shared/scenes use it), exit stops a
+  // the machine (kastorTraschen.scm and morristhorne.scm in tests/data/geovis/scenes use it), exit stops a
   // scene before anything is rendered (tests/cli/test_render_cmd.cpp covers it).
   const std::vector<std::string> not_shown = {"getenv", "exit"};
   const auto cmds = catalogue_commands();

@@ -1,4 +1,4 @@
-// Issue requirement: every one of the six real GeoViS scenes (../shared/scenes/*.scm) renders
+// Every one of the six real GeoViS scenes (tests/data/geovis/scenes/*.scm) renders
 // unchanged through `geovis render` (first frame at 32x24). Their texture images are
 // not distributed, so the test writes small stand-ins into a temporary folder at run time and
 // passes it as --texture-path; HOME points to an empty temporary folder, so nothing is read from
@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kScenes = std::string(GEOVIS_SHARED_DIR) + "/scenes/";
+const std::string kScenes = std::string(GEOVIS_TEST_DATA_DIR) + "/geovis/scenes/";
 
 /// A stand-in texture: 8 x 4 cells of distinct colours (so that any part of it seen through a
 /// lens is still structured), `tint` distinguishes the files.
@@ -142,7 +142,7 @@ TEST_F(SharedScenesRender, SphereAroundBlackhole) {
   // 301 frames; frame 0 is the orbiting sphere straight between observer and hole
   // (tests/scene/test_paper_scenes.cpp measures its position).
   const Image img = render_first_frame("sphereAroundBlackhole", kW, kH);
-  expect_structured("sphereAroundBlackhole", img, kW, kH);
+  ASSERT_NO_FATAL_FAILURE(expect_structured("sphereAroundBlackhole", img, kW, kH));
   // fov 2.5 deg around the sphere (radius 0.5 at distance ~24): the checkered sphere fills the
   // middle of the image; the black background (color #(0 0 0), no celestial sphere) the corners.
   const float* c = img.at(kW / 2, kH / 2);
@@ -154,7 +154,7 @@ TEST_F(SharedScenesRender, SphereAroundBlackhole) {
 TEST_F(SharedScenesRender, FallEddFinkIn) {
   std::string err;
   const Image img = render_first_frame("fallEddFinkIn", kW, kH, &err);
-  expect_structured("fallEddFinkIn", img, kW, kH);
+  ASSERT_NO_FATAL_FAILURE(expect_structured("fallEddFinkIn", img, kW, kH));
   // "examples/eso0932a.tif" was replaced by the stand-in of that name, and said so.
   EXPECT_NE(err.find("eso0932a.tif"), std::string::npos) << err;
   // gvs-print-motion wrote the observer's worldline into the working folder.
@@ -163,25 +163,25 @@ TEST_F(SharedScenesRender, FallEddFinkIn) {
 
 TEST_F(SharedScenesRender, MinkWheel) {
   const Image img = render_first_frame("minkWheel", kW, kH);
-  expect_structured("minkWheel", img, kW, kH);
+  ASSERT_NO_FATAL_FAILURE(expect_structured("minkWheel", img, kW, kH));
 }
 
 TEST_F(SharedScenesRender, KerrAccretionDisk) {
   const Image img = render_first_frame("kerrAccretionDisk", kW, kH);
-  expect_structured("kerrAccretionDisk", img, kW, kH);
+  ASSERT_NO_FATAL_FAILURE(expect_structured("kerrAccretionDisk", img, kW, kH));
 }
 
 TEST_F(SharedScenesRender, KastorTraschen) {
   std::string err;
   const Image img = render_first_frame("kastorTraschen", kW, kH, &err);
-  expect_structured("kastorTraschen", img, kW, kH);
+  ASSERT_NO_FATAL_FAILURE(expect_structured("kastorTraschen", img, kW, kH));
   EXPECT_NE(err.find("sphereImageMaster_white.tif"), std::string::npos) << err;
 }
 
 TEST_F(SharedScenesRender, MorrisThorne) {
   std::string err;
   const Image img = render_first_frame("morristhorne", kW, kH, &err);
-  expect_structured("morristhorne", img, kW, kH);
+  ASSERT_NO_FATAL_FAILURE(expect_structured("morristhorne", img, kW, kH));
   EXPECT_NE(err.find("marktplatz_tuebingen_2048.tif"), std::string::npos) << err;
   EXPECT_NE(err.find("marktplatz_stuttgart_2048.tif"), std::string::npos) << err;
 }

@@ -1,4 +1,4 @@
-// Relativistic visual effects measured from rendered images (issue 5, item 6). Every expectation
+// Relativistic visual effects measured from rendered images. Every expectation
 // is an analytic formula evaluated here (aberration, Terrell-Penrose rotation, geodetic
 // precession); the measurements come from the per-pixel data of small renders (RGBpt filter:
 // hit position, texture coordinates and object id, catalogue §3; RGBpdz for hit/miss), never

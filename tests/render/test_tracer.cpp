@@ -1,4 +1,4 @@
-// Tracer tests with independent, analytic expectations (issue 3 item 10): flat-space projection of
+// Tracer tests with independent, analytic expectations: flat-space projection of
 // a sphere, the Schwarzschild shadow radius, the 4π sky mapping, frequency shift and Jacobi
 // parameters against closed forms, and the hit refinement against the exact surface.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The scene language against the GeoViS reference (../shared/reference/geovis-catalogue.md §1):
+// The scene language against the GeoViS reference (docs/geovis-catalogue.md §1):
 // exactly GeoViS's commands exist; add-object accepts the id every call gets; texture images and
 // meshes named by paths of another machine are found by file name in the search folders.
 #include <gtest/gtest.h>
@@ -91,7 +91,7 @@ TEST(CatalogueCommands, AddObjectWithOrWithoutIdGivesNoWarning) {
 
 TEST(CatalogueCommands, PlaneParallelogramExtensionBuildsAParallelogram) {
   // GeoViS has plane-triangle and plane-ring only; geovis adds the parallelogram with corners p1,
-  // p2, p3 and p2 + p3 - p1 (issue: "planar surface (parallelogram)"), with plane-triangle's keys.
+  // p2, p3 and p2 + p3 - p1 (a planar parallelogram), with plane-triangle's keys.
   const std::string pg =
       "(plane-parallelogram '(p1 #(0 0 0)) '(p2 #(3 0 0)) '(p3 #(1 2 0)) '(shader \"sh\") '(id \"pg\"))\n"
       "(add-object '(add-to \"scene\") '(obj \"pg\"))\n";

@@ -1,5 +1,5 @@
 // The paper's example scenes rendered through the whole pipeline (Scheme scene -> SceneBuilder ->
-// render) and measured against analytic physics (issue 5, item 6): the light travel time of the
+// render) and measured against analytic physics: the light travel time of the
 // orbiting sphere (paper eq. 9) and the shadow of a black hole seen by a freely falling observer
 // (paper eq. 14). Renders are tiny (64x64, 720x1) and the expectations are computed here.
 #include <gtest/gtest.h>
@@ -42,7 +42,7 @@ TEST(PaperScenes, OrbitingSphereFirstFrameIsCentredAtLightTravelTime) {
   // sphere's centre event and the sphere's image is centred on the image centre.
   const double t0 = (30.0 + 2.0 * std::log(28.0)) - (6.0 + 2.0 * std::log(4.0));
   const int N = 64;
-  SceneBuilder b = build_scene(std::string(GEOVIS_SHARED_DIR) + "/scenes/sphereAroundBlackhole.scm", {N, N});
+  SceneBuilder b = build_scene(std::string(GEOVIS_TEST_DATA_DIR) + "/geovis/scenes/sphereAroundBlackhole.scm", {N, N});
   ASSERT_EQ(b.device_count(), 301);
   std::vector<FrameJob> frames = b.build(0);
   ASSERT_EQ(frames.size(), 1u);

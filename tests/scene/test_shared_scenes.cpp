@@ -1,4 +1,4 @@
-// The six real GeoViS scenes (../shared/scenes) evaluate to the expected command calls. Expected
+// The six real GeoViS scenes (tests/data/geovis/scenes) evaluate to the expected command calls. Expected
 // values are computed here from the scenes' own formulas (e.g. t = t_start + count * t_step), not
 // taken from an earlier run.
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 namespace geovis {
 namespace {
 
-const std::string kScenes = std::string(GEOVIS_SHARED_DIR) + "/scenes/";
+const std::string kScenes = std::string(GEOVIS_TEST_DATA_DIR) + "/geovis/scenes/";
 constexpr double kDegToRad = 0.017453292519943295770;  // init.scm DEG_TO_RAD
 
 SceneDescription eval_shared(const std::string& name) {
@@ -211,7 +211,7 @@ TEST(SharedScenes, AllSixEvaluateAndEveryCallHasAUniqueId) {
     SCOPED_TRACE(name);
     const SceneDescription d = eval_shared(name);
     EXPECT_EQ(d.file, kScenes + name);
-    EXPECT_EQ(d.dir, std::string(GEOVIS_SHARED_DIR) + "/scenes");
+    EXPECT_EQ(d.dir, std::string(GEOVIS_TEST_DATA_DIR) + "/geovis/scenes");
     std::set<std::string> ids;
     for (const auto& c : d.calls) {
       EXPECT_EQ(c.command, c.params.command());

@@ -1,4 +1,4 @@
-// The GeoViS reference (../shared/reference/geovis-catalogue.md) read by tests that compare our
+// The GeoViS reference (docs/geovis-catalogue.md) read by tests that compare our
 // scene language with the original's.
 #pragma once
 
@@ -14,7 +14,7 @@ namespace geovis::testing_support {
 /// tables of later sections and of §1's subsections are not part of it). Empty when the catalogue
 /// cannot be read.
 inline std::vector<std::string> catalogue_commands() {
-  std::ifstream in(std::filesystem::path(GEOVIS_SHARED_DIR) / "reference" / "geovis-catalogue.md");
+  std::ifstream in(std::filesystem::path(GEOVIS_SOURCE_DIR) / "docs" / "geovis-catalogue.md");
   std::vector<std::string> out;
   bool in_table = false;
   static const std::regex name("`([a-z0-9-]+)`");

@@ -1,0 +1,163 @@
+// The GeoViS comparison benchmark: renders the seven GeoViS scenes that GeoViS itself was timed on
+// (one core, `gvsRender`, first frame unless noted; the figures of the table below were measured
+// with GeoViS on the project's build machine kind, 2 vCPU AMD EPYC KVM guest) and prints our pixels
+// per CPU-second and integration steps per ray next to GeoViS's, the speed-up per scene and its
+// geometric mean, the cost of the data filters (RGBpdz, RGBjac) relative to RGB, and the speed-up
+// of two threads over one.
+//
+//   cmake --build build --target geovis_scene_bench && build/bench/geovis_scene_bench [--quick]
+//
+// --quick renders every scene at a quarter of the pixels (half width and height) for a smoke run.
+// Not a test: nothing here is asserted; the figures go to docs/PERFORMANCE.md with the machine,
+// commit and date.
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "core/error.h"
+#include "io/image.h"
+#include "render/renderer.h"
+#include "scene/builder.h"
+#include "scene/scheme.h"
+
+namespace fs = std::filesystem;
+using namespace geovis;
+
+namespace {
+
+struct SceneCase {
+  const char* name;
+  const char* file;  ///< relative to tests/data
+  int width, height;
+  int frame;
+  double geovis_px_per_s;  ///< GeoViS, one core, same scene and resolution
+  double geovis_steps;     ///< GeoViS's integration steps per ray (0: not recorded)
+};
+
+// GeoViS 1 core on this machine kind (gvsRender, same scene files).
+const SceneCase kScenes[] = {
+    {"kerrAccretionDisk", "geovis/scenes/kerrAccretionDisk.scm", 400, 400, 0, 6787, 152},
+    {"sphereAroundBlackhole", "geovis/scenes/sphereAroundBlackhole.scm", 400, 400, 0, 7990, 96},
+    {"morristhorne (4pi)", "geovis/scenes/morristhorne.scm", 600, 300, 0, 8615, 191},
+    {"kastorTraschen", "geovis/scenes/kastorTraschen.scm", 100, 100, 0, 236, 2469},
+    {"fallEddFinkIn", "geovis/scenes/fallEddFinkIn.scm", 360, 60, 0, 2923, 547},
+    {"minkWheel (frame 112)", "geovis/scenes/minkWheel.scm", 160, 112, 112, 343, 1294},
+    {"movClock", "fidelity/movClock.scm", 200, 200, 0, 1026, 0},
+};
+
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+/// A stand-in for a texture the GeoViS scenes name but do not ship: 8 x 4 coloured cells.
+void write_stand_in(const fs::path& path) {
+  Image img(256, 128, 3);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      float* p = img.at(x, y);
+      const int cx = x * 8 / img.width, cy = y * 4 / img.height;
+      p[0] = 0.15f + 0.1f * static_cast<float>(cx);
+      p[1] = 0.2f + 0.2f * static_cast<float>(cy);
+      p[2] = ((cx + cy) % 2 == 0) ? 0.8f : 0.2f;
+    }
+  write_image(path.string(), img);
+}
+
+struct Measured {
+  double cpu = 0, wall = 0;
+  long rays = 0, steps = 0;
+};
+
+Measured render_scene(const fs::path& scene, const std::vector<std::string>& search, int w, int h, int frame,
+                      int threads, const Filter* filter = nullptr) {
+  BuildOptions opts;
+  opts.resolution = std::make_pair(w, h);
+  opts.search_paths = {scene.parent_path().string()};
+  opts.search_paths.insert(opts.search_paths.end(), search.begin(), search.end());
+  SceneBuilder b(evaluate_scene_file(scene.string()), opts);
+  std::vector<FrameJob> jobs = b.build(frame);
+  RenderJob job = jobs.at(0).job;
+  if (filter) job.filter = *filter;
+  RenderOptions ro;
+  ro.threads = threads;
+  ro.progress = false;
+  const double c0 = cpu_seconds();
+  const RenderResult r = render(job, ro);
+  Measured m;
+  m.cpu = cpu_seconds() - c0;
+  m.wall = r.stats.seconds;
+  m.rays = r.stats.rays;
+  m.steps = r.stats.steps;
+  return m;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const fs::path data = fs::path(GEOVIS_SOURCE_DIR) / "tests" / "data";
+  // Texture stand-ins under the file names the GeoViS scenes ask for (looked up by file name).
+  const fs::path tex = fs::temp_directory_path() / ("geovis_scene_bench_" + std::to_string(::getpid()));
+  fs::create_directories(tex);
+  for (const char* n : {"eso0932a.tif", "sphereImageMaster_white.tif", "marktplatz_tuebingen_2048.tif",
+                        "marktplatz_stuttgart_2048.tif"})
+    write_stand_in(tex / n);
+  const std::vector<std::string> search = {tex.string(), (data / "fidelity" / "textures").string()};
+  const int div = quick ? 2 : 1;
+
+  std::printf("%-24s %9s %12s %12s %8s %10s %10s\n", "scene", "res", "ours px/s", "GeoViS px/s", "ratio",
+              "steps/ray", "GeoViS");
+  double log_sum = 0;
+  int n = 0;
+  double worst = 1e300;
+  for (const SceneCase& s : kScenes) {
+    const fs::path file = data / s.file;
+    const int w = s.width / div, h = s.height / div;
+    try {
+      const Measured m = render_scene(file, search, w, h, s.frame, 1);
+      const double pxs = w * h / m.cpu;
+      const double ratio = pxs / s.geovis_px_per_s;
+      log_sum += std::log(ratio);
+      worst = std::min(worst, ratio);
+      ++n;
+      char gsteps[32] = "-";
+      if (s.geovis_steps > 0) std::snprintf(gsteps, sizeof gsteps, "%.0f", s.geovis_steps);
+      std::printf("%-24s %4dx%-4d %12.0f %12.0f %7.2fx %10.0f %10s\n", s.name, w, h, pxs, s.geovis_px_per_s, ratio,
+                  m.rays ? double(m.steps) / m.rays : 0.0, gsteps);
+    } catch (const std::exception& e) {
+      std::printf("%-24s error: %s\n", s.name, e.what());
+    }
+    std::fflush(stdout);
+  }
+  if (n) std::printf("geometric mean %.2fx GeoViS per core (goal 30x), worst scene %.2fx (goal 10x)\n",
+                     std::exp(log_sum / n), worst);
+
+  // Data filters on the Kerr disk (quarter of the pixels of the table: RGBjac is the costly one).
+  const fs::path kerr = data / "geovis/scenes/kerrAccretionDisk.scm";
+  const int fw = 200 / div, fh = 200 / div;
+  const Filter rgb = Filter::RGB, pdz = Filter::RGBpdz, jac = Filter::RGBjac;
+  const Measured m_rgb = render_scene(kerr, search, fw, fh, 0, 1, &rgb);
+  const Measured m_pdz = render_scene(kerr, search, fw, fh, 0, 1, &pdz);
+  const Measured m_jac = render_scene(kerr, search, fw, fh, 0, 1, &jac);
+  std::printf("kerrAccretionDisk %dx%d CPU s: RGB %.2f, RGBpdz %.2f (%.2fx, goal <= 1.1x), RGBjac %.2f (%.1fx, goal <= 3x)\n",
+              fw, fh, m_rgb.cpu, m_pdz.cpu, m_pdz.cpu / m_rgb.cpu, m_jac.cpu, m_jac.cpu / m_rgb.cpu);
+  std::printf("  steps/ray: RGB %.0f, RGBpdz %.0f, RGBjac %.0f\n", double(m_rgb.steps) / m_rgb.rays,
+              double(m_pdz.steps) / m_pdz.rays, double(m_jac.steps) / m_jac.rays);
+
+  // Threads: wall time of the same render on 1 and 2 threads.
+  const Measured one = render_scene(kerr, search, 400 / div, 400 / div, 0, 1);
+  const Measured two = render_scene(kerr, search, 400 / div, 400 / div, 0, 2);
+  std::printf("kerrAccretionDisk %dx%d wall s: 1 thread %.2f, 2 threads %.2f (%.2fx, goal >= 1.9x)\n", 400 / div,
+              400 / div, one.wall, two.wall, one.wall / two.wall);
+  fs::remove_all(tex);
+  return 0;
+}
