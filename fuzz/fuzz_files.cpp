@@ -45,8 +45,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         f << body;
         if (!f.flush()) return 0;
       }
+      struct Remove {
+        const std::string& path;
+        ~Remove() { std::remove(path.c_str()); }
+      } remove{path};
       const geovis::Image img = geovis::read_image(path);
-      std::remove(path.c_str());
       if (img.pixels.size() != size_t(img.width) * img.height * img.channels) __builtin_trap();
     } else {
       int width = 0, height = 0;

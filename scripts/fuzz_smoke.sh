@@ -35,7 +35,6 @@ for target in fuzz_scene fuzz_files; do
   else
     cp "$src/fuzz/corpus/$target/"* "$corpus/"
   fi
-  rm -f "$corpus/README.md"
   start=$(date +%s)
   # -timeout: one input may take 10 s (the scene's own time limit is 2 s); -rss_limit_mb: the
   # scene's memory limit is 256 MiB, Guile and the sanitizers add their own.
