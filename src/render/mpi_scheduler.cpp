@@ -85,10 +85,16 @@ struct RequestHeader {
   double cpu_seconds = 0;
   int64_t steps = 0;
   int32_t n_floats = 0, n_doubles = 0;
+  /// A render thread asks for more work of the image it renders (rank 0 answers at once: a tile,
+  /// or kNoTileNow when that image has none left); false: the rank waits for the next image.
+  int32_t in_image = 0;
 };
 
 struct Assignment {
-  enum Kind : int32_t { kUnknown = -1, kFinished = 0, kTile = 1 };
+  /// kNoTileNow ends a render thread's work on its image. Without it a thread waiting for work
+  /// could keep its rank inside an image while a tile of the next image, received by another of
+  /// its threads, waits to be rendered: rank 0 would wait for that tile, the rank for work.
+  enum Kind : int32_t { kUnknown = -1, kFinished = 0, kTile = 1, kNoTileNow = 2 };
   int32_t kind = kUnknown, frame = -1, eye = -1, tile = -1;
 };
 
@@ -202,7 +208,7 @@ struct MpiTileDispatcher::State {
 
   void loop();
   void handle_request(int source, const std::vector<char>& msg);
-  bool assign(int rank, int slot);
+  bool assign(int rank, int slot, bool in_image);
   void serve_waiting();
   void update_status();
   std::string status_text() const;
@@ -228,7 +234,7 @@ std::string MpiTileDispatcher::State::status_text() const {
 
 void MpiTileDispatcher::State::update_status() { publish_status(status_text()); }
 
-bool MpiTileDispatcher::State::assign(int rank, int slot) {
+bool MpiTileDispatcher::State::assign(int rank, int slot, bool in_image) {
   Assignment a;
   const int tile = image ? image->pop() : -1;
   if (tile >= 0) {
@@ -236,6 +242,8 @@ bool MpiTileDispatcher::State::assign(int rank, int slot) {
     in_flight.insert({rank, tile});
   } else if (finishing) {
     a.kind = Assignment::kFinished;
+  } else if (in_image) {
+    a.kind = Assignment::kNoTileNow;
   } else {
     waiting.emplace_back(rank, slot);
     return false;
@@ -249,7 +257,7 @@ void MpiTileDispatcher::State::serve_waiting() {
   while (!waiting.empty() && (finishing || (image && image->remaining() > 0))) {
     const auto [rank, slot] = waiting.front();
     waiting.pop_front();
-    if (!assign(rank, slot)) break;
+    if (!assign(rank, slot, false)) break;
   }
 }
 
@@ -276,7 +284,7 @@ void MpiTileDispatcher::State::handle_request(int source, const std::vector<char
                        data.empty() ? nullptr : data.data());
     in_flight.erase({source, h.tile});
   }
-  assign(source, h.slot);
+  if (!assign(source, h.slot, h.in_image != 0)) update_status();
 }
 
 void MpiTileDispatcher::State::loop() {
@@ -364,13 +372,11 @@ void MpiTileDispatcher::finish() {
 
 namespace {
 
-/// The tiles rank 0 hands to this rank's render threads. Every thread keeps one request ahead:
-/// while it renders a tile, the reply with its next tile is already on the way, so a round trip
-/// to rank 0 (a sleeping communication thread to wake, a busy core) never idles a render thread.
-/// A reply may bring a tile of the next image; it waits ("stashed") until that image is rendered.
+/// The tiles rank 0 hands to this rank's render threads. A thread's request may be answered with
+/// a tile of the next image; it is kept ("stashed") until that image is rendered.
 class WorkerTiles final : public TileSchedule {
  public:
-  explicit WorkerTiles(int slots) : slots_(size_t(slots)) {}
+  explicit WorkerTiles(int slots) : stash_(size_t(slots)), finished_(size_t(slots)) {}
 
   void begin_image(int frame, int eye, const TileGrid& grid) {
     frame_ = frame;
@@ -378,62 +384,42 @@ class WorkerTiles final : public TileSchedule {
     grid_ = grid;
   }
 
-  /// The image of the earliest received tile; false when rank 0 has no more work. Called when no
-  /// render thread runs.
+  /// The image of the earliest stashed tile; false when rank 0 has no more work.
   bool next_image(int& frame, int& eye) {
     for (;;) {
       bool any_finished = false, any_tile = false;
-      for (const Slot& slot : slots_)
-        for (const Assignment& a : slot.received) {
-          any_finished = any_finished || a.kind == Assignment::kFinished;
-          if (a.kind == Assignment::kTile &&
-              (!any_tile || std::make_pair(a.frame, a.eye) < std::make_pair(frame, eye))) {
-            frame = a.frame;
-            eye = a.eye;
-            any_tile = true;
-          }
+      for (const Assignment& a : stash_) {
+        any_finished = any_finished || a.kind == Assignment::kFinished;
+        if (a.kind == Assignment::kTile &&
+            (!any_tile || std::make_pair(a.frame, a.eye) < std::make_pair(frame, eye))) {
+          frame = a.frame;
+          eye = a.eye;
+          any_tile = true;
         }
+      }
       if (any_tile) return true;
       if (any_finished) return false;
-      size_t s = 0;
-      while (s < slots_.size() && slots_[s].receiving.empty()) ++s;
-      if (s == slots_.size()) {  // nothing asked for yet
-        s = 0;
-        exchange(0);
-      }
-      receive_one(int(s));
+      stash_[0] = request(0, false);
     }
   }
 
   int next_tile(int slot) override {
-    Slot& me = slots_[size_t(slot)];
-    if (!me.finished_tile.empty()) exchange(slot);  // returns the last tile and asks for one more
-    for (;;) {
-      int tile = -1;
-      size_t ahead = 0;
-      bool later_image = false;
-      {
-        std::lock_guard lock(mutex_);
-        // A tile of this image received by any thread (another one may have stopped meanwhile).
-        for (Slot& other : slots_)
-          for (auto it = other.received.begin(); tile < 0 && it != other.received.end(); ++it)
-            if (it->kind == Assignment::kTile && it->frame == frame_ && it->eye == eye_) {
-              tile = it->tile;
-              other.received.erase(it);
-              break;
-            }
-        ahead = me.receiving.size() + me.received.size();
-        // The next reply is for a later image, or rank 0 has no more work: this thread is done.
-        later_image = tile < 0 && !me.received.empty();
+    {
+      std::lock_guard lock(mutex_);
+      for (Assignment& a : stash_) {
+        if (a.kind == Assignment::kTile && a.frame == frame_ && a.eye == eye_) {
+          a.kind = Assignment::kUnknown;
+          return a.tile;
+        }
       }
-      if (tile >= 0) {
-        if (ahead == 0) exchange(slot);  // the next tile is on its way while this one renders
-        return tile;
-      }
-      if (later_image) return -1;
-      if (me.receiving.empty()) exchange(slot);
-      receive_one(slot);
+      if (stash_[size_t(slot)].kind != Assignment::kUnknown) return -1;
     }
+    const Assignment a = request(slot, true);
+    if (a.kind == Assignment::kTile && a.frame == frame_ && a.eye == eye_) return a.tile;
+    if (a.kind == Assignment::kNoTileNow) return -1;
+    std::lock_guard lock(mutex_);
+    stash_[size_t(slot)] = a;
+    return -1;
   }
 
   void tile_done(int slot, int tile, const TileCost& cost, const RenderResult& result) override {
@@ -448,7 +434,8 @@ class WorkerTiles final : public TileSchedule {
     h.steps = cost.steps;
     h.n_floats = 3 * r.pixels();
     h.n_doubles = with_data ? r.pixels() * int(sizeof(PixelData) / sizeof(double)) : 0;
-    std::vector<char>& out = slots_[size_t(slot)].finished_tile;
+    h.in_image = 1;
+    std::vector<char>& out = finished_[size_t(slot)];
     out.assign(reinterpret_cast<const char*>(&h), reinterpret_cast<const char*>(&h) + sizeof h);
     for (int y = r.y0; y < r.y1; ++y) {
       const char* row = reinterpret_cast<const char*>(result.image.at(r.x0, y));
@@ -462,56 +449,32 @@ class WorkerTiles final : public TileSchedule {
     test_hook_tile_finished();
   }
 
-  /// Waits for the replies to every request still out (rank 0 answers each one).
-  void drain() {
-    for (size_t s = 0; s < slots_.size(); ++s)
-      while (!slots_[s].receiving.empty()) receive_one(int(s));
-    for (Slot& slot : slots_)
-      if (slot.send_pending) wait_for(slot.send);
-  }
-
  private:
-
-  struct Slot {
-    std::deque<Assignment> received;  ///< replies not used yet (guarded by mutex_)
-    std::deque<std::pair<MPI_Request, std::unique_ptr<Assignment>>> receiving;  ///< posted, in order
-    std::vector<char> finished_tile;  ///< the request carrying the thread's last finished tile
-    std::vector<char> sending;        ///< the request in flight
-    MPI_Request send{};
-    bool send_pending = false;
-  };
-
-  /// Sends the slot's request (with its finished tile, if any) and posts the receive of the reply.
-  void exchange(int slot) {
-    Slot& me = slots_[size_t(slot)];
-    if (me.send_pending) wait_for(me.send);  // its buffer is reused
-    me.sending.swap(me.finished_tile);
-    me.finished_tile.clear();
-    if (me.sending.empty()) {
+  /// Returns the thread's finished tile (if any) to rank 0 and receives its next assignment;
+  /// `in_image`: asked by a render thread of the current image.
+  Assignment request(int slot, bool in_image) {
+    std::vector<char>& msg = finished_[size_t(slot)];
+    if (msg.empty()) {
       RequestHeader h;
       h.slot = slot;
-      me.sending.assign(reinterpret_cast<const char*>(&h), reinterpret_cast<const char*>(&h) + sizeof h);
+      h.in_image = in_image ? 1 : 0;
+      msg.assign(reinterpret_cast<const char*>(&h), reinterpret_cast<const char*>(&h) + sizeof h);
     }
-    auto reply = std::make_unique<Assignment>();
-    std::lock_guard lock(mpi_mutex());
-    me.receiving.emplace_back(MPI_Request{}, std::move(reply));
-    MPI_Irecv(me.receiving.back().second.get(), sizeof(Assignment), MPI_BYTE, 0, kTagAssign + slot, MPI_COMM_WORLD,
-              &me.receiving.back().first);
-    MPI_Isend(me.sending.data(), int(me.sending.size()), MPI_BYTE, 0, kTagRequest, MPI_COMM_WORLD, &me.send);
-    me.send_pending = true;
+    Assignment a;
+    MPI_Request recv;
+    {
+      std::lock_guard lock(mpi_mutex());
+      MPI_Irecv(&a, sizeof a, MPI_BYTE, 0, kTagAssign + slot, MPI_COMM_WORLD, &recv);
+    }
+    send_bytes(msg.data(), msg.size(), 0, kTagRequest);
+    msg.clear();
+    wait_for(recv);
+    return a;
   }
 
-  /// Waits for the slot's oldest outstanding reply.
-  void receive_one(int slot) {
-    Slot& me = slots_[size_t(slot)];
-    wait_for(me.receiving.front().first);
-    std::lock_guard lock(mutex_);
-    me.received.push_back(*me.receiving.front().second);
-    me.receiving.pop_front();
-  }
-
-  std::mutex mutex_;  // guards every Slot::received
-  std::vector<Slot> slots_;
+  std::mutex mutex_;  // guards stash_
+  std::vector<Assignment> stash_;
+  std::vector<std::vector<char>> finished_;  ///< per slot: the request carrying its last tile
   int frame_ = -1, eye_ = -1;
   TileGrid grid_;
 };
@@ -533,7 +496,6 @@ void run_mpi_worker(MpiContext& mpi, const RenderOptions& options,
     tiles.begin_image(frame, eye, TileGrid(result.image.width, result.image.height, ro.tile_size));
     render_tiles(job, ro, tiles, result);
   }
-  tiles.drain();
   const int32_t bye = 0;
   send_bytes(&bye, sizeof bye, 0, kTagBye);
 }
