@@ -337,6 +337,31 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit) const {
   Hit best;
   bool found = false;
   LocalFrame::State best_state;
+  // A rotating frame: the first estimate maps each end of the segment with the frame of its own
+  // time. Consecutive segments then join in the local frame (a polyline along the ray's spiral);
+  // with one frozen frame per segment the local path would jump between segments by the turn of
+  // the frame, and a ray that crosses a thin part far from the axis inside such a jump would
+  // miss it (holes near the tip of a clock hand). The frozen-frame iteration below then places
+  // the hit exactly; where it loses a grazing hit, this estimate is kept.
+  Hit polyline;
+  bool have_polyline = false;
+  if (rotation_rate_ > 0) {
+    double ta = tau, tb = tau;
+    if (!frame_.simultaneous_tau(seg.x0, ta) || !frame_.simultaneous_tau(seg.x1, tb)) return false;
+    const Vec4 X0 = frame_.to_local(frame_.state(ta), seg.x0), X1 = frame_.to_local(frame_.state(tb), seg.x1);
+    Segment ls;
+    ls.x0 = seg.x0;
+    ls.x1 = seg.x1;
+    ls.p0 = spatial(X0);
+    ls.p1 = spatial(X1);
+    ls.chart0 = ls.chart1 = child_->chart;
+    ls.metric = seg.metric;
+    polyline = hit;
+    if (!child_->intersect(ls, polyline)) return false;
+    have_polyline = true;
+    x_ref = seg.x0 + polyline.s * dseg;
+    tau = ta + polyline.s * (tb - ta);
+  }
   for (int iter = 0; iter < 12; ++iter) {
     double tau_new = tau;
     if (!frame_.simultaneous_tau(x_ref, tau_new)) break;
@@ -358,6 +383,13 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit) const {
     found = true;
     if (!frame_.moving()) break;
     x_ref = seg.x0 + h.s * dseg;
+  }
+  if (!found && have_polyline) {
+    best = polyline;
+    double t_hit = tau;
+    frame_.simultaneous_tau(x_ref, t_hit);
+    best_state = frame_.state(t_hit);
+    found = true;
   }
   if (!found) return false;
   const Vec4 x_hit = seg.x0 + best.s * dseg;

@@ -401,6 +401,47 @@ TEST(ObjLocal, RotatingThinPaddleIsNotMissedOnALongStep) {
   EXPECT_NEAR(hit.s, hi / 20, 1e-9);
 }
 
+TEST(ObjLocal, RotatingClockHandHasNoHolesNearItsTip) {
+  // movClock.scm's hand: a cylinder of radius 0.1 from the origin to (0, 0, 1.8) turning about x
+  // (ConstVelocity rotation ω = 0.5: object coordinates X = R(−ωt) x, the tip at 0.9 c), seen by
+  // light rays along −x from x = 10 at t_o = 4.5 in steps of 0.01. A ray enters the hand where
+  // its own path, mapped with the frame of each event's time, does: x² + Y² <= 0.01,
+  // 0 <= Z <= 1.8 with (Y, Z) = R(−ωt)(y, z), t = t_o − λ, x = 10 − λ. Every ray near the tip that
+  // does so must hit (with one frozen frame per step the local path jumps by the frame's turn
+  // between steps and rays crossing a sliver near the tip were lost).
+  auto metric = minkowski();
+  const double omega = 0.5, t_o = 4.5, L = 0.01;
+  ConstVelocityMotion::Op rot;
+  rot.is_boost = false;
+  rot.omega = omega;
+  rot.axis = {1, 0, 0};
+  auto motion = std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{rot});
+  LocalObject hand(std::make_shared<Cylinder>(Vec3{0, 0, 0}, Vec3{0, 0, 1.8}, 0.1, 0.1), LocalFrame(metric, motion));
+  int expected = 0, hit_count = 0;
+  for (double y = 0.4; y <= 0.9; y += 0.025)
+    for (double z = -1.8; z <= -1.2; z += 0.025) {
+      auto inside = [&](double lam) {
+        const double th = omega * (t_o - lam), x = 10 - lam;
+        const double Y = std::cos(th) * y + std::sin(th) * z, Z = -std::sin(th) * y + std::cos(th) * z;
+        return Z >= 0 && Z <= 1.8 && x * x + Y * Y <= 0.01;
+      };
+      bool enters = false;
+      for (double lam = 9.85; lam <= 10.15 && !enters; lam += 1e-5) enters = inside(lam);
+      bool got = false;
+      for (int i = 0; i < 40 && !got; ++i) {
+        const double l0 = 9.8 + i * L;
+        Hit h;
+        got = hand.intersect(testing::light_segment(t_o - l0, {10 - l0, y, z}, {-1, 0, 0}, L), h);
+      }
+      if (!enters) continue;
+      ++expected;
+      EXPECT_TRUE(got) << "y = " << y << ", z = " << z;
+      hit_count += got;
+    }
+  EXPECT_GT(expected, 20);
+  EXPECT_EQ(hit_count, expected);
+}
+
 TEST(ObjLocal, ConstVelocityInCurvedMetricActsOnPseudoCartesianPoints) {
   // GeoViS applies a ConstVelocity motion to the pseudo-Cartesian points of the rays in any
   // metric (mtContactRings.scm, Morris-Thorne): a boosted sphere in Schwarzschild is hit where the
