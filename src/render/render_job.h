@@ -51,6 +51,17 @@ struct RenderOptions {
   std::string label;    ///< shown in the progress line (e.g. frame number)
 };
 
+/// Why a pixel's ray ended (the `stop` of the data files; tracer.h pixel_stop gives the mapping).
+enum class PixelStop : unsigned char {
+  Hit = 0,     ///< hit an object
+  Escaped,     ///< left the objects' bounding sphere for good (asymptotically flat metrics)
+  Horizon,     ///< the metric's break condition: horizon, singularity, edge of the chart
+  Box,         ///< left the scene's bounding box
+  MaxSteps,    ///< ran out of steps (maxNumPoints) or affine parameter
+  Constraint,  ///< the null constraint drifted beyond tolerance
+  Error,       ///< integration error (step underflow, NaN) or no ray at this pixel
+};
+
 /// Per-pixel physics data (the RGBpdz/RGBjac/RGBpt filters).
 struct PixelData {
   double pos[4] = {0, 0, 0, 0};
@@ -59,6 +70,7 @@ struct PixelData {
   double freqshift = 0;
   double jacobi[5] = {0, 0, 0, 0, 0};
   double uv[2] = {0, 0};
+  PixelStop stop = PixelStop::Error;
 };
 
 struct RenderStats {

@@ -38,6 +38,9 @@ struct TraceResult {
   Color color;
 };
 
+/// The data files' stop reason of a traced ray (render_job.h PixelStop).
+PixelStop pixel_stop(const TraceResult& r);
+
 class Tracer {
  public:
   /// Checks the job (metric, camera present; solver settings sane) and throws Error otherwise.
@@ -64,7 +67,8 @@ class Tracer {
   ///  - Constraint (the null constraint drifted): cstrcolor, else black (GeoViS);
   ///  - StepUnderflow / NotFinite (integration error): errcolor, else the background (GeoViS
   ///    gives a step-size break the background; its errcolor is for rays that cannot start);
-  ///  - BoundingBox, MaxSteps, LambdaMax (the ray escaped or ran out of budget): the background.
+  ///  - Escaped, BoundingBox, MaxSteps, LambdaMax (the ray escaped or ran out of budget): the
+  ///    background.
   Color stop_color(StopReason reason) const;
   static constexpr int kMaxRefineLevels = 16;
 
