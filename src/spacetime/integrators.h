@@ -888,7 +888,9 @@ void validate_solver_config(const SolverConfig& cfg);
 /// Integrates y' = f(y) with stepper St. Per attempt: a trial state that is not finite or lies
 /// outside the validity domain is rejected like a step with too large an error (adaptive: the
 /// step shrinks; fixed step: the integration stops). Per accepted step, in this order: constraint
-/// test (a step that broke the constraint is not reported), callback, re-basing of the state
+/// test (a step that broke the constraint is not reported; before it, a system may project the
+/// state onto its first integrals: `bool project_invariants(double* y) const`, kerr_mino.h),
+/// callback, re-basing of the state
 /// (`void rebase(double* y)`, systems whose variables are relative to a moving origin, kerr_mino.h),
 /// bounding box, λ_max, escape (`bool escaped(const SolverConfig&, const double* y, double&
 /// radius) const`, systems that can tell; geodesic.h SolverConfig::escape_radius). Before
@@ -1033,7 +1035,9 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
     }
     // Accepted.
     if (cfg.reproject) sys.reproject(y1, cfg.type);
-    if (!have_dy1 || cfg.reproject) {
+    bool projected = false;
+    if constexpr (requires { sys.project_invariants(y1); }) projected = sys.project_invariants(y1);
+    if (!have_dy1 || cfg.reproject || projected) {
       sys(y1, dy1);
       ++res.rhs_evals;
     }

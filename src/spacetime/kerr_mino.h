@@ -60,6 +60,7 @@ struct KerrMinoConstants {
   double E = 0, L = 0, Q = 0, mu2 = 0;
   double c = 0, K = 0, A = 0, B = 0;  ///< c = a²E − aL, K = (L − aE)² + Q, A = a²(E² − μ²), B = Q + L² − A
   bool axis = false;                  ///< L == 0: the ray can pass through the polar axis
+  double sin2_floor = 1e-6;           ///< floor of sin²θ in the tolerance scales (KerrMinoSystem)
 
   /// The potentials of the first integrals (file comment): (dw/dσ)² = W(w), (dz/dσ)² = Z(z).
   double W(double w) const {
@@ -70,6 +71,10 @@ struct KerrMinoConstants {
     const double z2 = z * z;
     return Q - B * z2 - A * z2 * z2;
   }
+  /// Z as a function of sin²θ = 1 − z²: Z = −L² + (B + 2A) sin²θ − A sin⁴θ (Q − B − A = −L²).
+  /// Near the axis, where Z and sin²θ are small, this keeps full relative precision (Z(z) is
+  /// there a difference of terms of size Q).
+  double Z_of_sin2(double s2) const { return -L * L + (B + 2.0 * A - A * s2) * s2; }
 
   /// Escape test (escape.h): no radial turning point at any radius beyond r (> 0). R(r) = r⁴ W(1/r)
   /// is the quartic (Carter 1968; MTW eq. 33.32)
@@ -99,6 +104,8 @@ struct KerrMinoConstants {
     A = a2 * (E * E - mu2);
     B = Q + L * L - A;
     axis = L == 0.0;
+    // (θ_min/2)² with sin²θ_min ≈ L²/(B + 2A) (first order in L² of Z = 0, Z_of_sin2), at most 1e-6.
+    sin2_floor = axis || !(B + 2.0 * A > 0.0) ? 1e-6 : std::min(1e-6, 0.25 * L * L / (B + 2.0 * A));
   }
 };
 
@@ -196,17 +203,45 @@ struct KerrMinoSystem {
   /// Tolerance scales (ErrorScale), as their reciprocals 1/s_i: an error δw is an error δr =
   /// δw/w², δz one of δθ = δz/|sin θ|, δw' one of δk^r = δw'/(w²Σ), δz' one of δk^θ = δz'/(|sin θ|
   /// Σ); t, φ, λ are themselves. So eps_abs bounds the local error of the Boyer–Lindquist x and k
-  /// as in the coordinate form (|sin θ| is floored at 1e-3 where the axis makes δθ meaningless).
+  /// as in the coordinate form. |sin θ| is floored at 1e-3 for rays through the axis (L = 0),
+  /// where δθ = δz/|sin θ| is meaningless, and at θ_min/2 otherwise: the polar turning point
+  /// sin²θ_min ≈ L²/(B + 2A) is resolved only if δz stays below ~|sin θ| there.
   void tolerance_inv_scale(const double* y, double* is) const {
     const double w2 = y[I::W] * y[I::W], z = f.polar.z(y[I::Z]), z2 = z * z;
     const double w2sigma = 1.0 + k.a2 * z2 * w2;  // w² Σ
-    const double st = std::sqrt(std::max(f.polar.sin2(y[I::Z]), 1e-6));
+    const double st = std::sqrt(std::max(f.polar.sin2(y[I::Z]), k.sin2_floor));
     const double q = 1.0 / (w2 * st * w2sigma);  // one division for all four
     is[I::T] = is[I::PHI] = is[I::LAM] = 1.0;
     is[I::W] = q * st * w2sigma;
     is[I::Z] = q * w2 * w2sigma;
     is[I::DW] = q * w2 * st;
     is[I::DZ] = q * w2 * w2;
+  }
+  /// Projection onto the polar first integral z'² = Z near the axis (Hairer, Lubich & Wanner,
+  /// "Geometric Numerical Integration", 2nd ed., §IV.4: one Newton step of the orthogonal
+  /// projection, here in the metric of the tolerance scales). Why: the ray's closest approach to
+  /// the axis is where Z = 0, i.e. sin²θ_min ≈ L²/(B + 2A); the integrated state keeps z'² − Z only
+  /// to the accumulated integration error, which for small |L| (θ_min ≲ 1e-4) exceeds L² itself —
+  /// the ray then misses its turning point, runs into the axis where φ' = L/sin²θ diverges, and
+  /// stalls (test RaysPassingCloseToTheAxisDoNotStall). Applied within sin²θ < 0.1 of the axis, to
+  /// rays with L ≠ 0; returns true when it changed y.
+  bool project_invariants(double* y) const {
+    if (k.axis) return false;
+    const double s2 = f.polar.sin2(y[I::Z]);
+    if (!(s2 < 0.1)) return false;
+    const double v = y[I::DZ], z = f.polar.z(y[I::Z]);
+    const double inv = v * v - k.Z_of_sin2(s2);                      // z'² − Z
+    const double gz = 2.0 * z * (k.B + 2.0 * k.A - 2.0 * k.A * s2);  // ∂(z'² − Z)/∂ζ = −dZ/ds2·ds2/dζ
+    const double gv = 2.0 * v;
+    double is[N];
+    tolerance_inv_scale(y, is);
+    const double dz2 = 1.0 / (is[I::Z] * is[I::Z]), dv2 = 1.0 / (is[I::DZ] * is[I::DZ]);
+    const double den = gz * gz * dz2 + gv * gv * dv2;
+    if (!(den > 0.0) || inv == 0.0) return false;
+    const double mu = inv / den;
+    y[I::Z] -= mu * gz * dz2;
+    y[I::DZ] -= mu * gv * dv2;
+    return true;
   }
   bool valid(const double* y) const {
     const double w = y[I::W];
