@@ -22,13 +22,13 @@
 // escape to r = ∞ is w → 0 at finite σ.
 //
 // The integrated state is y = (w, ζ, w', z', t, φ, λ) with ζ = z − p, p = ±1 the pole of the
-// hemisphere the ray is in (re-chosen whenever the ray crosses the equator, KerrMinoSystem::rebase).
-// z itself cannot carry a ray close to the axis: near z = ±1 its resolution is ulp(1) ≈ 1e-16, so
-// 1 − z² = sin²θ ≈ θ_min² keeps only ~log2(θ_min²/1e-16) bits (11 at θ_min = 7e-7). With z as the
-// state, φ' = L/(1 − z²) is then rounding noise at the 1e-4 level between the Runge–Kutta stages;
-// that noise dominates the error estimate of φ, the step control shrinks the step until h·z' is
-// below ulp(z), z freezes and the ray stalls near the axis until max_steps. ζ is small there and
-// has full relative precision, and 1 − z² = −ζ(2p + ζ) is computed without cancellation.
+// hemisphere the ray is in (re-chosen whenever the ray crosses the equator, KerrMinoSystem::rebase):
+// near z = ±1, z itself resolves 1 − z² = sin²θ only to ulp(1) ≈ 1e-16, ζ to full relative
+// precision. A ray with small L ≠ 0 turns at sin²θ_min ≈ L²/(B + 2A), where Z = z'² vanishes; that
+// turning point needs z'² − Z kept far below L², which the integration error does not do for
+// θ_min ≲ 1e-4 (the ray then runs past it towards the axis, φ' = L/sin²θ diverges, the steps
+// collapse: a stall). Hence, near the axis, the projection onto z'² = Z with Z as a function of
+// sin²θ (KerrMinoSystem::project_invariants) and a tolerance that resolves θ_min.
 // The right-hand side reads only the first
 // four, so the Runge–Kutta stages sum only those (rk_detail::stage, kCoupled), and it has the
 // form y'' = f(y) that RKN86 exploits. Every accepted step is handed to the caller in

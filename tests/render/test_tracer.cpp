@@ -637,14 +637,20 @@ TEST(Tracer, ConstraintAndErrorStopsGetTheirColours) {
   job.solver.box_ur = Vec4{{1e300, 100, 100, 100}};
   TraceStats st;
   {
-    // Escapes through the bounding box: background even with all special colours set.
+    // Escapes (empty scene: nothing to hit anywhere, so at once) or leaves the bounding box (a
+    // sky sphere beyond it): background even with all special colours set.
     RenderJob j = job;
     j.error_color = Color{1, 0, 0};
     j.constraint_color = Color{0, 1, 0};
     j.break_color = Color{0, 0, 1};
     const TraceResult r = Tracer(j).trace_direction(Vec3{1, 0, 0}, st);
-    EXPECT_EQ(r.reason, StopReason::BoundingBox);
+    EXPECT_EQ(r.reason, StopReason::Escaped);
     EXPECT_EQ(r.color, j.background);
+    static FlatShader white;
+    j.scene = std::make_shared<SkySphere>(1000, &white);
+    const TraceResult rb = Tracer(j).trace_direction(Vec3{1, 0, 0}, st);
+    EXPECT_EQ(rb.reason, StopReason::BoundingBox);
+    EXPECT_EQ(rb.color, j.background);
   }
   {
     // A constraint tolerance below rounding: g(k,k) = 0 cannot hold to 1e-300 after a curved
