@@ -9,7 +9,9 @@
 //   timelike:  --dir is the local 3-velocity β (|β| < 1); u = γ(e(0) + β^i e(i)), integrated
 //              towards the future in proper time.
 // CSV: header `lambda,x0,x1,x2,x3,k0,k1,k2,k3,constraint`, one line per accepted step starting with
-// the initial point (constraint = g(k,k) − target), then `# stop: REASON`. JSON carries the same.
+// the initial point (constraint = g(k,k) − target), then `# stop: REASON` (an escaped ray:
+// `# stop: escaped at radius R, lambda L`). JSON carries the same.
+// The start vector is checked: finite and null (timelike) to 1e-8 of its size.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -40,6 +42,8 @@ struct GeodesicArgs {
   double eps_rel = 0.0;
   std::string equations = "separable";
   int max_steps = 100000;
+  double escape_radius = 0.0;
+  bool no_escape = false;
   double lambda_max = std::numeric_limits<double>::infinity();
   bool forward = false;
   std::string format = "csv";
@@ -103,6 +107,9 @@ int run_geodesic(const GeodesicArgs& a) {
   cfg.separable = a.equations == "separable";
   cfg.max_steps = a.max_steps;
   cfg.lambda_max = a.lambda_max;
+  if (!(a.escape_radius >= 0.0) || !std::isfinite(a.escape_radius))
+    throw Error("--escape-radius: expected a finite number >= 0, found " + fmt(a.escape_radius));
+  cfg.escape_radius = a.no_escape ? std::numeric_limits<double>::infinity() : a.escape_radius;
   if (!(a.lambda_max > 0)) throw Error("--lambda-max: expected a number > 0, found " + fmt(a.lambda_max));
   if (a.max_steps < 1) throw Error("--max-steps: expected an integer >= 1, found " + std::to_string(a.max_steps));
   if (a.format != "csv" && a.format != "json") {
@@ -124,11 +131,35 @@ int run_geodesic(const GeodesicArgs& a) {
   Vec4 k;
   if (type == GeodesicType::Lightlike) {
     if (!(norm(d) > 0)) throw Error("--dir: expected a non-zero direction, found \"" + a.dir + "\"");
+    if (!std::isfinite(norm(d)))
+      throw Error("--dir: the length of the direction (" + a.dir +
+                  ") overflows in double precision; give components of moderate size (only the direction counts)");
     k = local_null_direction(e, d, /*past_directed=*/!a.forward);
   } else {
     if (!(norm(d) < 1.0))
       throw Error("--dir: expected a local 3-velocity with |v| < 1, found |v| = " + fmt(norm(d)));
     k = local_four_velocity(e, d);
+  }
+
+  // The start vector must be what --type says: finite, g(k,k) = target to 1e-8 of the size of
+  // its terms (a direction whose components under- or overflow the normalisation is not).
+  {
+    Mat4 g;
+    m->metric_tensor(x, g);
+    double gkk = 0, size = 0;
+    bool finite = true;
+    for (int i = 0; i < 4; ++i) {
+      finite = finite && std::isfinite(k[i]);
+      for (int j = 0; j < 4; ++j) {
+        gkk += g[i][j] * k[i] * k[j];
+        size += std::fabs(g[i][j] * k[i] * k[j]);
+      }
+    }
+    const double target = constraint_target(type);
+    if (!finite || !(std::fabs(gkk - target) <= 1e-8 * std::max(size, 1.0)))
+      throw Error(std::string("--dir: the start vector k = (") + fmt(k[0]) + ", " + fmt(k[1]) + ", " + fmt(k[2]) +
+                  ", " + fmt(k[3]) + ") is not " + (type == GeodesicType::Lightlike ? "null" : "a unit timelike vector") +
+                  ": g(k,k) = " + fmt(gkk) + " instead of " + fmt(target) + " (direction \"" + a.dir + "\")");
   }
 
   // ---- integrate, collecting points ----
@@ -176,6 +207,7 @@ int run_geodesic(const GeodesicArgs& a) {
                      {"constraint", p.constraint}});
     j["points"] = pts;
     j["stop"] = stop_reason_name(res.reason);
+    if (res.reason == StopReason::Escaped) j["escape"] = {{"radius", res.escape_radius}, {"lambda", res.lambda}};
     j["steps"] = res.steps;
     j["rejected"] = res.rejected;
     j["rhs_evals"] = res.rhs_evals;
@@ -189,7 +221,9 @@ int run_geodesic(const GeodesicArgs& a) {
     for (double v : p.y) os << ',' << fmt(v);
     os << ',' << fmt(p.constraint) << '\n';
   }
-  os << "# stop: " << stop_reason_name(res.reason) << '\n';
+  os << "# stop: " << stop_reason_name(res.reason);
+  if (res.reason == StopReason::Escaped) os << " at radius " << fmt(res.escape_radius) << ", lambda " << fmt(res.lambda);
+  os << '\n';
   std::cout << os.str();
   return 0;
 }
@@ -197,6 +231,19 @@ int run_geodesic(const GeodesicArgs& a) {
 void setup(CLI::App& app, GlobalOptions& g) {
   auto a = std::make_shared<GeodesicArgs>();
   CLI::App* sub = app.add_subcommand("geodesic", "integrate one geodesic and print every step (CSV or JSON)");
+  sub->footer(
+      "The last line says why the integration stopped:\n"
+      "  escaped         a light ray beyond --escape-radius, moving outward, that provably can no longer\n"
+      "                  turn back (outside the photon region of an asymptotically flat metric: Minkowski,\n"
+      "                  Schwarzschild and its other charts, KerrBL, ReissnerNordstrom, JanisNewmanWinicour,\n"
+      "                  MorrisThorne, Kottler with lambda = 0; the line gives its radius and lambda)\n"
+      "  horizon         left the validity domain of the coordinates (horizon, singularity, chart edge)\n"
+      "  bounding-box    left the bounding box\n"
+      "  lambda-max      reached --lambda-max\n"
+      "  max-steps       reached --max-steps accepted steps\n"
+      "  constraint      g(k,k) drifted beyond the constraint tolerance\n"
+      "  step-underflow  the step size control asked for a step below the minimal step\n"
+      "  not-finite      NaN or infinity appeared in the state");
   sub->add_option("--metric", a->metric, "metric name (see `geovis metrics`)")->required();
   sub->add_option("--param", a->params, "metric parameter KEY=VALUE (repeatable)")->allow_extra_args(false);
   sub->add_option("--pos", a->pos, "start position t,x1,x2,x3 in the metric's coordinates")->required();
@@ -214,6 +261,10 @@ void setup(CLI::App& app, GlobalOptions& g) {
       ->capture_default_str();
   sub->add_option("--max-steps", a->max_steps, "maximal number of accepted steps")->capture_default_str();
   sub->add_option("--lambda-max", a->lambda_max, "maximal affine parameter (proper time for timelike)");
+  sub->add_option("--escape-radius", a->escape_radius,
+                  "radius of the objects' bounding sphere: a light ray stops as escaped only beyond it")
+      ->capture_default_str();
+  sub->add_flag("--no-escape", a->no_escape, "never stop a ray as escaped (follow it to the other limits)");
   sub->add_flag("--forward", a->forward, "lightlike: trace towards the future instead of backwards in time");
   sub->add_option("--format", a->format, "csv or json")->capture_default_str();
   sub->callback([a, &g]() {

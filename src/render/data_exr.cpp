@@ -175,6 +175,7 @@ RayStop ray_stop(const PixelData& d) {
   if (!d.traced) return RayStop::NoRay;
   if (d.hit) return RayStop::Hit;
   switch (d.stop) {
+    case StopReason::Escaped: return RayStop::Escaped;  // left every object's bound for good
     case StopReason::Invalid: return RayStop::Horizon;  // the metric's break condition
     case StopReason::BoundingBox: return RayStop::Box;
     case StopReason::MaxSteps:

@@ -1,5 +1,6 @@
 #include "render/tracer.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -123,6 +124,19 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   cfg_.type = GeodesicType::Lightlike;
   cfg_.direction = 1.0;
   system_ = job.filter == Filter::RGBjac ? GeodesicSystem::Jacobi : GeodesicSystem::Geodesic;
+  // Escape (geodesic.h): nothing to hit beyond the scene's bounding sphere; an empty scene has
+  // none, an unbounded object (or unknown bounds) keeps every ray going.
+  cfg_.escape_radius = 0.0;
+  if (job.scene) {
+    const Bounds3 b = job.scene->bounds();
+    if (!b.empty()) {
+      double r2 = 0;
+      for (double x : {b.lo.x, b.hi.x})
+        for (double y : {b.lo.y, b.hi.y})
+          for (double z : {b.lo.z, b.hi.z}) r2 = std::max(r2, x * x + y * y + z * z);
+      cfg_.escape_radius = std::sqrt(r2);  // +inf for unbounded objects
+    }
+  }
   point_lights_ = job.metric->name() == "Minkowski" && job.lights.shadows && !job.lights.lights.empty();
 }
 
@@ -294,6 +308,7 @@ Color Tracer::stop_color(StopReason reason) const {
     case StopReason::NotFinite: return job_.error_color.value_or(job_.background);
     case StopReason::None:
     case StopReason::Callback:
+    case StopReason::Escaped:
     case StopReason::BoundingBox:
     case StopReason::LambdaMax:
     case StopReason::MaxSteps: break;

@@ -65,7 +65,8 @@ class Tracer {
   ///  - Constraint (the null constraint drifted): cstrcolor, else black (GeoViS);
   ///  - StepUnderflow / NotFinite (integration error): errcolor, else the background (GeoViS
   ///    gives a step-size break the background; its errcolor is for rays that cannot start);
-  ///  - BoundingBox, MaxSteps, LambdaMax (the ray escaped or ran out of budget): the background.
+  ///  - Escaped, BoundingBox, MaxSteps, LambdaMax (the ray escaped or ran out of budget): the
+  ///    background.
   Color stop_color(StopReason reason) const;
   static constexpr int kMaxRefineLevels = 16;
 

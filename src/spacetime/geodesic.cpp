@@ -123,6 +123,7 @@ const char* stop_reason_name(StopReason r) {
     case StopReason::Constraint: return "constraint";
     case StopReason::StepUnderflow: return "step-underflow";
     case StopReason::NotFinite: return "not-finite";
+    case StopReason::Escaped: return "escaped";
   }
   return "?";
 }

@@ -84,6 +84,12 @@ struct SolverConfig {
   /// right-hand side; the tolerances are scaled to keep their meaning in Boyer–Lindquist
   /// coordinates. false: the second-order geodesic equation in coordinates (GeoViS's form).
   bool separable = true;
+  /// Escape (StopReason::Escaped): no object lies farther than this from the origin (distance |p|
+  /// in the metric's pseudo-Cartesian coordinates, metric.h). A ray beyond it that provably can no
+  /// longer turn back (it moves outward outside the photon region of an asymptotically flat
+  /// metric, spacetime/escape.h) stops there. The renderer sets the scene's bounding sphere;
+  /// +∞ (default): never; 0: as soon as the ray cannot turn back.
+  double escape_radius = std::numeric_limits<double>::infinity();
 };
 
 enum class StopReason {
@@ -96,6 +102,7 @@ enum class StopReason {
   Constraint,     ///< normalization constraint drifted beyond tolerance
   StepUnderflow,  ///< the step size control asked for a step below step_min
   NotFinite,      ///< NaN/Inf appeared in the state
+  Escaped,        ///< beyond SolverConfig::escape_radius, moving outward, can no longer turn back
 };
 const char* stop_reason_name(StopReason r);
 
@@ -121,6 +128,7 @@ struct GeodesicResult {
   long rhs_evals = 0;     ///< right-hand-side evaluations
   double lambda = 0;      ///< final affine parameter
   double constraint_drift = 0;  ///< final g(k,k) - target
+  double escape_radius = 0;     ///< Escaped: the radius (as SolverConfig::escape_radius) at the stop
 };
 
 /// Hermite-cubic position/direction at fraction s in [0,1] of an accepted step (exact to

@@ -773,6 +773,19 @@ struct MetricSystem {
       if (!(y[i] >= c.box_ll[i] && y[i] <= c.box_ur[i])) return false;
     return true;
   }
+  /// Escape of a light ray (geodesic.h StopReason::Escaped): an asymptotically flat metric
+  /// provides `bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const`
+  /// (spacetime/escape.h), true when x lies beyond radius r_min (radius = its |p|) and the light
+  /// ray there, moving along k, can no longer turn back. The ray moves along direction·k.
+  bool escaped(const SolverConfig& c, const double* y, double& radius) const {
+    if constexpr (requires(const Vec4& v, double& r) { m.escapes(v, v, 0.0, r); }) {
+      if (c.type != GeodesicType::Lightlike || !(c.escape_radius < INFINITY)) return false;
+      const double s = c.direction >= 0 ? 1.0 : -1.0;
+      return m.escapes(Vec4{{y[0], y[1], y[2], y[3]}}, Vec4{{s * y[4], s * y[5], s * y[6], s * y[7]}},
+                       c.escape_radius, radius);
+    }
+    return false;
+  }
   /// value = g(k,k) − target; scale = a positive-definite size of k (never below |target|), so the
   /// constraint test |value| <= constraint_tol·scale is relative and stays meaningful where k^0
   /// diverges (horizons) and where the terms of g(k,k) are small or cancel (off-diagonal metrics).
@@ -887,7 +900,12 @@ void validate_solver_config(const SolverConfig& cfg);
 /// Integrates y' = f(y) with stepper St. Per attempt: a trial state that is not finite or lies
 /// outside the validity domain is rejected like a step with too large an error (adaptive: the
 /// step shrinks; fixed step: the integration stops). Per accepted step, in this order: constraint
-/// test (a step that broke the constraint is not reported), callback, bounding box, λ_max. Before
+/// test (a step that broke the constraint is not reported; before it, a system may project the
+/// state onto its first integrals: `bool project_invariants(double* y) const`, kerr_mino.h),
+/// callback, re-basing of the state
+/// (`void rebase(double* y)`, systems whose variables are relative to a moving origin, kerr_mino.h),
+/// bounding box, λ_max, escape (`bool escaped(const SolverConfig&, const double* y, double&
+/// radius) const`, systems that can tell; geodesic.h SolverConfig::escape_radius). Before
 /// each attempt: max_steps. A ray that runs into the edge of the validity domain stops with
 /// Invalid once the edge is located to 1/1024 of the first step that crossed it. Step underflow (|h| < step_min or |h| below the resolution of λ)
 /// stops with StepUnderflow, or with Invalid / NotFinite when the rejected trials were leaving the
@@ -1029,7 +1047,9 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
     }
     // Accepted.
     if (cfg.reproject) sys.reproject(y1, cfg.type);
-    if (!have_dy1 || cfg.reproject) {
+    bool projected = false;
+    if constexpr (requires { sys.project_invariants(y1); }) projected = sys.project_invariants(y1);
+    if (!have_dy1 || cfg.reproject || projected) {
       sys(y1, dy1);
       ++res.rhs_evals;
     }
@@ -1047,10 +1067,14 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
       dy[i] = dy1[i];
     }
     lambda = lambda1;
+    if constexpr (requires { sys.rebase(y); }) sys.rebase(y);
     set_tolerance();
     if (act == StepAction::Stop) return finish(StopReason::Callback);
     if (!sys.inside(cfg, y)) return finish(StopReason::BoundingBox);
     if (clipped) return finish(StopReason::LambdaMax);
+    if constexpr (requires { sys.escaped(cfg, y, res.escape_radius); }) {
+      if (sys.escaped(cfg, y, res.escape_radius)) return finish(StopReason::Escaped);
+    }
     if (adaptive) h = std::min(hmax, std::max(stepper.next_step(hstep, err, true, after_reject), hmin));
     if (!adaptive && kOwnAffine) h = std::fabs(cfg.step_size) * per_affine(y);
     if (!after_reject) h_cross = 0.0;  // two clean steps in a row: away from any boundary

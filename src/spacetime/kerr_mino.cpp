@@ -27,8 +27,8 @@ KerrMinoConstants kerr_mino_constants(double M, double a, const Vec4& x, const V
   // Carter constant (Carter 1968): Q = p_θ² + cos²θ (a²(μ² − E²) + L²/sin²θ).
   auto carter = [&] { return ptheta * ptheta + ct2 * (a2 * (mu2 - c.E * c.E) + c.L * c.L / st2); };
   c.Q = carter();
-  // Closest approach to the axis below 1e-6 rad: through the axis (kerr_mino.h).
-  if (std::fabs(c.L) <= 1e-6 * std::sqrt(std::fabs(c.Q) + a2 * c.E * c.E + c.L * c.L)) {
+  // Closest approach to the axis below 1e-12 rad: through the axis (kerr_mino.h).
+  if (std::fabs(c.L) <= 1e-12 * std::sqrt(std::fabs(c.Q) + a2 * c.E * c.E + c.L * c.L)) {
     c.L = 0.0;
     c.Q = carter();
   }
@@ -36,17 +36,18 @@ KerrMinoConstants kerr_mino_constants(double M, double a, const Vec4& x, const V
   return c;
 }
 
-void kerr_mino_from_bl(const KerrMinoConstants& c, const Vec4& x, const Vec4& k, double lambda, double* y) {
+PolarOffset kerr_mino_from_bl(const KerrMinoConstants& c, const Vec4& x, const Vec4& k, double lambda, double* y) {
   using I = KerrMinoRHS;
   const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]);
   const double sigma = r * r + c.a2 * ct * ct;
   y[I::T] = x[0];
   y[I::W] = 1.0 / r;
-  y[I::Z] = ct;
+  const PolarOffset polar = PolarOffset::through(x[2], y[I::Z]);
   y[I::PHI] = x[3];
   y[I::LAM] = lambda;
   y[I::DW] = -sigma * k[1] / (r * r);  // dw/dσ = −(dr/dσ)/r², dr/dσ = Σ k^r
   y[I::DZ] = -st * sigma * k[2];       // dz/dσ = −sin θ Σ k^θ
+  return polar;
 }
 
 ThetaBranch ThetaBranch::through(double theta) {
@@ -64,19 +65,20 @@ void ThetaBranch::cross_axis(double z) {
   sign = -sign;
 }
 
-void kerr_mino_to_bl(const KerrMinoConstants& c, const double* y, const double* dy, const ThetaBranch& b, Vec4& x,
-                     Vec4& k, Vec4* dk) {
+void kerr_mino_to_bl(const KerrMinoConstants& c, const PolarOffset& polar, const double* y, const double* dy,
+                     const ThetaBranch& b, Vec4& x, Vec4& k, Vec4* dk) {
   using I = KerrMinoRHS;
-  const double w = y[I::W], z = std::clamp(y[I::Z], -1.0, 1.0), dw = y[I::DW], dz = y[I::DZ];
+  const double w = y[I::W], z = std::clamp(polar.z(y[I::Z]), -1.0, 1.0), dw = y[I::DW], dz = y[I::DZ];
   const double r = 1.0 / w;
-  const double s_abs = std::sqrt(std::max(0.0, (1.0 - z) * (1.0 + z)));  // |sin θ|
+  const double s2_raw = polar.sin2(y[I::Z]);
+  const double s_abs = std::sqrt(std::max(0.0, s2_raw));  // |sin θ|
   const double sigma = r * r + c.a2 * z * z, isig = 1.0 / sigma;
   // dθ/dσ = −s·z'/|sin θ|. For L = 0, Z = (1 − z²)(Q + Az²), so |z'|/|sin θ| = √(Q + Az²): used
   // instead, since near the axis, which such a ray passes, 1 − z² has lost its leading digits.
   const double dth = c.axis ? -b.sign * std::copysign(std::sqrt(std::max(0.0, c.Q + c.A * z * z)), dz)
                             : -b.sign * dz / s_abs;
   const double dr = -dw * r * r;  // dr/dσ
-  x = Vec4{{y[I::T], r, b.offset + b.sign * std::acos(z), y[I::PHI]}};
+  x = Vec4{{y[I::T], r, b.offset + b.sign * polar.acos_z(y[I::Z]), y[I::PHI]}};
   k = Vec4{{dy[I::T] * isig, dr * isig, dth * isig, dy[I::PHI] * isig}};
   if (!dk) return;
   // dk^μ/dλ = (x^μ'' Σ − x^μ' Σ')/Σ³ with ' = d/dσ, from the Mino derivatives (file comment):
@@ -91,7 +93,7 @@ void kerr_mino_to_bl(const KerrMinoConstants& c, const double* y, const double* 
   const double den = w2 * D, dden = 2.0 * w * D + w2 * dD;
   const double iD = 1.0 / D;
   const double dT_dw = (dNt - Nt * dden / den) / den, dT_dz = 2.0 * c.a2 * c.E * z;
-  const double s2 = std::max((1.0 - z) * (1.0 + z), 1e-300);
+  const double s2 = std::max(s2_raw, 1e-300);
   const double dPhi_dw = c.a * (dP - P * dD * iD) * iD, dPhi_dz = c.axis ? 0.0 : 2.0 * c.L * z / (s2 * s2);
   const double ddt = dT_dw * dw + dT_dz * dz, ddph = dPhi_dw * dw + dPhi_dz * dz;
   const double dsig = 2.0 * r * dr + 2.0 * c.a2 * z * dz;

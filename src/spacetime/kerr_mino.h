@@ -21,7 +21,15 @@
 // root and one division per evaluation; E, L and Q are exact by construction, and a light ray's
 // escape to r = ∞ is w → 0 at finite σ.
 //
-// The integrated state is y = (w, z, w', z', t, φ, λ): the right-hand side reads only the first
+// The integrated state is y = (w, ζ, w', z', t, φ, λ) with ζ = z − p, p = ±1 the pole of the
+// hemisphere the ray is in (re-chosen whenever the ray crosses the equator, KerrMinoSystem::rebase):
+// near z = ±1, z itself resolves 1 − z² = sin²θ only to ulp(1) ≈ 1e-16, ζ to full relative
+// precision. A ray with small L ≠ 0 turns at sin²θ_min ≈ L²/(B + 2A), where Z = z'² vanishes; that
+// turning point needs z'² − Z kept far below L², which the integration error does not do for
+// θ_min ≲ 1e-4 (the ray then runs past it towards the axis, φ' = L/sin²θ diverges, the steps
+// collapse: a stall). Hence, near the axis, the projection onto z'² = Z with Z as a function of
+// sin²θ (KerrMinoSystem::project_invariants) and a tolerance that resolves θ_min.
+// The right-hand side reads only the first
 // four, so the Runge–Kutta stages sum only those (rk_detail::stage, kCoupled), and it has the
 // form y'' = f(y) that RKN86 exploits. Every accepted step is handed to the caller in
 // Boyer–Lindquist (x, k, dk/dλ), so callers (the renderer's segment tests, the data filters) see
@@ -29,10 +37,10 @@
 // Rays through the polar axis (L = 0: z turns at ±1) continue with θ < 0 (through the north pole)
 // or θ > π (south) at the same φ, as the coordinate integration does: θ = θ_off + s·acos z with the
 // branch (s, θ_off) switched at every passage. The ray's closest approach to the axis is
-// θ_min ≈ |L|/√(Q + a²E² + L²); below 1e-6 rad, 1 − z² = sin²θ is no longer resolved in double
-// precision near the turning point, so L is set to 0 there (the ray passes through the axis
-// instead of 1e-6 rad beside it: a displacement of r·1e-6 near the pole, where the coordinate
-// form, with k^φ ∝ 1/sin²θ ~ 1e12, fares no better).
+// θ_min ≈ |L|/√(Q + a²E² + L²); φ turns by ~π within Δσ ≈ θ_min/√Q around it. Below θ_min = 1e-12
+// that interval is no longer resolved by the Mino time σ (O(1/r_min), resolution ~1e-16 σ), so L is
+// set to 0 there: the ray passes through the axis instead of 1e-12 rad beside it, a displacement
+// of r·1e-12.
 #pragma once
 
 #include <cmath>
@@ -52,6 +60,7 @@ struct KerrMinoConstants {
   double E = 0, L = 0, Q = 0, mu2 = 0;
   double c = 0, K = 0, A = 0, B = 0;  ///< c = a²E − aL, K = (L − aE)² + Q, A = a²(E² − μ²), B = Q + L² − A
   bool axis = false;                  ///< L == 0: the ray can pass through the polar axis
+  double sin2_floor = 1e-6;           ///< floor of sin²θ in the tolerance scales (KerrMinoSystem)
 
   /// The potentials of the first integrals (file comment): (dw/dσ)² = W(w), (dz/dσ)² = Z(z).
   double W(double w) const {
@@ -62,6 +71,31 @@ struct KerrMinoConstants {
     const double z2 = z * z;
     return Q - B * z2 - A * z2 * z2;
   }
+  /// Z as a function of sin²θ = 1 − z²: Z = −L² + (B + 2A) sin²θ − A sin⁴θ (Q − B − A = −L²).
+  /// Near the axis, where Z and sin²θ are small, this keeps full relative precision (Z(z) is
+  /// there a difference of terms of size Q).
+  double Z_of_sin2(double s2) const { return -L * L + (B + 2.0 * A - A * s2) * s2; }
+
+  /// Escape test (escape.h): no radial turning point at any radius beyond r (> 0). R(r) = r⁴ W(1/r)
+  /// is the quartic (Carter 1968; MTW eq. 33.32)
+  ///   R(r) = (E² − μ²) r⁴ + 2Mμ² r³ + (2Ec − a²μ² − K) r² + 2MK r + c² − a²K,
+  /// so R''' = 24(E² − μ²) r + 12Mμ² > 0 for r > 0 when E² ≥ μ² (an unbound orbit; E² < μ² makes
+  /// R → −∞: the geodesic always turns back). Then R'' is increasing, and R''(r) > 0, R'(r) > 0,
+  /// R(r) > 0 give R'' > 0, R' > 0 and R > R(r) > 0 on all of (r, ∞) in turn: (dr/dσ)² = R never
+  /// vanishes there, and an outward geodesic at r goes to r = ∞. For a = 0 and light this holds
+  /// at every r > 3M (outside the photon sphere): R ≥ 0 means K ≤ E²r³/(r − 2M), whence
+  /// R' = 4E²r³ − 2K(r − M) ≥ 2E²r³(r − 3M)/(r − 2M) > 0 and R'' = 12E²r² − 2K ≥ 2E²r²(5r − 12M)/(r − 2M) > 0;
+  /// for a ≠ 0 it holds from about r ≳ √(K/E²) on, i.e. right after the periastron of a ray that
+  /// passes far outside the photon region (test Escape.KerrTestIsSafeAndPrompt).
+  bool no_radial_turning_point_beyond(double r) const {
+    const double c4 = E * E - mu2, c3 = 2.0 * M * mu2, c2 = 2.0 * E * c - a2 * mu2 - K, c1 = 2.0 * M * K,
+                 c0 = c * c - a2 * K;
+    if (!(c4 >= 0.0)) return false;
+    const double R = (((c4 * r + c3) * r + c2) * r + c1) * r + c0;
+    const double dR = ((4.0 * c4 * r + 3.0 * c3) * r + 2.0 * c2) * r + c1;
+    const double ddR = (12.0 * c4 * r + 6.0 * c3) * r + 2.0 * c2;
+    return R > 0.0 && dR > 0.0 && ddR > 0.0;
+  }
 
   void derive() {
     a2 = a * a;
@@ -70,23 +104,49 @@ struct KerrMinoConstants {
     A = a2 * (E * E - mu2);
     B = Q + L * L - A;
     axis = L == 0.0;
+    // (θ_min/2)² with sin²θ_min ≈ L²/(B + 2A) (first order in L² of Z = 0, Z_of_sin2), at most 1e-6.
+    sin2_floor = axis || !(B + 2.0 * A > 0.0) ? 1e-6 : std::min(1e-6, 0.25 * L * L / (B + 2.0 * A));
   }
 };
 
-/// Right-hand side of the Mino-time system; state y = (w, z, w', z', t, φ, λ).
+/// The polar position cos θ as its distance ζ = z − pole from the nearer pole (file comment).
+struct PolarOffset {
+  double pole = 1.0;  ///< +1 (north, z ≥ 0) or −1 (south)
+  double z(double zeta) const { return pole + zeta; }
+  /// sin²θ = 1 − z² = −ζ(2p + ζ), without cancellation near the pole.
+  double sin2(double zeta) const { return -zeta * (2.0 * pole + zeta); }
+  /// acos z ∈ [0, π], accurate near the poles: 1 ∓ z = 2 sin²(θ/2) resp. 2 cos²(θ/2) (clamped,
+  /// for the L = 0 rays that overshoot the pole by the integration error).
+  double acos_z(double zeta) const {
+    constexpr double kPi = 3.14159265358979323846;
+    const double half = 2.0 * std::asin(std::sqrt(std::clamp(-pole * zeta * 0.5, 0.0, 1.0)));
+    return pole > 0.0 ? half : kPi - half;
+  }
+  /// The offset through z (the nearer pole) and ζ for θ, with 1 ∓ cos θ from sin²(θ/2) / cos²(θ/2).
+  static PolarOffset through(double theta, double& zeta) {
+    PolarOffset o;
+    const double sh = std::sin(0.5 * theta), ch = std::cos(0.5 * theta);
+    o.pole = std::cos(theta) >= 0.0 ? 1.0 : -1.0;
+    zeta = o.pole > 0.0 ? -2.0 * sh * sh : 2.0 * ch * ch;  // cos θ − 1 = −2 sin²(θ/2), cos θ + 1 = 2 cos²(θ/2)
+    return o;
+  }
+};
+
+/// Right-hand side of the Mino-time system; state y = (w, ζ, w', z', t, φ, λ), z = pole + ζ.
 struct KerrMinoRHS {
   static constexpr int N = 7;
   static constexpr int kCoupled = 4;  ///< t, φ, λ are quadratures: no derivative depends on them
   enum { W = 0, Z = 1, DW = 2, DZ = 3, T = 4, PHI = 5, LAM = 6 };
   const KerrMinoConstants& k;
+  PolarOffset polar;
 
   GEOVIS_HOT_INLINE void operator()(const double* y, double* dy) const {
-    const double w = y[W], z = y[Z];
+    const double w = y[W], z = polar.z(y[Z]);
     const double w2 = w * w, z2 = z * z;
     const double D = 1.0 - 2.0 * k.M * w + k.a2 * w2;  // Δ/r²
     const double P = k.E + k.c * w2;                   // P/r²
     const double muK = k.mu2 + k.K * w2;
-    const double s2 = 1.0 - z2;                        // sin²θ
+    const double s2 = polar.sin2(y[Z]);                // sin²θ
     // One division: 1/(w² D s²) gives 1/D, 1/w² and 1/sin²θ.
     double inv, iD, iw2, is2;
     if (k.axis) {
@@ -137,17 +197,19 @@ struct KerrMinoSystem {
   double affine(const double* y) const { return y[I::LAM]; }
   /// dσ/dλ = 1/Σ at y: converts the caller's step sizes, given in λ.
   double param_per_affine(const double* y) const {
-    const double w = y[I::W], z = y[I::Z];
+    const double w = y[I::W], z = f.polar.z(y[I::Z]);
     return w * w / (1.0 + k.a2 * z * z * w * w);
   }
   /// Tolerance scales (ErrorScale), as their reciprocals 1/s_i: an error δw is an error δr =
   /// δw/w², δz one of δθ = δz/|sin θ|, δw' one of δk^r = δw'/(w²Σ), δz' one of δk^θ = δz'/(|sin θ|
   /// Σ); t, φ, λ are themselves. So eps_abs bounds the local error of the Boyer–Lindquist x and k
-  /// as in the coordinate form (|sin θ| is floored at 1e-3 where the axis makes δθ meaningless).
+  /// as in the coordinate form. |sin θ| is floored at 1e-3 for rays through the axis (L = 0),
+  /// where δθ = δz/|sin θ| is meaningless, and at θ_min/2 otherwise: the polar turning point
+  /// sin²θ_min ≈ L²/(B + 2A) is resolved only if δz stays below ~|sin θ| there.
   void tolerance_inv_scale(const double* y, double* is) const {
-    const double w2 = y[I::W] * y[I::W], z2 = y[I::Z] * y[I::Z];
+    const double w2 = y[I::W] * y[I::W], z = f.polar.z(y[I::Z]), z2 = z * z;
     const double w2sigma = 1.0 + k.a2 * z2 * w2;  // w² Σ
-    const double st = std::sqrt(std::max(1.0 - z2, 1e-6));
+    const double st = std::sqrt(std::max(f.polar.sin2(y[I::Z]), k.sin2_floor));
     const double q = 1.0 / (w2 * st * w2sigma);  // one division for all four
     is[I::T] = is[I::PHI] = is[I::LAM] = 1.0;
     is[I::W] = q * st * w2sigma;
@@ -155,12 +217,56 @@ struct KerrMinoSystem {
     is[I::DW] = q * w2 * st;
     is[I::DZ] = q * w2 * w2;
   }
+  /// Projection onto the polar first integral z'² = Z near the axis (Hairer, Lubich & Wanner,
+  /// "Geometric Numerical Integration", 2nd ed., §IV.4: one Newton step of the orthogonal
+  /// projection, here in the metric of the tolerance scales). Why: the ray's closest approach to
+  /// the axis is where Z = 0, i.e. sin²θ_min ≈ L²/(B + 2A); the integrated state keeps z'² − Z only
+  /// to the accumulated integration error, which for small |L| (θ_min ≲ 1e-4) exceeds L² itself —
+  /// the ray then misses its turning point, runs into the axis where φ' = L/sin²θ diverges, and
+  /// stalls (test RaysPassingCloseToTheAxisDoNotStall). Applied within sin²θ < 0.1 of the axis, to
+  /// rays with L ≠ 0; returns true when it changed y.
+  bool project_invariants(double* y) const {
+    if (k.axis) return false;
+    const double s2 = f.polar.sin2(y[I::Z]);
+    if (!(s2 < 0.1)) return false;
+    const double v = y[I::DZ], z = f.polar.z(y[I::Z]);
+    const double inv = v * v - k.Z_of_sin2(s2);                      // z'² − Z
+    const double gz = 2.0 * z * (k.B + 2.0 * k.A - 2.0 * k.A * s2);  // ∂(z'² − Z)/∂ζ = −dZ/ds2·ds2/dζ
+    const double gv = 2.0 * v;
+    double is[N];
+    tolerance_inv_scale(y, is);
+    const double dz2 = 1.0 / (is[I::Z] * is[I::Z]), dv2 = 1.0 / (is[I::DZ] * is[I::DZ]);
+    const double den = gz * gz * dz2 + gv * gv * dv2;
+    if (!(den > 0.0) || inv == 0.0) return false;
+    const double mu = inv / den;
+    y[I::Z] -= mu * gz * dz2;
+    y[I::DZ] -= mu * gv * dv2;
+    return true;
+  }
   bool valid(const double* y) const {
-    const double w = y[I::W], z = y[I::Z];
+    const double w = y[I::W];
     if (!(w > 0.0 && w < w_break)) return false;  // w ≤ 0: beyond r = ∞
     // On the axis branch z oscillates through ±1 with amplitude 1 up to the integration error
     // (z'' is smooth there; the BL view clamps z), so only a gross overshoot is invalid.
-    return k.axis ? std::fabs(z) <= 1.0 + 1e-3 : std::fabs(z) < 1.0;
+    return k.axis ? std::fabs(f.polar.z(y[I::Z])) <= 1.0 + 1e-3 : f.polar.sin2(y[I::Z]) > 0.0;
+  }
+  /// Escape (integrators.h, escape.h): beyond SolverConfig::escape_radius (|p| = r in BL), moving
+  /// outward in the direction of integration, with no radial turning point left.
+  bool escaped(const SolverConfig& c, const double* y, double& radius) const {
+    const double w = y[I::W];
+    if (!(w * c.escape_radius < 1.0)) return false;
+    const double outward = (c.direction >= 0 ? -1.0 : 1.0) * y[I::DW];  // ∝ dr/dσ = −w'/w²
+    if (!(outward > 0.0) || !k.no_radial_turning_point_beyond(1.0 / w)) return false;
+    radius = 1.0 / w;
+    return true;
+  }
+  /// After an accepted step: a ray that crossed the equator is re-expressed relative to the other
+  /// pole, ζ ← ζ + 2p (the derivative, z', is unchanged; the step's endpoints were reported in the
+  /// old offset).
+  void rebase(double* y) {
+    if (std::fabs(y[I::Z]) <= 1.0) return;
+    y[I::Z] += 2.0 * f.polar.pole;
+    f.polar.pole = -f.polar.pole;
   }
   /// The scene's bounding box in BL coordinates: r_min ≤ r ≤ r_max as w_lo ≤ w ≤ w_hi (set by
   /// set_box), θ only when the box limits it (θ on the current branch, see ThetaBranch).
@@ -179,7 +285,7 @@ struct KerrMinoSystem {
           y[I::PHI] >= c.box_ll[3] && y[I::PHI] <= c.box_ur[3]))
       return false;
     if (!theta_boxed) return true;
-    const double th = branch->offset + branch->sign * std::acos(std::clamp(y[I::Z], -1.0, 1.0));
+    const double th = branch->offset + branch->sign * f.polar.acos_z(y[I::Z]);
     return th >= c.box_ll[2] && th <= c.box_ur[2];
   }
   /// value = g(k,k) + μ² of the Boyer–Lindquist tangent this state stands for,
@@ -187,11 +293,11 @@ struct KerrMinoSystem {
   /// scale = the same with the absolute values of the terms that cancel (the radial and polar
   /// kinetic and potential terms; the constraint test is relative to it, as MetricSystem's).
   void constraint(const double* y, GeodesicType, double& value, double& scale) const {
-    const double w = y[I::W], z = y[I::Z], dw = y[I::DW], dz = y[I::DZ];
+    const double w = y[I::W], z = f.polar.z(y[I::Z]), dw = y[I::DW], dz = y[I::DZ];
     const double w2 = w * w, z2 = z * z;
     const double D = 1.0 - 2.0 * k.M * w + k.a2 * w2, P = k.E + k.c * w2;
     const double Wv = k.W(w), Zv = k.Z(z);
-    const double s2 = std::max(1.0 - z2, 1e-300);
+    const double s2 = std::max(f.polar.sin2(y[I::Z]), 1e-300);
     const double wD = w2 * std::fabs(D);
     // One division: 1/(w²|D| (1 − z²) Σ), w²Σ = 1 + a²z²w².
     const double inv = w2 / (wD * s2 * (1.0 + k.a2 * z2 * w2));
@@ -203,7 +309,7 @@ struct KerrMinoSystem {
   }
   /// Re-projection onto the first integrals: |w'| = √W, |z'| = √Z (signs kept).
   void reproject(double* y, GeodesicType) const {
-    const double Wv = k.W(y[I::W]), Zv = k.Z(y[I::Z]);
+    const double Wv = k.W(y[I::W]), Zv = k.Z(f.polar.z(y[I::Z]));
     if (Wv >= 0.0) y[I::DW] = std::copysign(std::sqrt(Wv), y[I::DW]);
     if (Zv >= 0.0) y[I::DZ] = std::copysign(std::sqrt(Zv), y[I::DZ]);
   }
@@ -212,12 +318,12 @@ struct KerrMinoSystem {
 /// Constants of the Kerr geodesic through BL point x with tangent k (M, a of the hole); mu2 =
 /// −g(k,k) target. k may be past-directed (E < 0): the equations are even in (E, L, k).
 KerrMinoConstants kerr_mino_constants(double M, double a, const Vec4& x, const Vec4& k, double mu2);
-/// BL (x, k) → Mino state (w, z, w', z', t, φ, λ).
-void kerr_mino_from_bl(const KerrMinoConstants& c, const Vec4& x, const Vec4& k, double lambda, double* y);
-/// Mino state and its derivative → BL (x, k) on θ branch b, and dk/dλ (the geodesic
-/// acceleration, from the Mino derivatives) when dk is given.
-void kerr_mino_to_bl(const KerrMinoConstants& c, const double* y, const double* dy, const ThetaBranch& b, Vec4& x,
-                     Vec4& k, Vec4* dk = nullptr);
+/// BL (x, k) → Mino state (w, ζ, w', z', t, φ, λ) and the pole ζ is measured from.
+PolarOffset kerr_mino_from_bl(const KerrMinoConstants& c, const Vec4& x, const Vec4& k, double lambda, double* y);
+/// Mino state (ζ relative to `polar`) and its derivative → BL (x, k) on θ branch b, and dk/dλ
+/// (the geodesic acceleration, from the Mino derivatives) when dk is given.
+void kerr_mino_to_bl(const KerrMinoConstants& c, const PolarOffset& polar, const double* y, const double* dy,
+                     const ThetaBranch& b, Vec4& x, Vec4& k, Vec4* dk = nullptr);
 
 /// Integrates a Kerr (a = 0: Schwarzschild) geodesic given in Boyer–Lindquist (x, k) =
 /// y_io[0..7] in Mino time and reports it in BL terms: same SolverConfig meaning (tolerances apply
@@ -230,15 +336,16 @@ inline GeodesicResult integrate_kerr_mino(double M, double a, double r_break, co
   const Vec4 k0{{y_io[4], y_io[5], y_io[6], y_io[7]}};
   const double mu2 = -constraint_target(cfg.type);
   const KerrMinoConstants c = kerr_mino_constants(M, a, x0, k0, mu2);
-  KerrMinoSystem sys{c, KerrMinoRHS{c}, 1.0 / r_break};
   double y[KerrMinoRHS::N];
-  kerr_mino_from_bl(c, x0, k0, lambda0, y);
+  const PolarOffset polar0 = kerr_mino_from_bl(c, x0, k0, lambda0, y);
+  KerrMinoSystem sys{c, KerrMinoRHS{c, polar0}, 1.0 / r_break};
   ThetaBranch branch = ThetaBranch::through(x0[2]);
   sys.set_box(cfg, branch);
   // A turning point of z at the axis (L = 0) inside step s: the ray went through the pole.
   auto track_axis = [&](const StepView& s) {
     using I = KerrMinoRHS;
-    if (c.axis && s.y0[I::DZ] * s.y1[I::DZ] < 0.0 && s.y1[I::Z] * s.y1[I::DZ] < 0.0) branch.cross_axis(s.y1[I::Z]);
+    const double z1 = sys.f.polar.z(s.y1[I::Z]);
+    if (c.axis && s.y0[I::DZ] * s.y1[I::DZ] < 0.0 && z1 * s.y1[I::DZ] < 0.0) branch.cross_axis(z1);
   };
 
   // BL view of the previous step end (the start of the next step).
@@ -246,7 +353,7 @@ inline GeodesicResult integrate_kerr_mino(double M, double a, double r_break, co
   bool have0 = false;
   auto to_bl = [&](const double* ym, const double* dym, double* bl, double* dbl) {
     Vec4 x, kk, acc;
-    kerr_mino_to_bl(c, ym, dym, branch, x, kk, &acc);
+    kerr_mino_to_bl(c, sys.f.polar, ym, dym, branch, x, kk, &acc);
     for (int i = 0; i < 4; ++i) {
       bl[i] = x[i];
       bl[4 + i] = kk[i];
@@ -278,7 +385,7 @@ inline GeodesicResult integrate_kerr_mino(double M, double a, double r_break, co
   double dy[KerrMinoRHS::N];
   sys(y, dy);
   Vec4 x, kk;
-  kerr_mino_to_bl(c, y, dy, branch, x, kk);
+  kerr_mino_to_bl(c, sys.f.polar, y, dy, branch, x, kk);
   for (int i = 0; i < 4; ++i) {
     y_io[i] = x[i];
     y_io[4 + i] = kk[i];

@@ -130,6 +130,9 @@ class Metric {
   /// y'' = f(y) when cfg.separable is set (KerrBL, Schwarzschild: spacetime/kerr_mino.h), which
   /// is what the RKN86 solver needs.
   virtual bool has_separable_geodesics() const { return false; }
+  /// Asymptotically flat, with a proven test for light rays that can no longer turn back
+  /// (StopReason::Escaped, spacetime/escape.h); declared by the metric (MetricCRTP).
+  virtual bool asymptotically_flat() const { return false; }
 
  protected:
   /// Called after a parameter changed: read values into members and check cross-parameter

@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "spacetime/escape.h"
 #include "spacetime/fast_math.h"
 #include "spacetime/integrators.h"
 #include "spacetime/jacobi.h"
@@ -75,6 +76,12 @@ class MetricCRTP : public Metric {
   /// form reports).
   static constexpr bool kSeparable = requires(const M& m) { m.kerr_mino_params(); };
   bool has_separable_geodesics() const override { return kSeparable; }
+
+  /// A metric that can tell an escaped light ray provides `escapes` (escape.h); that is the
+  /// declaration of asymptotic flatness (a metric whose flatness depends on its parameters
+  /// overrides asymptotically_flat() as well).
+  static constexpr bool kEscapes = requires(const M& m, const Vec4& x, double& r) { m.escapes(x, x, 0.0, r); };
+  bool asymptotically_flat() const override { return kEscapes; }
 
   GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y, double lambda0,
                            StepCallback cb) const override {

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -57,7 +58,8 @@ TEST(GeodesicCmd, ReproducesRadialLightTravelTime) {
   for (const std::string eq : {"separable", "coordinate"}) {
   SCOPED_TRACE(eq);
   const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5707963267948966,0", "--dir",
-                             "1,0,0", "--forward", "--lambda-max", kLambdaTo30, "--eps-abs", "1e-10", "--equations", eq});
+                             "1,0,0", "--forward", "--lambda-max", kLambdaTo30, "--eps-abs", "1e-10", "--equations", eq,
+                             "--no-escape"});
   ASSERT_EQ(o.code, 0) << o.err;
   const auto ls = lines(o.out);
   ASSERT_GE(ls.size(), 4u);
@@ -96,6 +98,65 @@ TEST(GeodesicCmd, CapturedRayStopsAtTheHorizon) {
                              "-1,0,0", "--forward", "--eps-rel", "1e-8", "--solver", "DOP853"});
   ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_EQ(lines(o.out).back(), "# stop: horizon");
+}
+
+TEST(GeodesicCmd, EscapingRayStopsEscapedAtAModestRadius) {
+  // It used to run to r ~ 1e12 and stop with step-underflow (19,543 lines). Outward at r = 10 > 3M:
+  // escaped at once (no objects: --escape-radius 0), or just beyond a given bounding radius.
+  const std::string pos = "0,10,1.5707963,0";
+  for (const std::string eq : {"separable", "coordinate"}) {
+    SCOPED_TRACE(eq);
+    const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "1,0,0", "--equations", eq});
+    ASSERT_EQ(o.code, 0) << o.err;
+    const auto ls = lines(o.out);
+    EXPECT_LT(ls.size(), 10u);
+    ASSERT_EQ(ls.back().rfind("# stop: escaped at radius ", 0), 0u) << ls.back();
+    const auto last = csv_numbers(ls[ls.size() - 2]);
+    double radius = 0, lambda = 0;
+    ASSERT_EQ(std::sscanf(ls.back().c_str(), "# stop: escaped at radius %lf, lambda %lf", &radius, &lambda), 2);
+    EXPECT_EQ(radius, last[2]);
+    EXPECT_EQ(lambda, last[0]);
+    EXPECT_GT(radius, 10.0);
+    EXPECT_LT(radius, 20.0);
+
+    const Output o2 = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "0.3,1,0",
+                                "--equations", eq, "--escape-radius", "100"});
+    ASSERT_EQ(o2.code, 0) << o2.err;
+    ASSERT_EQ(std::sscanf(lines(o2.out).back().c_str(), "# stop: escaped at radius %lf", &radius), 1) << o2.out;
+    EXPECT_GT(radius, 100.0);
+    EXPECT_LT(radius, 1000.0);
+  }
+  // JSON: radius and λ.
+  const Output j = run_args({"geodesic", "--metric", "KerrBL", "--pos", pos, "--dir", "1,0.2,0", "--format", "json"});
+  ASSERT_EQ(j.code, 0) << j.err;
+  const auto js = nlohmann::json::parse(j.out);
+  EXPECT_EQ(js["stop"], "escaped");
+  EXPECT_EQ(js["escape"]["radius"], js["points"].back()["x"][1]);
+  EXPECT_EQ(js["escape"]["lambda"], js["points"].back()["lambda"]);
+  // --no-escape: as before, no escape.
+  const Output n = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "1,0,0", "--no-escape",
+                             "--max-steps", "50"});
+  ASSERT_EQ(n.code, 0) << n.err;
+  EXPECT_EQ(lines(n.out).back(), "# stop: max-steps");
+}
+
+TEST(GeodesicCmd, HelpStatesTheStopReasons) {
+  const Output o = run_args({"geodesic", "--help"});
+  EXPECT_EQ(o.code, 0);
+  for (const char* r : {"escaped", "horizon", "bounding-box", "lambda-max", "max-steps", "constraint", "step-underflow",
+                        "not-finite", "--escape-radius", "--no-escape"})
+    EXPECT_NE(o.out.find(r), std::string::npos) << r;
+}
+
+TEST(GeodesicCmd, PolarAxisRayOfIssue11GetsThrough) {
+  // The Kerr ray that stalled at θ ≈ π − 7e-7 in the Mino equations and ended with max-steps.
+  const Output o = run_args({"geodesic", "--metric", "KerrBL", "--param", "angmom=0.9", "--pos",
+                             "0,1000,0.29670597283903605,0", "--dir", "-1,0.004989,-3e-7", "--eps-abs", "1e-9",
+                             "--max-steps", "30000", "--escape-radius", "1000"});
+  ASSERT_EQ(o.code, 0) << o.err;
+  const auto ls = lines(o.out);
+  EXPECT_EQ(ls.back().rfind("# stop: escaped", 0), 0u) << ls.back();
+  EXPECT_LT(ls.size(), 2000u);
 }
 
 TEST(GeodesicCmd, JsonCarriesTheSame) {
@@ -138,6 +199,10 @@ TEST(GeodesicCmd, ErrorsAreClear) {
       {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "0.6,0.8,0", "--type", "timelike"},
        "|v| < 1"},
       {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "0,0,0"}, "non-zero direction"},
+      {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "1e155,0,0"}, "--dir: the length"},
+      {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "1e-160,1e-160,0"}, "is not null"},
+      {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "1,0,0", "--escape-radius", "-1"},
+       "--escape-radius: expected"},
       {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "1,0,0", "--type", "lightlik"},
        "did you mean \"lightlike\""},
       {{"--metric", "Schwarzschild", "--pos", "0,6," + eq + ",0", "--dir", "1,0,0", "--eps-abs", "0"}, "eps_abs"},

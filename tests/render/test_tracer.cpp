@@ -637,14 +637,20 @@ TEST(Tracer, ConstraintAndErrorStopsGetTheirColours) {
   job.solver.box_ur = Vec4{{1e300, 100, 100, 100}};
   TraceStats st;
   {
-    // Escapes through the bounding box: background even with all special colours set.
+    // Escapes (empty scene: nothing to hit anywhere, so at once) or leaves the bounding box (a
+    // sky sphere beyond it): background even with all special colours set.
     RenderJob j = job;
     j.error_color = Color{1, 0, 0};
     j.constraint_color = Color{0, 1, 0};
     j.break_color = Color{0, 0, 1};
     const TraceResult r = Tracer(j).trace_direction(Vec3{1, 0, 0}, st);
-    EXPECT_EQ(r.reason, StopReason::BoundingBox);
+    EXPECT_EQ(r.reason, StopReason::Escaped);
     EXPECT_EQ(r.color, j.background);
+    static FlatShader white;
+    j.scene = std::make_shared<SkySphere>(1000, &white);
+    const TraceResult rb = Tracer(j).trace_direction(Vec3{1, 0, 0}, st);
+    EXPECT_EQ(rb.reason, StopReason::BoundingBox);
+    EXPECT_EQ(rb.color, j.background);
   }
   {
     // A constraint tolerance below rounding: g(k,k) = 0 cannot hold to 1e-300 after a curved
@@ -722,4 +728,79 @@ TEST(Tracer, RejectsIncompleteJob) {
 }
 
 }  // namespace
+}  // namespace geovis
+
+// ---- escape (StopReason::Escaped, spacetime/escape.h) --------------------------------------------
+
+namespace geovis {
+namespace {
+/// The same object with unknown (infinite) bounds: the tracer then never stops a ray as escaped,
+/// which is the behaviour before the escape test existed.
+struct UnknownBounds : SceneObject {
+  SceneObjectPtr inner;
+  explicit UnknownBounds(SceneObjectPtr o) : inner(std::move(o)) {}
+  bool intersect(const Segment& seg, Hit& hit) const override { return inner->intersect(seg, hit); }
+  Bounds3 bounds() const override { return Bounds3::infinite(); }
+};
+}  // namespace
+
+TEST(Tracer, EscapedRaysKeepTheirPixelsAndSayWhy) {
+  // Schwarzschild, observer at r = 15M looking at the hole, a sphere of radius 1 at (0, 4, 0) and
+  // a background colour. With the sphere's bounds the rays that miss stop as escaped beyond
+  // |p| = √27 (the bounding sphere of its box); with unknown bounds they run on to the bounding
+  // box (r = 200) as before. The image must be the same, pixel for pixel, and the per-pixel stop
+  // must say hit / escaped / horizon.
+  BuildContext ctx;
+  RenderJob job = schwarzschild_view_job(nullptr);
+  job.scene = make_sphere(ctx, Vec3{0, 4, 0}, 1.0);
+  job.filter = Filter::RGBpdz;
+  RenderOptions opt;
+  opt.progress = false;
+  opt.threads = 1;
+  const RenderResult esc = render(job, opt);
+  job.scene = std::make_shared<UnknownBounds>(job.scene);
+  const RenderResult old = render(job, opt);
+  int counts[7] = {}, differ = 0;
+  for (int y = 0; y < 41; ++y)
+    for (int x = 0; x < 41; ++x) {
+      const PixelData& d = esc.data[size_t(y) * 41 + x];
+      const PixelData& o = old.data[size_t(y) * 41 + x];
+      ++counts[int(d.stop)];
+      for (int c = 0; c < 3; ++c) differ += esc.image.at(x, y)[c] != old.image.at(x, y)[c];
+      EXPECT_NE(o.stop, PixelStop::Escaped);
+      if (d.stop == PixelStop::Escaped) {
+        EXPECT_EQ(o.stop, PixelStop::Box) << x << "," << y;
+      } else {
+        EXPECT_EQ(d.stop, o.stop) << x << "," << y;
+      }
+      EXPECT_EQ(d.stop == PixelStop::Hit, d.object_id != 0) << x << "," << y;
+    }
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(counts[int(PixelStop::Hit)], 10);
+  EXPECT_GT(counts[int(PixelStop::Escaped)], 300);
+  EXPECT_GT(counts[int(PixelStop::Horizon)], 1000);  // the shadow, half-angle 18.8° of 20°
+  EXPECT_EQ(counts[int(PixelStop::Hit)] + counts[int(PixelStop::Escaped)] + counts[int(PixelStop::Horizon)], 41 * 41);
+  std::printf("escape: %ld steps instead of %ld (%d escaped pixels)\n", esc.stats.steps, old.stats.steps,
+              counts[int(PixelStop::Escaped)]);
+  EXPECT_LT(esc.stats.steps, old.stats.steps);
+}
+
+TEST(Tracer, PixelStopMapping) {
+  TraceResult r;
+  EXPECT_EQ(pixel_stop(r), PixelStop::Error);  // no ray
+  r.traced = true;
+  const std::pair<StopReason, PixelStop> map[] = {
+      {StopReason::Escaped, PixelStop::Escaped},     {StopReason::Invalid, PixelStop::Horizon},
+      {StopReason::BoundingBox, PixelStop::Box},     {StopReason::MaxSteps, PixelStop::MaxSteps},
+      {StopReason::LambdaMax, PixelStop::MaxSteps},  {StopReason::Constraint, PixelStop::Constraint},
+      {StopReason::StepUnderflow, PixelStop::Error}, {StopReason::NotFinite, PixelStop::Error}};
+  for (const auto& [reason, stop] : map) {
+    r.reason = reason;
+    EXPECT_EQ(pixel_stop(r), stop) << stop_reason_name(reason);
+  }
+  r.hit = true;
+  r.reason = StopReason::Callback;
+  EXPECT_EQ(pixel_stop(r), PixelStop::Hit);
+}
+
 }  // namespace geovis

@@ -114,6 +114,12 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
   ///   e_(0) = ∂_v/(1 + w) − w ∂_r,  e_(1) = ∂_v/(1 + w) + ∂_r
   /// (u^r = −sqrt(r_s/r), u^t = 1/(1 − r_s/r) in Schwarzschild coordinates, and u^v = u^t + u^r/f).
   /// Default = static, as in Motion4D. e_(2) = ∂_θ/r, e_(3) = ∂_φ/(r sinθ) for both.
+  /// Escape (escape.h): r is Schwarzschild's areal radius and k^r = dr/dλ in any chart, so the
+  /// test is Schwarzschild's (photon sphere r = 1.5 r_s); r is |p|.
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    return escapes_spherical(x[1], k[1], 1.5 * rs_, r_min, x[1], radius);
+  }
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     const double r = x[1];

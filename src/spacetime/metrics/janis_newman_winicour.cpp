@@ -79,6 +79,13 @@ class JanisNewmanWinicour final : public MetricCRTP<JanisNewmanWinicour> {
     return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
+  /// Escape (escape.h): h² = α^(1−2γ) r², (ln h²)' = (2r − (1 + 2γ) b)/(r (r − b)) with
+  /// b = r_s/γ: h grows beyond the photon sphere (1 + 2γ) b/2 = (1 + 2γ) M/γ, which lies outside
+  /// the singularity r = b only for γ > 1/2 (else h grows everywhere). r is |p|.
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    return escapes_spherical(x[1], k[1], std::max(b_, 0.5 * (1.0 + 2.0 * gamma_) * b_), r_min, x[1], radius);
+  }
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     DiagonalMetric d;

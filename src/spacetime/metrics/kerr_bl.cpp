@@ -189,6 +189,15 @@ class KerrBL final : public MetricCRTP<KerrBL> {
   /// Geodesics through Carter's separated equations (MetricCRTP::integrate, kerr_mino.h).
   KerrMinoParams kerr_mino_params() const { return {mass_, a_, r_break_}; }
 
+  /// Escape (escape.h) in the coordinate form: the test on the radial potential of the ray's
+  /// constants (KerrMinoConstants::no_radial_turning_point_beyond); r is |p|.
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    if (!(x[1] > r_min && k[1] > 0.0)) return false;
+    if (!kerr_mino_constants(mass_, a_, x, k, 0.0).no_radial_turning_point_beyond(x[1])) return false;
+    radius = x[1];
+    return true;
+  }
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     const double r = x[1];

@@ -70,6 +70,14 @@ class Kottler final : public MetricCRTP<Kottler> {
            std::isfinite(x[3]) && x[2] != 0.0;
   }
 
+  /// Escape (escape.h) only for Λ = 0 (Schwarzschild): for Λ ≠ 0 the spacetime is not
+  /// asymptotically flat (de Sitter / anti-de Sitter at large r), and with Λ < 0 light rays
+  /// return from r = ∞ in finite coordinate time.
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    return L_ == 0.0 && escapes_spherical(x[1], k[1], 3.0 * M_, r_min, x[1], radius);
+  }
+  bool asymptotically_flat() const override { return L_ == 0.0; }
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     DiagonalMetric d;

@@ -17,6 +17,13 @@ class Minkowski final : public MetricCRTP<Minkowski> {
   void christoffel_closed(const Vec4&, Christoffel& G) const { G = Christoffel{}; }
   void accel_closed(const Vec4&, const Vec4&, Vec4& a) const { a = Vec4{{0, 0, 0, 0}}; }
 
+  /// Escape (escape.h): a straight ray with x·k > 0 moves away from the origin for good
+  /// (|x + λk|² = |x|² + 2λ x·k + λ²|k|²); no photon sphere.
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    const double r = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    return escapes_spherical(r, x[1] * k[1] + x[2] * k[2] + x[3] * k[3], 0.0, r_min, r, radius);
+  }
+
   Tetrad natural_tetrad(const Vec4&, TetradKind kind) const override {
     require_tetrad_kind(kind);
     Tetrad e;

@@ -74,6 +74,13 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
     return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
+  /// Escape (escape.h) into either universe: h² = b0² + l² (A = 1) grows with |l| on both sides
+  /// of the throat l = 0, the only photon sphere; so the test is on |l| = |p| and d|l|/dλ.
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    const double s = x[1] > 0.0 ? 1.0 : -1.0;
+    return escapes_spherical(s * x[1], s * k[1], 0.0, r_min, s * x[1], radius);
+  }
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     const double st = std::sin(x[2]);

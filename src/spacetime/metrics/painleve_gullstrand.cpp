@@ -113,6 +113,12 @@ class PainleveGullstrand final : public MetricCRTP<PainleveGullstrand> {
   /// Freefall observer from rest at infinity (any r > 0), w = sqrt(r_s/r):
   ///   e_(0) = ∂_T − w ∂_r,  e_(1) = ∂_r.
   /// Default = static, as in Motion4D. e_(2) = ∂_θ/r, e_(3) = ∂_φ/(r sinθ) for both.
+  /// Escape (escape.h): r is Schwarzschild's areal radius and k^r = dr/dλ in any chart, so the
+  /// test is Schwarzschild's (photon sphere r = 1.5 r_s); r is |p|.
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    return escapes_spherical(x[1], k[1], 1.5 * rs_, r_min, x[1], radius);
+  }
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     const double r = x[1];

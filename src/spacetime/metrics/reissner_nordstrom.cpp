@@ -65,6 +65,15 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
     return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;
   }
 
+  /// Escape (escape.h): h² = r²/f, (h²)' = 2r³(r² − 3Mr + 2Q²)/(r² f)², so h grows beyond the
+  /// outer photon sphere r = (3M + √(9M² − 8Q²))/2 (for 8Q² > 9M² there is none and h grows
+  /// everywhere); f > 0 there (it lies outside r+). r is |p|.
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    const double disc = 9.0 * M_ * M_ - 8.0 * Q2_;
+    const double r_photon = disc >= 0.0 ? 0.5 * (3.0 * M_ + std::sqrt(disc)) : 0.0;
+    return escapes_spherical(x[1], k[1], r_photon, r_min, x[1], radius);
+  }
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     DiagonalMetric d;

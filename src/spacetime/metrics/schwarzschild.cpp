@@ -73,6 +73,12 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
   /// Geodesics through Carter's separated equations (MetricCRTP::integrate, kerr_mino.h).
   KerrMinoParams kerr_mino_params() const { return {0.5 * rs_, 0.0, r_break_}; }
 
+  /// Escape (escape.h): h² = r²/(1 − r_s/r) has its only critical point at the photon sphere
+  /// r = 3M = 1.5 r_s ((h²)' ∝ r − 3M) and grows beyond it; r is |p|.
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    return escapes_spherical(x[1], k[1], 1.5 * rs_, r_min, x[1], radius);
+  }
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     const double r = x[1];

@@ -86,6 +86,13 @@ class SchwarzschildCart final : public MetricCRTP<SchwarzschildCart> {
   /// Static observer e_(0) = ∂_t/sqrt(f); spatial legs aligned with the coordinate axes as far as
   /// possible: e_(i) = ∂_i + (sqrt(f) − 1) n_i n^j ∂_j (orthonormal because
   /// (I + (s − 1) n nᵀ)(I + a n nᵀ)(I + (s − 1) n nᵀ) = I for s² = f = 1/(1 + a)).
+  /// Escape (escape.h): Schwarzschild's photon sphere r = 1.5 r_s with r = |x| = |p| and
+  /// dr/dλ = n·k.
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    const double r = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    return escapes_spherical(r, x[1] * k[1] + x[2] * k[2] + x[3] * k[3], 1.5 * rs_, r_min, r, radius);
+  }
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     const double r = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);

@@ -77,6 +77,15 @@ class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
   }
 
   /// Static observer: e_(0) = ∂_t/α, e_(i) = ∂_i/ψ².
+  /// Escape (escape.h): Schwarzschild's photon sphere r = 3M is ρ + M + M²/(4ρ) = 3M, i.e.
+  /// ρ_ph = (1 + √3/2) M = (2 + √3) ρ_s; r(ρ) increases for ρ > ρ_s, so h² grows with ρ beyond
+  /// ρ_ph; ρ = |x| = |p|, dρ/dλ ∝ x·k.
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    return escapes_spherical(rho, x[1] * k[1] + x[2] * k[2] + x[3] * k[3], (2.0 + std::sqrt(3.0)) * rho_s_, r_min,
+                             rho, radius);
+  }
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
