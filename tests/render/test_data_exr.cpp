@@ -75,7 +75,8 @@ TEST(RayStop, OneCodePerStopReason) {
   EXPECT_EQ(ray_stop(d), RayStop::Hit);
   d.hit = false;
   const std::map<StopReason, RayStop> expected = {
-      {StopReason::Invalid, RayStop::Horizon},      {StopReason::BoundingBox, RayStop::Box},
+      {StopReason::Escaped, RayStop::Escaped},      {StopReason::Invalid, RayStop::Horizon},
+      {StopReason::BoundingBox, RayStop::Box},
       {StopReason::MaxSteps, RayStop::MaxSteps},    {StopReason::LambdaMax, RayStop::MaxSteps},
       {StopReason::Constraint, RayStop::Constraint}, {StopReason::StepUnderflow, RayStop::Error},
       {StopReason::NotFinite, RayStop::Error}};

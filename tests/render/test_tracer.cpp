@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "render/camera.h"
+#include "render/data_exr.h"
 #include "render/dome_camera.h"
 #include "render/fullsky_camera.h"
 #include "render/panorama_camera.h"
@@ -760,47 +761,29 @@ TEST(Tracer, EscapedRaysKeepTheirPixelsAndSayWhy) {
   const RenderResult esc = render(job, opt);
   job.scene = std::make_shared<UnknownBounds>(job.scene);
   const RenderResult old = render(job, opt);
-  int counts[7] = {}, differ = 0;
+  int counts[8] = {}, differ = 0;
   for (int y = 0; y < 41; ++y)
     for (int x = 0; x < 41; ++x) {
-      const PixelData& d = esc.data[size_t(y) * 41 + x];
-      const PixelData& o = old.data[size_t(y) * 41 + x];
-      ++counts[int(d.stop)];
+      const RayStop d = ray_stop(esc.data[size_t(y) * 41 + x]);
+      const RayStop o = ray_stop(old.data[size_t(y) * 41 + x]);
+      ++counts[int(d)];
       for (int c = 0; c < 3; ++c) differ += esc.image.at(x, y)[c] != old.image.at(x, y)[c];
-      EXPECT_NE(o.stop, PixelStop::Escaped);
-      if (d.stop == PixelStop::Escaped) {
-        EXPECT_EQ(o.stop, PixelStop::Box) << x << "," << y;
+      EXPECT_NE(o, RayStop::Escaped);
+      if (d == RayStop::Escaped) {
+        EXPECT_EQ(o, RayStop::Box) << x << "," << y;
       } else {
-        EXPECT_EQ(d.stop, o.stop) << x << "," << y;
+        EXPECT_EQ(d, o) << x << "," << y;
       }
-      EXPECT_EQ(d.stop == PixelStop::Hit, d.object_id != 0) << x << "," << y;
+      EXPECT_EQ(d == RayStop::Hit, esc.data[size_t(y) * 41 + x].object_id != 0) << x << "," << y;
     }
   EXPECT_EQ(differ, 0);
-  EXPECT_GT(counts[int(PixelStop::Hit)], 10);
-  EXPECT_GT(counts[int(PixelStop::Escaped)], 300);
-  EXPECT_GT(counts[int(PixelStop::Horizon)], 1000);  // the shadow, half-angle 18.8° of 20°
-  EXPECT_EQ(counts[int(PixelStop::Hit)] + counts[int(PixelStop::Escaped)] + counts[int(PixelStop::Horizon)], 41 * 41);
+  EXPECT_GT(counts[int(RayStop::Hit)], 10);
+  EXPECT_GT(counts[int(RayStop::Escaped)], 300);
+  EXPECT_GT(counts[int(RayStop::Horizon)], 1000);  // the shadow, half-angle 18.8° of 20°
+  EXPECT_EQ(counts[int(RayStop::Hit)] + counts[int(RayStop::Escaped)] + counts[int(RayStop::Horizon)], 41 * 41);
   std::printf("escape: %ld steps instead of %ld (%d escaped pixels)\n", esc.stats.steps, old.stats.steps,
-              counts[int(PixelStop::Escaped)]);
+              counts[int(RayStop::Escaped)]);
   EXPECT_LT(esc.stats.steps, old.stats.steps);
-}
-
-TEST(Tracer, PixelStopMapping) {
-  TraceResult r;
-  EXPECT_EQ(pixel_stop(r), PixelStop::Error);  // no ray
-  r.traced = true;
-  const std::pair<StopReason, PixelStop> map[] = {
-      {StopReason::Escaped, PixelStop::Escaped},     {StopReason::Invalid, PixelStop::Horizon},
-      {StopReason::BoundingBox, PixelStop::Box},     {StopReason::MaxSteps, PixelStop::MaxSteps},
-      {StopReason::LambdaMax, PixelStop::MaxSteps},  {StopReason::Constraint, PixelStop::Constraint},
-      {StopReason::StepUnderflow, PixelStop::Error}, {StopReason::NotFinite, PixelStop::Error}};
-  for (const auto& [reason, stop] : map) {
-    r.reason = reason;
-    EXPECT_EQ(pixel_stop(r), stop) << stop_reason_name(reason);
-  }
-  r.hit = true;
-  r.reason = StopReason::Callback;
-  EXPECT_EQ(pixel_stop(r), PixelStop::Hit);
 }
 
 }  // namespace geovis
