@@ -8,6 +8,7 @@
 #include <string>
 
 #include "spacetime/metric_crtp.h"
+#include "spacetime/metrics/static_spherical.h"
 #include "spacetime/metrics/diagonal_metric.h"
 
 namespace geovis {
@@ -23,7 +24,9 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
                       "r+ = M + sqrt(M^2 - Q^2), |Q| > M: naked singularity at r = 0"},
                      {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "charged black hole (Reissner-Nordstrom), Catalogue of Spacetimes"}) {
+                    "charged black hole (Reissner-Nordstrom) (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 6, M_PI / 2, 0}},
+                    {{"charge", 0.0}, {"mass", 0.0}}}) {
     on_params_changed();
   }
 
@@ -63,6 +66,12 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
   /// Outside the outer horizon (or r > 0 for a naked singularity) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
     return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;
+  }
+
+  /// Effective potential, circular orbits and embedding (static_spherical.h) from r_+ (or, for a
+  /// naked singularity, from r_min) outwards.
+  std::vector<MetricFunction> functions() const override {
+    return static_spherical_functions_of(*this, r_plus_ > 0.0 ? r_plus_ : r_min_, 20.0 * std::max(M_, 0.5));
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
