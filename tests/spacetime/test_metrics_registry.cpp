@@ -188,13 +188,67 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
          const double b = m.param("b0"), l = x[1];
          return 12.0 * std::pow(b, 4) / std::pow(b * b + l * l, 4);
        }},
+      // Gödel: R_ab = u_a u_b/a² (dust plus Λ = −1/(2a²)) and K = 3/a⁴ (Gödel, RMP 21 (1949) 447:
+      // the Riemann tensor of the 3-dimensional factor is fixed by its Ricci tensor, K = 3 (R_ab u^a u^b)²).
+      {"Goedel", [](const Metric& m, const Vec4&) { return 3.0 / std::pow(m.param("a"), 4); }},
+      {"GoedelCart", [](const Metric& m, const Vec4&) { return 3.0 / std::pow(m.param("a"), 4); }},
+      // Scaled: a = r_G/2.
+      {"GoedelScaled", [](const Metric& m, const Vec4&) { return 48.0 / std::pow(m.param("rg"), 4); }},
+      {"GoedelScaledCart", [](const Metric& m, const Vec4&) { return 48.0 / std::pow(m.param("rg"), 4); }},
+      // Tortoise ρ = r + r_s ln(r/r_s − 1), inverted here by bisection (independent of the metric's
+      // Newton iteration for the Lambert W function).
+      {"SchwarzschildTortoise",
+       [](const Metric& m, const Vec4& x) {
+         const double M = m.param("mass"), rs = 2 * M;
+         double lo = rs, hi = std::max(2 * rs, x[1]) + 10 * rs;
+         for (int i = 0; i < 200; ++i) {
+           const double mid = 0.5 * (lo + hi);
+           (mid + rs * std::log(mid / rs - 1) < x[1] ? lo : hi) = mid;
+         }
+         return 48.0 * M * M / std::pow(0.5 * (lo + hi), 6);
+       }},
+      // Bertotti–Kasner: 2d de Sitter (Gaussian curvature Λ) times a sphere of radius 1/√Λ (Gaussian
+      // curvature Λ); a 2d space of Gaussian curvature κ has R_abcd R^abcd = 4κ², so K = 8Λ².
+      {"BertottiKasner", [](const Metric& m, const Vec4&) { return 8.0 * std::pow(m.param("lambda"), 2); }},
+      {"DeSitterUnivConformal", [](const Metric& m, const Vec4&) { return 24.0 * std::pow(m.param("hubble"), 4); }},
+      // Schwarzschild with b = 2M: K = 12 b²/r⁶.
+      {"Petrov_Type_D_AI_ES",
+       [](const Metric& m, const Vec4& x) { return 12.0 * std::pow(m.param("b"), 2) / std::pow(x[1], 6); }},
+      // Spatial Schwarzschild slice times time: sectional curvatures −M/r³ (twice) and 2M/r³, so
+      // K = 4 (1 + 1 + 4) M²/r⁶ = 24 M²/r⁶.
+      {"SchwarzschildWT",
+       [](const Metric& m, const Vec4& x) { return 24.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
+      // Einstein static universe of unit radius: R_ijkl = g_ik g_jl − g_il g_jk on S³, K = 2·3·2 = 12.
+      {"MinkowskiConformal", [](const Metric&, const Vec4&) { return 12.0; }},
+      // Locally Schwarzschild: the conical deficit does not change the curvature.
+      {"CosmicStringSchwarzschild",
+       [](const Metric& m, const Vec4& x) {
+         const double M = m.param("mass");
+         return 48.0 * M * M / std::pow(x[1], 6);
+       }},
+      // Kasner (curved for u = 2, kretschmann_params): the orthonormal Riemann components of
+      // ds² = −dt² + Σ t^(2p_i) dx_i² are R_0i0i = −p_i (p_i − 1)/t², R_ijij = p_i p_j/t², so
+      // K = 4 [Σ_i p_i² (p_i − 1)² + Σ_(i<j) p_i² p_j²]/t⁴ (= −16 p1 p2 p3/t⁴ with the Kasner conditions).
+      {"Kasner",
+       [](const Metric& m, const Vec4& x) {
+         const double u = m.param("u"), n = 1.0 / (1.0 + u + u * u);
+         const double p[3] = {-u * n, (1.0 + u) * n, u * (1.0 + u) * n};
+         double s = 0;
+         for (int i = 0; i < 3; ++i) {
+           s += p[i] * p[i] * (p[i] - 1.0) * (p[i] - 1.0);
+           for (int j = i + 1; j < 3; ++j) s += p[i] * p[i] * p[j] * p[j];
+         }
+         return 4.0 * s / std::pow(x[0], 4);
+       }},
   };
   return table;
 }
 
 /// Parameters for the Kretschmann comparison where the defaults are flat.
 const std::map<std::string, std::vector<std::pair<std::string, double>>>& kretschmann_params() {
-  static const std::map<std::string, std::vector<std::pair<std::string, double>>> table = {};
+  static const std::map<std::string, std::vector<std::pair<std::string, double>>> table = {
+      {"Kasner", {{"u", 2.0}}},
+  };
   return table;
 }
 
@@ -301,7 +355,10 @@ TEST_P(EveryMetric, NullGeodesicKeepsItsConstraint) {
 
 TEST_P(EveryMetric, FlatLimitHasNoCurvature) {
   auto m = make_metric(GetParam());
-  const bool flat_by_name = m->name() == "Minkowski";
+  // Flat (off the string) for every parameter value (MinkowskiConformal is the Einstein static
+  // universe, not flat).
+  const bool flat_by_name =
+      m->name() == "Minkowski" || m->name() == "MinkowskiRotLattice" || m->name() == "StraightSpinningString";
   if (m->info().flat_limit.empty() && !flat_by_name)
     GTEST_SKIP() << m->name() << " has no flat limit among its parameters";
   m->set_params(m->info().flat_limit);
@@ -357,6 +414,12 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"EddFinkIn", {}},
       {"PainleveGullstrand", {}},
       {"KerrBL", {}},
+      {"CosmicStringSchwarzschild", {}},
+      {"Curzon", {}},
+      {"SchwarzschildTortoise", {}},
+      {"Petrov_Type_D_AI_ES", {}},
+      {"Petrov_Type_D_AII_ES", {}},
+      {"Kasner", {{"u", 2.0}}},
   };
   return table;
 }
