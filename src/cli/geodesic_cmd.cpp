@@ -1,8 +1,9 @@
-// `geovis geodesic --metric NAME [--param key=value]... --pos t,x1,x2,x3 --dir d1,d2,d3
+// `geovis geodesic --metric NAME [--param key=value]... [--pos t,x1,x2,x3] [--dir d1,d2,d3]
 //   [--type lightlike|timelike] [--solver NAME] [--eps-abs X] [--eps-rel X] [--max-steps N]
 //   [--lambda-max X] [--forward] [--format csv|json]`
 // integrates one geodesic started in the metric's natural (default) tetrad at `pos` and prints
-// every accepted step.
+// every accepted step. Without --pos the geodesic starts at the metric's sample position; without
+// --dir a light ray starts along e(1), a particle at rest.
 //   lightlike: --dir is a local spatial direction along e(1), e(2), e(3) (normalized here); the ray
 //              is k = −e(0) + d̂ and traced backwards in time as the renderer does (paper eq. 7),
 //              or k = e(0) + d̂ towards the future with --forward.
@@ -35,7 +36,8 @@ namespace {
 struct GeodesicArgs {
   std::string metric;
   std::vector<std::string> params;
-  std::string pos, dir;
+  std::string pos;
+  std::string dir;  ///< empty: lightlike along e(1), timelike at rest
   std::string type = "lightlike";
   std::string solver = "GSL_RK_Cash-Karp";
   double eps_abs = 1e-8;  // the paper's setting for all its images (§3)
@@ -119,20 +121,24 @@ int run_geodesic(const GeodesicArgs& a) {
   validate_solver_config(cfg);
 
   // ---- initial state from the natural tetrad ----
-  const std::vector<double> pv = parse_vector("--pos", a.pos, 4, "t,x1,x2,x3");
-  const std::vector<double> dv = parse_vector("--dir", a.dir, 3, "d1,d2,d3");
+  // Without --pos: the metric's sample observer position (MetricInfo::sample_pos).
+  const Vec4 sample = m->info().sample_pos;
+  const std::vector<double> pv = a.pos.empty() ? std::vector<double>{sample[0], sample[1], sample[2], sample[3]}
+                                               : parse_vector("--pos", a.pos, 4, "t,x1,x2,x3");
+  const std::string dir = !a.dir.empty() ? a.dir : (type == GeodesicType::Lightlike ? "1,0,0" : "0,0,0");
+  const std::vector<double> dv = parse_vector("--dir", dir, 3, "d1,d2,d3");
   const Vec4 x{{pv[0], pv[1], pv[2], pv[3]}};
   const auto& c = m->info().coords;
   if (!m->is_valid(x))
-    throw Error("--pos: (" + a.pos + ") is outside the validity domain of the " + m->name() + " coordinates (" +
+    throw Error("--pos: (" + (a.pos.empty() ? fmt(x[0]) + "," + fmt(x[1]) + "," + fmt(x[2]) + "," + fmt(x[3]) : a.pos) + ") is outside the validity domain of the " + m->name() + " coordinates (" +
                 c[0] + ", " + c[1] + ", " + c[2] + ", " + c[3] + ")");
   const Tetrad e = m->natural_tetrad(x, TetradKind::Default);
   const Vec3 d{dv[0], dv[1], dv[2]};
   Vec4 k;
   if (type == GeodesicType::Lightlike) {
-    if (!(norm(d) > 0)) throw Error("--dir: expected a non-zero direction, found \"" + a.dir + "\"");
+    if (!(norm(d) > 0)) throw Error("--dir: expected a non-zero direction, found \"" + dir + "\"");
     if (!std::isfinite(norm(d)))
-      throw Error("--dir: the length of the direction (" + a.dir +
+      throw Error("--dir: the length of the direction (" + dir +
                   ") overflows in double precision; give components of moderate size (only the direction counts)");
     k = local_null_direction(e, d, /*past_directed=*/!a.forward);
   } else {
@@ -246,10 +252,12 @@ void setup(CLI::App& app, GlobalOptions& g) {
       "  not-finite      NaN or infinity appeared in the state");
   sub->add_option("--metric", a->metric, "metric name (see `geovis metrics`)")->required();
   sub->add_option("--param", a->params, "metric parameter KEY=VALUE (repeatable)")->allow_extra_args(false);
-  sub->add_option("--pos", a->pos, "start position t,x1,x2,x3 in the metric's coordinates")->required();
+  sub->add_option("--pos", a->pos,
+                  "start position t,x1,x2,x3 in the metric's coordinates (default: the metric's sample position, "
+                  "see `geovis metrics`)");
   sub->add_option("--dir", a->dir,
-                  "lightlike: local direction d1,d2,d3 along e(1),e(2),e(3); timelike: local 3-velocity")
-      ->required();
+                  "lightlike: local direction d1,d2,d3 along e(1),e(2),e(3) (default 1,0,0); timelike: local "
+                  "3-velocity (default 0,0,0)");
   sub->add_option("--type", a->type, "lightlike or timelike")->capture_default_str();
   sub->add_option("--solver", a->solver, "integrator (GeoViS name or ours)")->capture_default_str();
   sub->add_option("--eps-abs", a->eps_abs, "absolute tolerance")->capture_default_str();

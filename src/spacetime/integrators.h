@@ -38,6 +38,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "core/error.h"
@@ -849,6 +850,21 @@ struct MetricSystem {
     for (int i = 0; i < F::kPassiveFrom; ++i) is[i] = 1.0;
     for (int i = F::kPassiveFrom; i < N; ++i) is[i] = 1.0 / std::max(1.0, std::fabs(y[i]));
   }
+  /// Motion4D's Metric::resize, called after every accepted step: a metric may rescale the
+  /// direction of a light ray with `void rescale_null_direction(double* k) const`
+  /// (AlcubierreWarpSimple: |k^t| = 1). A null geodesic stays the same curve under k -> c k (only
+  /// its affine parameter changes), so this applies to plain lightlike geodesics only: a timelike
+  /// k is normalized and Jacobi fields and transported frames are tied to the affine parameter.
+  /// Returns true when y changed.
+  bool rescale(double* y, GeodesicType type) const {
+    if constexpr (std::is_same_v<F, GeodesicRHS<M>> && requires(double* k) { m.rescale_null_direction(k); }) {
+      if (type == GeodesicType::Lightlike) {
+        m.rescale_null_direction(y + 4);
+        return true;
+      }
+    }
+    return false;
+  }
   /// Re-projects k onto g(k,k) = target by solving the quadratic in k^0 (root closest to the
   /// current k^0); leaves k unchanged when no real root exists.
   void reproject(double* y, GeodesicType type) const {
@@ -1047,9 +1063,10 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
     }
     // Accepted.
     if (cfg.reproject) sys.reproject(y1, cfg.type);
-    bool projected = false;
-    if constexpr (requires { sys.project_invariants(y1); }) projected = sys.project_invariants(y1);
-    if (!have_dy1 || cfg.reproject || projected) {
+    bool changed = false;
+    if constexpr (requires { sys.project_invariants(y1); }) changed = sys.project_invariants(y1);
+    if constexpr (requires { sys.rescale(y1, cfg.type); }) changed = sys.rescale(y1, cfg.type) || changed;
+    if (!have_dy1 || cfg.reproject || changed) {
       sys(y1, dy1);
       ++res.rhs_evals;
     }

@@ -38,12 +38,19 @@ Metric::Metric(MetricInfo info) : info_(std::move(info)) {
   for (const auto& p : info_.params) values_.push_back(p.def);
 }
 
+namespace {
+/// The key of the horizon break margin, accepted by every metric besides its own parameters.
+constexpr const char* kHorizonEpsKey = "horizon_eps";
+}  // namespace
+
 double Metric::param(std::string_view name) const {
   const std::string n = to_lower(name);
   for (size_t i = 0; i < info_.params.size(); ++i)
     if (info_.params[i].name == n) return values_[i];
+  if (n == kHorizonEpsKey) return horizon_eps_;
   std::vector<std::string> names;
   for (const auto& p : info_.params) names.push_back(p.name);
+  names.push_back(kHorizonEpsKey);
   throw Error("metric " + info_.name + " has no parameter \"" + std::string(name) + "\"" +
               did_you_mean(name, names) + " (parameters: " + (names.empty() ? "none" : join(names)) + ")");
 }
@@ -52,12 +59,26 @@ void Metric::set_param(std::string_view name, double value) { set_params({{std::
 
 void Metric::set_params(const std::vector<std::pair<std::string, double>>& values) {
   const std::vector<double> old = values_;
+  const double old_eps = horizon_eps_;
   for (const auto& [name, value] : values) {
     const std::string n = to_lower(name);
+    if (n == kHorizonEpsKey) {
+      if (!(value > 0.0 && value <= 0.1)) {
+        values_ = old;
+        horizon_eps_ = old_eps;
+        std::ostringstream os;
+        os << "metric " << info_.name << ": horizon break margin horizon_eps = " << value
+           << " is out of range; expected 0 < horizon_eps <= 0.1";
+        throw Error(os.str());
+      }
+      horizon_eps_ = value;
+      continue;
+    }
     size_t i = 0;
     while (i < info_.params.size() && info_.params[i].name != n) ++i;
     if (i == info_.params.size()) {
       values_ = old;
+      horizon_eps_ = old_eps;
       param(name);  // throws the unknown-name error
     }
     const MetricParam& spec = info_.params[i];
@@ -65,6 +86,7 @@ void Metric::set_params(const std::vector<std::pair<std::string, double>>& value
     const bool hi_ok = spec.max_open ? value < spec.max : value <= spec.max;
     if (!std::isfinite(value) || !lo_ok || !hi_ok) {
       values_ = old;
+      horizon_eps_ = old_eps;
       std::ostringstream os;
       os << "metric " << info_.name << ": parameter " << spec.name << " = " << value
          << " is out of range; expected a value in " << (spec.min_open ? "(" : "[") << spec.min << ", "
@@ -77,27 +99,13 @@ void Metric::set_params(const std::vector<std::pair<std::string, double>>& value
     on_params_changed();
   } catch (...) {
     values_ = old;
+    horizon_eps_ = old_eps;
     on_params_changed();
     throw;
   }
 }
 
-void Metric::set_horizon_eps(double eps) {
-  if (!(eps > 0.0 && eps <= 0.1)) {
-    std::ostringstream os;
-    os << "metric " << info_.name << ": horizon break margin " << eps << " is out of range; expected 0 < eps <= 0.1";
-    throw Error(os.str());
-  }
-  const double old = horizon_eps_;
-  horizon_eps_ = eps;
-  try {
-    on_params_changed();
-  } catch (...) {
-    horizon_eps_ = old;
-    on_params_changed();
-    throw;
-  }
-}
+void Metric::set_horizon_eps(double eps) { set_params({{kHorizonEpsKey, eps}}); }
 
 bool Metric::supports_tetrad(TetradKind kind) const {
   return std::find(info_.tetrads.begin(), info_.tetrads.end(), kind) != info_.tetrads.end();
@@ -273,6 +281,27 @@ Vec4 coord_to_local(const Metric& m, const Vec4& x, const Tetrad& e, const Vec4&
   Vec4 r;
   for (int a = 0; a < 4; ++a) r[a] = (a == 0 ? -1.0 : 1.0) * dot(g, e[a], v);
   return r;
+}
+
+std::array<std::array<double, 3>, 3> tidal_matrix(const Metric& m, const Vec4& x, const Tetrad& e) {
+  Riemann R;
+  m.riemann(x, R);
+  Mat4 g;
+  m.metric_tensor(x, g);
+  // R^a_(0)(j)(0) = R^a_{bcd} e0^b ej^c e0^d, then the spatial frame component θ^(i)_a = g(e_i)_a.
+  std::array<std::array<double, 3>, 3> T{};
+  for (int j = 1; j < 4; ++j) {
+    Vec4 v{};
+    for (int a = 0; a < 4; ++a) {
+      double s = 0;
+      for (int b = 0; b < 4; ++b)
+        for (int c = 0; c < 4; ++c)
+          for (int d = 0; d < 4; ++d) s += R.R[a][b][c][d] * e[0][b] * e[j][c] * e[0][d];
+      v[a] = s;
+    }
+    for (int i = 1; i < 4; ++i) T[i - 1][j - 1] = dot(g, e[i], v);
+  }
+  return T;
 }
 
 Vec4 local_null_direction(const Tetrad& e, const Vec3& d, bool past_directed) {

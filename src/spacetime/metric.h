@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -47,6 +48,20 @@ struct MetricInfo {
   std::vector<MetricParam> params;  ///< alphabetical, as Motion4D lists them
   std::vector<TetradKind> tetrads;  ///< supported natural tetrads (catalogue §12)
   std::string doc;                  ///< one line, with the reference for the line element
+  /// Sample observer position (Motion4D's initial position where it is valid): where `geovis
+  /// geodesic` starts without --pos and where the generated tests probe the metric.
+  Vec4 sample_pos{{0.0, 0.0, 0.0, 0.0}};
+  /// Parameter values for which the spacetime is flat (e.g. mass = 0); empty where there are none.
+  std::vector<std::pair<std::string, double>> flat_limit;
+};
+
+/// A function of one coordinate that Motion4D offers for some metrics (effective potential,
+/// circular-orbit velocity, embedding function); printed by `geovis metrics --info NAME`.
+struct MetricFunction {
+  std::string name;      ///< what it is, with its formula
+  std::string variable;  ///< the coordinate it depends on
+  double lo = 0, hi = 0; ///< the range to tabulate
+  std::function<double(double)> f;  ///< NaN where the function is not defined
 };
 
 using DualD = Dual<double>;
@@ -69,7 +84,9 @@ class Metric {
   virtual std::unique_ptr<Metric> clone() const = 0;
 
   // ---- parameters ----
-  double param(std::string_view name) const;  ///< throws Error for an unknown name
+  /// Throws Error for an unknown name. Besides the metric's own parameters every metric accepts
+  /// the key `horizon_eps` (the horizon break margin, set_horizon_eps).
+  double param(std::string_view name) const;
   /// Sets one parameter; throws Error (listing valid names / the allowed range) on a bad name or
   /// value, and re-checks cross-parameter conditions (e.g. |a| <= M).
   void set_param(std::string_view name, double value);
@@ -109,6 +126,10 @@ class Metric {
   double horizon_eps() const { return horizon_eps_; }
   /// Sets the horizon break margin; throws Error unless 0 < eps <= 0.1.
   void set_horizon_eps(double eps);
+
+  /// Motion4D's extras for this metric (effective potential, circular orbits, embedding); empty
+  /// when it offers none.
+  virtual std::vector<MetricFunction> functions() const { return {}; }
 
   /// Natural local tetrad of the given kind at x (paper eq. 2). Throws Error when the kind is not
   /// supported by this metric or not defined at x (e.g. a static observer inside the ergosphere).
@@ -157,6 +178,9 @@ Vec4 local_to_coord(const Tetrad& e, const Vec4& v_local);
 Vec4 coord_to_local(const Metric& m, const Vec4& x, const Tetrad& e, const Vec4& v);
 /// Inverse of a 4x4 matrix (the metric); throws Error when singular.
 Mat4 invert(const Mat4& a);
+/// Tidal matrix T_ij = R^(i)_{(0)(j)(0)} in the frame e (Motion4D's calcTidalMatrix): the relative
+/// acceleration of neighbouring free particles at rest in the frame is d²ξ^i/dτ² = −T_ij ξ^j.
+std::array<std::array<double, 3>, 3> tidal_matrix(const Metric& m, const Vec4& x, const Tetrad& e);
 /// Initial coordinate direction of a light ray for local spatial direction d (need not be unit):
 /// k = ∓e_(0) + d̂^i e_(i) — past-directed (-e0) for backward ray tracing (paper eq. 7).
 Vec4 local_null_direction(const Tetrad& e, const Vec3& d, bool past_directed = true);

@@ -24,7 +24,24 @@
   X(BarriolaVilenkin, "BarriolaVilenkin")       \
   X(JanisNewmanWinicour, "JanisNewmanWinicour") \
   X(Ernst, "Ernst")                             \
-  X(TaubNUT, "TaubNUT")
+  X(TaubNUT, "TaubNUT")                         \
+  X(Goedel, "Goedel")                           \
+  X(GoedelCart, "GoedelCart")                   \
+  X(GoedelScaled, "GoedelScaled")               \
+  X(GoedelScaledCart, "GoedelScaledCart")       \
+  X(Kasner, "Kasner")                           \
+  X(Curzon, "Curzon")                           \
+  X(CosmicStringSchwarzschild, "CosmicStringSchwarzschild") \
+  X(MinkowskiConformal, "MinkowskiConformal")   \
+  X(SchwarzschildTortoise, "SchwarzschildTortoise") \
+  X(MinkowskiRotLattice, "MinkowskiRotLattice")  \
+  X(StraightSpinningString, "StraightSpinningString") \
+  X(BertottiKasner, "BertottiKasner")           \
+  X(DeSitterUnivConformal, "DeSitterUnivConformal") \
+  X(PetrovTypeD_AI, "Petrov_Type_D_AI_ES")       \
+  X(PetrovTypeD_AII, "Petrov_Type_D_AII_ES")     \
+  X(ExtremeReissnerNordstromDihole, "ExtremeReissnerNordstromDihole") \
+  X(SchwarzschildWT, "SchwarzschildWT")
 
 namespace geovis {
 

@@ -247,5 +247,47 @@ TEST(MetricsCmd, JsonHasCoordinatesTetradsAndParameters) {
   EXPECT_TRUE(found);
 }
 
+/// Without --pos and --dir every metric starts at its sample position along e(1), and the ray
+/// keeps g(k,k) = 0 (the constraint column) to the integrator's accuracy.
+TEST(GeodesicCmd, EveryMetricRunsFromItsSamplePosition) {
+  for (const auto& n : metric_names()) {
+    SCOPED_TRACE(n);
+    const Output o = run_args({"geodesic", "--metric", n, "--max-steps", "50"});
+    ASSERT_EQ(o.code, 0) << o.err;
+    const auto ls = lines(o.out);
+    ASSERT_GE(ls.size(), 3u);
+    const std::vector<double> first = csv_numbers(ls[1]);
+    ASSERT_EQ(first.size(), 10u);
+    const Vec4 x = make_metric(n)->info().sample_pos;
+    for (int i = 0; i < 4; ++i) EXPECT_EQ(first[1 + i], x[i]) << i;
+    EXPECT_EQ(ls.back().rfind("# stop: ", 0), 0u) << ls.back();
+  }
+}
+
+TEST(MetricsCmd, TextShowsSamplePositionAndReference) {
+  const Output o = run_args({"metrics"});
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_NE(o.out.find("sample position: (0, 6, 1.570796327, 0)"), std::string::npos) << o.out.substr(0, 2000);
+  EXPECT_NE(o.out.find("arXiv:0904.4184"), std::string::npos);
+}
+
+/// `--info`: Schwarzschild's extras (effective potential, circular orbits, embedding) and the tidal
+/// matrix of the static observer at r = 6: diag(−2M/r³, M/r³, M/r³) = (−0.00925926, 0.00462963, ...).
+TEST(MetricsCmd, InfoPrintsExtrasAndTidalMatrix) {
+  const Output o = run_args({"metrics", "--info", "Schwarzschild"});
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_NE(o.out.find("effective potential"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("circular"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("embedding"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("tidal matrix"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("-0.009259259"), std::string::npos) << o.out;
+  const Output none = run_args({"metrics", "--info", "Minkowski"});
+  ASSERT_EQ(none.code, 0) << none.err;
+  EXPECT_NE(none.out.find("extras:      none"), std::string::npos) << none.out;
+  const Output bad = run_args({"metrics", "--info", "Schwarzschlid"});
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("did you mean \"Schwarzschild\""), std::string::npos) << bad.err;
+}
+
 }  // namespace
 }  // namespace geovis::cli

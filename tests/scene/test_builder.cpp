@@ -140,6 +140,23 @@ TEST(SceneBuilder, LastMetricIsTheDefault) {
   EXPECT_EQ(b.build(1)[0].job.metric->name(), "Minkowski");
 }
 
+/// `horizon_eps` (the horizon break margin, Metric::horizon_eps) is a key of every init-metric.
+TEST(SceneBuilder, HorizonEpsIsAMetricKey) {
+  SceneText s = minkowski_base();
+  s.add("init-metric", {{"type", "Schwarzschild"}, {"horizon_eps", 0.01}, {"id", "bh"}})
+      .add("local-tetrad", {{"pos", vec({0, 30, M_PI / 2, 0})}, {"id", "obsBH"}})
+      .add("init-projector", {{"localtetrad", "obsBH"}, {"id", "projBH"}})
+      .add("init-device", {{"type", "standard"}});
+  SceneBuilder b(s.desc(), {});
+  const auto j0 = b.build(0);
+  EXPECT_DOUBLE_EQ(j0[0].job.metric->horizon_eps(), 0.01);
+  EXPECT_FALSE(j0[0].job.metric->is_valid(Vec4{{0, 2.019, M_PI / 2, 0}}));
+  SceneText bad = minkowski_base();
+  bad.add("init-metric", {{"type", "Schwarzschild"}, {"horizon_eps", 0.5}}).add("init-device", {});
+  const std::string e = error_of(bad);
+  EXPECT_NE(e.find("horizon_eps = 0.5 is out of range"), std::string::npos) << e;
+}
+
 TEST(SceneBuilder, SetparamChangesOnlyItsFrame) {
   SceneText s = minkowski_base();
   s.add("init-device", {{"setparam", setparam("locTedObs", "time", 5.0)},

@@ -64,7 +64,8 @@ std::vector<Case> cases() {
       {"Kottler", {{"mass", 1.0}, {"lambda", 0.05}}, spherical(2.5, 6.2), spherical(2.5, 6.2)},
       {"Kottler", {{"mass", 1.0}, {"lambda", -0.3}}, spherical(1.7, 40), spherical(1.7, 40)},
       {"BarriolaVilenkin", {{"k", 0.7}}, spherical(0.1, 30), spherical(0.1, 30)},
-      {"JanisNewmanWinicour", {{"mass", 1.0}, {"gamma", 0.6}}, spherical(3.4, 30), spherical(3.4, 30)},
+      // Motion4D's break radius r_s (1 + γ)²/(4γ²) = 3.56 for γ = 0.6.
+      {"JanisNewmanWinicour", {{"mass", 1.0}, {"gamma", 0.6}}, spherical(3.6, 30), spherical(3.6, 30)},
       {"JanisNewmanWinicour", {{"mass", 1.0}, {"gamma", 1.0}}, spherical(2.1, 30), spherical(2.1, 30)},
       {"Ernst", {{"mass", 1.0}, {"b", 0.1}}, spherical(2.1, 20), spherical(2.1, 20)},
       {"TaubNUT", {{"mass", 1.0}, {"l", 0.5}}, spherical(2.2, 30), spherical(2.2, 30)},
@@ -312,8 +313,12 @@ TEST(MetricsSpherical, ValidityDomains) {
   EXPECT_FALSE(make_metric("ReissnerNordstrom", {{"charge", 0.8}})->is_valid(Vec4{{0, 0.2, 1, 0}}));  // inside r-
   EXPECT_TRUE(make_metric("ReissnerNordstrom", {{"charge", 1.5}})->is_valid(Vec4{{0, 0.2, 1, 0}}));   // naked
   EXPECT_FALSE(make_metric("TaubNUT")->is_valid(Vec4{{0, 2.1, 1, 0}}));
-  EXPECT_FALSE(make_metric("JanisNewmanWinicour", {{"gamma", 0.5}})->is_valid(Vec4{{0, 3.99, 1, 0}}));
-  EXPECT_TRUE(make_metric("JanisNewmanWinicour", {{"gamma", 0.5}})->is_valid(Vec4{{0, 4.01, 1, 0}}));
+  // γ = 0.5: singularity at r_s/γ = 4, Motion4D's break radius r_s (1 + γ)²/(4γ²) = 4.5.
+  EXPECT_FALSE(make_metric("JanisNewmanWinicour", {{"gamma", 0.5}})->is_valid(Vec4{{0, 4.49, 1, 0}}));
+  EXPECT_TRUE(make_metric("JanisNewmanWinicour", {{"gamma", 0.5}})->is_valid(Vec4{{0, 4.51, 1, 0}}));
+  // γ = 1: Schwarzschild, stopped at the horizon break margin r_s (1 + horizon_eps).
+  EXPECT_FALSE(make_metric("JanisNewmanWinicour")->is_valid(Vec4{{0, 2.0001, 1, 0}}));
+  EXPECT_TRUE(make_metric("JanisNewmanWinicour")->is_valid(Vec4{{0, 2.0003, 1, 0}}));
 }
 
 // ---- physics -----------------------------------------------------------------------------------

@@ -20,7 +20,9 @@ class DeSitterUniv final : public MetricCRTP<DeSitterUniv> {
                     {{"hubble", 0.1, -1e300, 1e300, false, false,
                       "Hubble constant H (scale factor exp(H t); H < 0 is the contracting patch)"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "de Sitter universe, flat slicing (Catalogue of Spacetimes, de Sitter)"}) {
+                    "de Sitter universe, flat slicing (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 0, 0, 0}},
+                    {{"hubble", 0.0}}}) {
     on_params_changed();
   }
 

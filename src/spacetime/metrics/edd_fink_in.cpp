@@ -18,7 +18,9 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
                     CoordType::Spherical,
                     {{"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0 of the black hole (r_s = 2M)"}},
                     {TetradKind::Default, TetradKind::Static, TetradKind::Freefall},
-                    "Schwarzschild black hole in ingoing Eddington-Finkelstein coordinates"}) {
+                    "Schwarzschild black hole in ingoing Eddington-Finkelstein coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 6, M_PI / 2, 0}},
+                    {{"mass", 0.0}}}) {
     on_params_changed();
   }
 

@@ -33,7 +33,9 @@ class EinsteinRosenWaveWWB final : public MetricCRTP<EinsteinRosenWaveWWB> {
                     {{"a", 1.0, 0.0, 1e300, true, false, "width a > 0 of the Weber-Wheeler-Bonnor pulse"},
                      {"c", 1.0, -1e300, 1e300, false, false, "amplitude c of the pulse (c = 0: flat)"}},
                     {TetradKind::Default},
-                    "Einstein-Rosen wave, Weber-Wheeler-Bonnor pulse (Catalogue of Spacetimes)"}) {
+                    "Einstein-Rosen wave, Weber-Wheeler-Bonnor pulse (Weber & Wheeler, RMP 29 (1957) 509; Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 5, 0, 0}},
+                    {{"c", 0.0}}}) {
     on_params_changed();
   }
 

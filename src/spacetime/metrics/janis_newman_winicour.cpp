@@ -6,10 +6,12 @@
 // Schwarzschild; for γ < 1 the surface r = r_s/γ is a naked (curvature) singularity.
 // Photon sphere r = (1 + 2γ) M / γ from d/dr (g_φφ/(−g_tt)) = 0 (outside r_s/γ only for γ > 1/2;
 // Virbhadra, Narasimha & Chitre, Astron. Astrophys. 337 (1998) 1).
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "spacetime/metric_crtp.h"
+#include "spacetime/metrics/static_spherical.h"
 #include "spacetime/metrics/diagonal_metric.h"
 
 namespace geovis {
@@ -25,7 +27,9 @@ class JanisNewmanWinicour final : public MetricCRTP<JanisNewmanWinicour> {
                       "naked singularity at r = 2M/gamma)"},
                      {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0"}},
                     {TetradKind::Default},
-                    "Janis-Newman-Winicour naked singularity, Catalogue of Spacetimes"}) {
+                    "Janis-Newman-Winicour naked singularity (Janis, Newman & Winicour, PRL 20 (1968) 878; Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 6, M_PI / 2, 0}},
+                    {{"mass", 0.0}}}) {
     on_params_changed();
   }
 
@@ -72,9 +76,11 @@ class JanisNewmanWinicour final : public MetricCRTP<JanisNewmanWinicour> {
     diagonal_accel(d, k, a);
   }
 
-  /// Outside the singularity / horizon r = r_s/γ (margin 1e-8 as Schwarzschild), off the axis.
-  /// (Motion4D stops earlier, at its embedding-diagram radius r_s(1+γ)²/(4γ²); we follow the
-  /// geometry and integrate down to the singularity.)
+  /// Outside Motion4D's break radius r_c = r_s (1 + γ)²/(4γ²) (m4dMetricJaNeWi::breakCondition:
+  /// the innermost radius of its embedding diagram, where dz/dr² = r_s (4 r γ² − r_s (1 + γ)²) /
+  /// (4 r² γ² α^(γ+1)) changes sign), and off the axis. r_c >= r_s/γ since (1 + γ)² >= 4γ; at
+  /// γ = 1 both are the horizon r_s, where the break margin horizon_eps applies as in
+  /// Schwarzschild: r_break = max(r_c, (r_s/γ)(1 + horizon_eps)).
   bool is_valid(const Vec4& x) const override {
     return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
@@ -84,6 +90,12 @@ class JanisNewmanWinicour final : public MetricCRTP<JanisNewmanWinicour> {
   /// the singularity r = b only for γ > 1/2 (else h grows everywhere). r is |p|.
   bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
     return escapes_spherical(x[1], k[1], std::max(b_, 0.5 * (1.0 + 2.0 * gamma_) * b_), r_min, x[1], radius);
+  }
+
+  /// Effective potential, circular orbits and embedding (static_spherical.h) from Motion4D's break
+  /// radius (the inner edge of its embedding diagram) outwards.
+  std::vector<MetricFunction> functions() const override {
+    return static_spherical_functions_of(*this, r_min_, r_min_ + 20.0 * std::max(p(1), 0.5));
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
@@ -101,7 +113,8 @@ class JanisNewmanWinicour final : public MetricCRTP<JanisNewmanWinicour> {
   void on_params_changed() override {
     gamma_ = p(0);
     b_ = 2.0 * p(1) / gamma_;
-    r_min_ = b_ > 0.0 ? b_ * (1.0 + 1e-8) : 1e-300;
+    const double f = 0.5 * (1.0 + gamma_) / gamma_;
+    r_min_ = b_ > 0.0 ? std::max(2.0 * p(1) * f * f, b_ * (1.0 + horizon_eps_)) : 1e-300;
   }
 
  private:

@@ -30,7 +30,9 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
                      {"z1", 1.0, -1e300, 1e300, false, false, "z position of black hole 1 (on the z axis)"},
                      {"z2", -1.0, -1e300, 1e300, false, false, "z position of black hole 2 (on the z axis)"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "Kastor-Traschen: two extreme Reissner-Nordstrom black holes in de Sitter (PRD 47 (1993) 5370)"}) {
+                    "Kastor-Traschen: two extreme Reissner-Nordstrom black holes in de Sitter (PRD 47 (1993) 5370)",
+                    Vec4{{0, 3, 0, 0}},
+                    {{"h", 0.0}, {"m1", 0.0}, {"m2", 0.0}}}) {
     on_params_changed();
   }
 

@@ -82,7 +82,9 @@ class KerrBL final : public MetricCRTP<KerrBL> {
                       "specific angular momentum a = J/M of the black hole, |a| <= mass"},
                      {"mass", 1.0, 0.0, 1e300, false, false, "mass M of the black hole (r_s = 2M)"}},
                     {TetradKind::Default, TetradKind::Static, TetradKind::LNRF},
-                    "Kerr black hole in Boyer-Lindquist coordinates (Catalogue of Spacetimes, Kerr)"}) {
+                    "Kerr black hole in Boyer-Lindquist coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 10, M_PI / 2, 0}},
+                    {{"angmom", 0.0}, {"mass", 0.0}}}) {
     on_params_changed();
   }
 

@@ -23,7 +23,9 @@ class Kottler final : public MetricCRTP<Kottler> {
                       "9 Lambda M^2 < 1)"},
                      {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "Schwarzschild-(anti-)de Sitter (Kottler), Catalogue of Spacetimes"}) {
+                    "Schwarzschild-(anti-)de Sitter (Kottler) (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 4, M_PI / 2, 0}},
+                    {{"lambda", 0.0}, {"mass", 0.0}}}) {
     on_params_changed();
   }
 

@@ -25,7 +25,9 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
                     CoordType::Spherical,
                     {{"b0", 1.0, 0.0, 1e300, true, false, "throat radius b0 > 0 of the wormhole"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "Morris-Thorne wormhole, proper radial length l (Catalogue of Spacetimes, Morris-Thorne)"}) {
+                    "Morris-Thorne wormhole, proper radial length l (Morris & Thorne, Am. J. Phys. 56 (1988) 395; Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 5, M_PI / 2, 0}},
+                    {}}) {
     on_params_changed();
   }
 

@@ -19,7 +19,9 @@ class PainleveGullstrand final : public MetricCRTP<PainleveGullstrand> {
                     CoordType::Spherical,
                     {{"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0 of the black hole (r_s = 2M)"}},
                     {TetradKind::Default, TetradKind::Static, TetradKind::Freefall},
-                    "Schwarzschild black hole in Painleve-Gullstrand coordinates"}) {
+                    "Schwarzschild black hole in Painleve-Gullstrand coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 6, M_PI / 2, 0}},
+                    {{"mass", 0.0}}}) {
     on_params_changed();
   }
 
@@ -32,7 +34,8 @@ class PainleveGullstrand final : public MetricCRTP<PainleveGullstrand> {
     const T& r = x[1];
     const T st = sin_t(x[2]);
     g[0][0] = -(1.0 - rs_ / r);
-    g[0][1] = g[1][0] = sqrt(rs_ / r);
+    // M = 0 (Minkowski): no shift; sqrt has no derivative at 0 for automatic differentiation.
+    g[0][1] = g[1][0] = rs_ > 0.0 ? sqrt(rs_ / r) : T(0.0);
     g[1][1] = T(1.0);
     g[2][2] = r * r;
     g[3][3] = r * r * st * st;

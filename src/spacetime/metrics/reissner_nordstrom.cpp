@@ -8,6 +8,7 @@
 #include <string>
 
 #include "spacetime/metric_crtp.h"
+#include "spacetime/metrics/static_spherical.h"
 #include "spacetime/metrics/diagonal_metric.h"
 
 namespace geovis {
@@ -23,7 +24,9 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
                       "r+ = M + sqrt(M^2 - Q^2), |Q| > M: naked singularity at r = 0"},
                      {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "charged black hole (Reissner-Nordstrom), Catalogue of Spacetimes"}) {
+                    "charged black hole (Reissner-Nordstrom) (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 6, M_PI / 2, 0}},
+                    {{"charge", 0.0}, {"mass", 0.0}}}) {
     on_params_changed();
   }
 
@@ -72,6 +75,12 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
     const double disc = 9.0 * M_ * M_ - 8.0 * Q2_;
     const double r_photon = disc >= 0.0 ? 0.5 * (3.0 * M_ + std::sqrt(disc)) : 0.0;
     return escapes_spherical(x[1], k[1], r_photon, r_min, x[1], radius);
+  }
+
+  /// Effective potential, circular orbits and embedding (static_spherical.h) from r_+ (or, for a
+  /// naked singularity, from r_min) outwards.
+  std::vector<MetricFunction> functions() const override {
+    return static_spherical_functions_of(*this, r_plus_ > 0.0 ? r_plus_ : r_min_, 20.0 * std::max(M_, 0.5));
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {

@@ -28,7 +28,9 @@ class RotDihole final : public MetricCRTP<RotDihole> {
                      {"mass2", 1.0, 0.0, 1e300, false, false, "mass (= charge) M2 >= 0 of hole 2, at (0, sin wt, -cos wt)"},
                      {"omega", 0.0, -1e300, 1e300, false, false, "angular frequency w of the holes' revolution about the x axis"}},
                     {TetradKind::Default},
-                    "extreme Reissner-Nordstrom dihole, optionally revolving (Motion4D RotDihole)"}) {
+                    "extreme Reissner-Nordstrom dihole, optionally revolving (Motion4D RotDihole; Majumdar-Papapetrou, Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 3, 0, 0}},
+                    {{"mass1", 0.0}, {"mass2", 0.0}}}) {
     on_params_changed();
   }
 

@@ -3,6 +3,7 @@
 // Christoffel symbols and natural tetrad: Müller & Grave, Catalogue of Spacetimes
 // (arXiv:0904.4184) §2.2.1; tetrad = paper eq. (2).
 #include "spacetime/metric_crtp.h"
+#include "spacetime/metrics/static_spherical.h"
 
 namespace geovis {
 
@@ -14,7 +15,9 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
                     CoordType::Spherical,
                     {{"mass", 1.0, 0.0, 1e300, false, false, "mass M of the black hole (r_s = 2M)"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "Schwarzschild black hole in Schwarzschild coordinates"}) {
+                    "Schwarzschild black hole in Schwarzschild coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 6, M_PI / 2, 0}},
+                    {{"mass", 0.0}}}) {
     on_params_changed();
   }
 
@@ -77,6 +80,15 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
   /// r = 3M = 1.5 r_s ((h²)' ∝ r − 3M) and grows beyond it; r is |p|.
   bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
     return escapes_spherical(x[1], k[1], 1.5 * rs_, r_min, x[1], radius);
+  }
+
+  /// Effective potential, circular orbits (β² = M/(r − 2M)) and embedding z = √(8M(r − 2M))
+  /// (static_spherical.h) from the horizon outwards.
+  std::vector<MetricFunction> functions() const override {
+    const double rs = rs_;
+    return static_spherical_functions(
+        [rs](double r) { return StaticSphericalFunctions{1.0 - rs / r, rs / (r * r), 1.0 / (1.0 - rs / r), r * r, 2.0 * r}; },
+        rs, 10.0 * std::max(rs, 1.0));
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {

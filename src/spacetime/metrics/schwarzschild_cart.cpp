@@ -20,7 +20,9 @@ class SchwarzschildCart final : public MetricCRTP<SchwarzschildCart> {
                     CoordType::Cartesian,
                     {{"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0 of the black hole (r_s = 2M)"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "Schwarzschild black hole in pseudo-Cartesian coordinates"}) {
+                    "Schwarzschild black hole in pseudo-Cartesian coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 6, 0, 0}},
+                    {{"mass", 0.0}}}) {
     on_params_changed();
   }
 

@@ -20,7 +20,9 @@ class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
                     {{"mass", 1.0, 0.0, 1e300, false, false,
                       "mass M >= 0 of the black hole (horizon at rho = M/2)"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "Schwarzschild black hole in isotropic coordinates, Catalogue of Spacetimes"}) {
+                    "Schwarzschild black hole in isotropic coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 6, 0, 0}},
+                    {{"mass", 0.0}}}) {
     on_params_changed();
   }
 

@@ -21,7 +21,9 @@ class TaubNUT final : public MetricCRTP<TaubNUT> {
                       "NUT parameter l (gravitomagnetic monopole; any real, l = 0 is Schwarzschild)"},
                      {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0 (horizon r+ = M + sqrt(M^2 + l^2))"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "Taub-NUT spacetime, Catalogue of Spacetimes"}) {
+                    "Taub-NUT spacetime (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    Vec4{{0, 6, M_PI / 2, 0}},
+                    {{"l", 0.0}, {"mass", 0.0}}}) {
     on_params_changed();
   }
 

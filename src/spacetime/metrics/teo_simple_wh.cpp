@@ -33,7 +33,9 @@ class TeoSimpleWH final : public MetricCRTP<TeoSimpleWH> {
                     CoordType::Spherical,
                     {{"b0", 1.0, 0.0, 1e300, true, false, "throat radius b0 > 0 of the rotating wormhole"}},
                     {TetradKind::Default, TetradKind::Static, TetradKind::LNRF},
-                    "Teo's rotating wormhole with N = 1 and omega = b0^2/(2 r^3) (Teo, PRD 58 (1998) 024014)"}) {
+                    "Teo's rotating wormhole with N = 1 and omega = b0^2/(2 r^3) (Teo, PRD 58 (1998) 024014)",
+                    Vec4{{0, 5, M_PI / 2, 0}},
+                    {}}) {
     on_params_changed();
   }
 

@@ -1,0 +1,109 @@
+// Schwarzschild black hole pierced by a straight cosmic string along the axis (Motion4D
+// "CosmicStringSchwarzschild"; Aryal, Ford & Vilenkin, Phys. Rev. D 34 (1986) 2263; Müller &
+// Grave, Catalogue of Spacetimes, arXiv:0904.4184, "Cosmic string in Schwarzschild spacetime"):
+//   ds² = −(1 − r_s/r) dt² + dr²/(1 − r_s/r) + r² (dθ² + β² sin²θ dφ²),  r_s = 2M,
+// i.e. Schwarzschild with the azimuth φ ∈ [0, 2π) covering only the angle 2πβ: a conical deficit
+// 2π(1 − β) around the axis (β = 1 − 4μ for a string of linear mass density μ). Locally it is
+// Schwarzschild (vacuum, the same curvature); globally light is deflected at the string.
+// Christoffel symbols: those of Schwarzschild with g_φφ multiplied by β² (diagonal_metric.h; the
+// factor cancels in every Γ^φ and gives Γ^r_φφ, Γ^θ_φφ a factor β²). Natural tetrad: static,
+// e_(3) = ∂_φ/(β r sin θ). Stop at the horizon break radius r_s (1 + horizon_eps).
+#include <cmath>
+
+#include "spacetime/metric_crtp.h"
+#include "spacetime/metrics/diagonal_metric.h"
+#include "spacetime/metrics/static_spherical.h"
+
+namespace geovis {
+
+class CosmicStringSchwarzschild final : public MetricCRTP<CosmicStringSchwarzschild> {
+ public:
+  CosmicStringSchwarzschild()
+      : MetricCRTP({"CosmicStringSchwarzschild",
+                    {"t", "r", "theta", "phi"},
+                    CoordType::Spherical,
+                    {{"beta", 0.5, 0.0, 1.0, true, false,
+                      "cone factor beta in (0, 1]: the azimuth covers 2 pi beta (beta = 1: Schwarzschild)"},
+                     {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0 of the black hole (r_s = 2M)"}},
+                    {TetradKind::Default},
+                    "Schwarzschild black hole with a cosmic string (Aryal, Ford & Vilenkin, PRD 34 (1986) 2263; "
+                    "Mueller & Grave, arXiv:0904.4184)",
+                    Vec4{{0, 10, M_PI / 2, 0}},
+                    {{"beta", 1.0}, {"mass", 0.0}}}) {
+    on_params_changed();
+  }
+
+  template <class T>
+  void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+    const T& r = x[1];
+    const T f = 1.0 - rs_ / r;
+    const T st = sin_t(x[2]);
+    g[0][0] = -f;
+    g[1][1] = 1.0 / f;
+    g[2][2] = r * r;
+    g[3][3] = b2_ * r * r * st * st;
+  }
+
+  void diagonal(const Vec4& x, DiagonalMetric& d) const {
+    const double r = x[1], f = 1.0 - rs_ / r, df = rs_ / (r * r);
+    spherical_diagonal(f, df, 1.0 / f, -df / (f * f), r * r, 2.0 * r, x[2], d);
+    d.h[3] *= b2_;
+    for (int c = 0; c < 4; ++c) d.dh[c][3] *= b2_;
+  }
+
+  void christoffel_closed(const Vec4& x, Christoffel& G) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_christoffel(d, G);
+  }
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
+    DiagonalMetric d;
+    diagonal(x, d);
+    diagonal_accel(d, k, a);
+  }
+
+  /// Outside the horizon break radius r_s (1 + horizon_eps), off the axis (the string).
+  bool is_valid(const Vec4& x) const override {
+    return x[1] > r_break_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;
+  }
+
+  /// Effective potential, circular orbits and embedding of the equatorial plane, where g_φφ = β² r²
+  /// (static_spherical.h with C = β² r²: the cone z' = √(1 − β²) in flat space for M = 0).
+  std::vector<MetricFunction> functions() const override {
+    const double rs = rs_, b2 = b2_;
+    return static_spherical_functions(
+        [rs, b2](double r) {
+          return StaticSphericalFunctions{1.0 - rs / r, rs / (r * r), 1.0 / (1.0 - rs / r), b2 * r * r, 2.0 * b2 * r};
+        },
+        rs, rs + 20.0 * std::max(0.5 * rs, 0.5));
+  }
+
+  Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
+    require_tetrad_kind(kind);
+    DiagonalMetric d;
+    Tetrad e;
+    if (x[1] > rs_) diagonal(x, d);
+    if (!(x[1] > rs_) || !diagonal_static_tetrad(d.h, e))
+      throw Error("CosmicStringSchwarzschild: no static observer at r = " + std::to_string(x[1]) +
+                  " (needs r > r_s = " + std::to_string(rs_) + " and sin(theta) != 0)");
+    return e;
+  }
+
+ protected:
+  void on_params_changed() override {
+    b2_ = p(0) * p(0);
+    rs_ = 2.0 * p(1);
+    r_break_ = rs_ > 0.0 ? rs_ * (1.0 + horizon_eps_) : 1e-300;
+  }
+
+ private:
+  double b2_ = 0.25, rs_ = 2.0, r_break_ = 2.0;
+};
+
+std::unique_ptr<Metric> make_metric_CosmicStringSchwarzschild() {
+  return std::make_unique<CosmicStringSchwarzschild>();
+}
+
+}  // namespace geovis

@@ -1,0 +1,281 @@
+// The metrics added from Motion4D's catalogue (Goedel family, Kasner, Curzon,
+// CosmicStringSchwarzschild, MinkowskiConformal, SchwarzschildTortoise, MinkowskiRotLattice,
+// StraightSpinningString, ExtremeReissnerNordstromDihole) beyond the generated registry tests
+// (test_metrics_registry.cpp): closed-form Christoffel symbols against AD at non-default parameters
+// and away from the sample position, tetrads of every kind, and physics with independent
+// expectations (Gödel's field equations, the Einstein static universe's null cone, the tortoise
+// radial light rays, the rotating lattice and spinning string seen from inertial frames,
+// Motion4D's k^t rescaling of AlcubierreWarpSimple, Majumdar–Papapetrou as an electrovacuum).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <random>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "metric_checks.h"
+#include "spacetime/metric_registry.h"
+
+using namespace geovis;
+namespace mc = geovis::metric_checks;
+
+namespace {
+
+using Params = std::vector<std::pair<std::string, double>>;
+
+double uni(std::mt19937& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+
+}  // namespace
+
+/// Christoffel symbols (closed form vs AD) and tetrads at random points and parameters.
+TEST(MetricsCatalogue, ChristoffelsAndTetradsAtRandomPointsAndParameters) {
+  std::mt19937 rng(11);
+  struct Case {
+    std::string name;
+    Params params;
+    std::function<Vec4(std::mt19937&)> point;
+  };
+  const std::vector<Case> cases = {
+      {"Goedel", {{"a", 0.7}, {"zeta", 0.2}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.1, 1.2), uni(r, -3, 3), uni(r, -5, 5)}}; }},
+      {"GoedelScaled", {{"rg", 2.5}, {"zeta", -0.3}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.1, 0.8), uni(r, -3, 3), uni(r, -5, 5)}}; }},
+      {"GoedelCart", {{"a", 0.7}, {"zeta", 0.2}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -0.8, 0.8), uni(r, -0.8, 0.8), uni(r, -5, 5)}}; }},
+      {"GoedelScaledCart", {{"rg", 2.5}, {"zeta", -0.3}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -0.5, 0.5), uni(r, -0.5, 0.5), uni(r, -5, 5)}}; }},
+      {"Kasner", {{"u", 2.5}},
+       [](std::mt19937& r) { return Vec4{{uni(r, 0.2, 5), uni(r, -5, 5), uni(r, -5, 5), uni(r, -5, 5)}}; }},
+      {"Curzon", {{"mass", 1.7}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.5, 8), uni(r, -3, 3), uni(r, -6, 6)}}; }},
+      {"CosmicStringSchwarzschild", {{"mass", 0.8}, {"beta", 0.3}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.7, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
+      {"MinkowskiConformal", {},
+       [](std::mt19937& r) { return Vec4{{uni(r, -3, 3), uni(r, 0.1, 3.0), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
+      {"SchwarzschildTortoise", {{"mass", 1.3}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -10, 40), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
+      {"MinkowskiRotLattice", {{"omega", 0.3}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.1, 3.2), uni(r, -3, 3), uni(r, -5, 5)}}; }},
+      {"StraightSpinningString", {{"a", 0.7}, {"k", 0.6}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.3, 9), uni(r, -3, 3), uni(r, -5, 5)}}; }},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const auto m = make_metric(c.name, c.params);
+    for (int i = 0; i < 30; ++i) {
+      const Vec4 x = c.point(rng);
+      ASSERT_TRUE(m->is_valid(x)) << x[0] << " " << x[1] << " " << x[2] << " " << x[3];
+      mc::expect_christoffel_matches_ad(*m, x, mc::kRuleRel, mc::kRuleFloorFrac);
+      mc::expect_accel_matches_ad(*m, x, Vec4{{uni(rng, -1, 1), uni(rng, -1, 1), uni(rng, -1, 1), uni(rng, -1, 1)}},
+                                  mc::kRuleRel, mc::kRuleFloorFrac);
+      for (TetradKind k : m->info().tetrads) mc::expect_orthonormal(*m, x, k);
+    }
+  }
+}
+
+/// Gödel's field equations: R_ab = u_a u_b/a² for the dust 4-velocity u = ∂_t (Gödel, RMP 21
+/// (1949) 447: dust of density ρ with 8πρ = 1/a² and Λ = −1/(2a²)), in all four charts.
+TEST(MetricsCatalogue, GoedelRicciIsDustAlongTheTimeLines) {
+  for (const auto& [name, a, scale] : std::vector<std::tuple<std::string, double, double>>{
+           {"Goedel", 0.8, 1.0}, {"GoedelCart", 0.8, 1.0}, {"GoedelScaled", 0.5, 3.0}, {"GoedelScaledCart", 0.5, 3.0}}) {
+    SCOPED_TRACE(name);
+    const bool scaled = name.find("Scaled") != std::string::npos;
+    const auto m = scaled ? make_metric(name, {{"rg", scale}}) : make_metric(name, {{"a", a}});
+    // Scaled charts: r_G² times the a = 1/2 metric; R_ab is unchanged by the constant factor and
+    // u_a (of the unit vector n = ∂_T/√(−g_TT)) grows by r_G, so R_ab = u_a u_b/(r_G/2)².
+    const double a_eff = scaled ? 0.5 * scale : a;
+    for (const Vec4& x : {Vec4{{0.3, 0.4, 0.2, -1.0}}, Vec4{{-2.0, 0.25, 1.3, 2.0}}}) {
+      Mat4 g;
+      m->metric_tensor(x, g);
+      double riemann_scale = 0;
+      const Mat4 ric = mc::ricci(*m, x, &riemann_scale);
+      const double n0 = 1.0 / std::sqrt(-g[0][0]);
+      // u_a = g_ab n^b for n = n0 ∂_0.
+      Vec4 u;
+      for (int b = 0; b < 4; ++b) u[b] = g[b][0] * n0;
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+          EXPECT_NEAR(ric[i][j], u[i] * u[j] / (a_eff * a_eff), 1e-10 * riemann_scale) << i << j;
+    }
+  }
+}
+
+/// MinkowskiConformal: the conformal map t ± r = tan((ψ ± ξ)/2) of a straight Minkowski light ray
+/// r(t) through the origin's neighbourhood is a null geodesic of the Einstein static universe: a
+/// ray started at (ψ, ξ) radially outwards keeps ψ − ξ constant (radial null lines).
+TEST(MetricsCatalogue, MinkowskiConformalRadialRaysAreStraightInThePenroseDiagram) {
+  const auto m = make_metric("MinkowskiConformal");
+  const Vec4 x{{-1.0, 0.5, 1.1, 0.4}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{1, 0, 0}, /*past_directed=*/false);
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 500;
+  double worst = 0;
+  auto cb = [&](const StepView& s) {
+    worst = std::max(worst, std::fabs((s.y1[0] - s.y1[1]) - (x[0] - x[1])));
+    return StepAction::Continue;
+  };
+  const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_EQ(r.reason, StopReason::Invalid);  // reaches ξ = π (the antipode of the Einstein universe)
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_NEAR(y[1], M_PI, 1e-2);
+}
+
+/// SchwarzschildTortoise: radial light rays are t ∓ ρ = const, and the chart's areal radius
+/// satisfies ρ = r + r_s ln(r/r_s − 1) (checked through to_pseudo_cartesian).
+TEST(MetricsCatalogue, SchwarzschildTortoiseRadialLightRaysAndArealRadius) {
+  const double M = 1.3, rs = 2 * M;
+  const auto m = make_metric("SchwarzschildTortoise", {{"mass", M}});
+  for (double rho : {-20.0, -1.0, 3.0, 50.0}) {
+    Vec3 p;
+    m->to_pseudo_cartesian(Vec4{{0, rho, M_PI / 2, 0}}, p);
+    const double r = norm(p);
+    EXPECT_NEAR(r + rs * std::log(r / rs - 1), rho, 1e-12 * std::max(1.0, std::fabs(rho))) << rho;
+    const Vec4 back = m->from_pseudo_cartesian(0.0, p);
+    EXPECT_NEAR(back[1], rho, 1e-9 * std::max(1.0, std::fabs(rho)));
+  }
+  const Vec4 x{{0, 10.0, 1.0, 0.3}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{1, 0, 0}, false);
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 300;
+  double worst = 0;
+  auto cb = [&](const StepView& s) {
+    worst = std::max(worst, std::fabs((s.y1[0] - s.y1[1]) - (x[0] - x[1])));
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_LT(worst, 1e-8 * std::max(1.0, y[1]));
+  EXPECT_GT(y[1], 20.0);
+}
+
+/// MinkowskiRotLattice: a light ray of the rotating frame is a straight line of the inertial frame
+/// (x, y) = (r cos(φ + ω t), r sin(φ + ω t)); its LNRF observer is the inertial one at rest.
+TEST(MetricsCatalogue, MinkowskiRotLatticeRaysAreInertialStraightLines) {
+  const double w = 0.2;
+  const auto m = make_metric("MinkowskiRotLattice", {{"omega", w}});
+  const Vec4 x{{0, 1.5, 0.3, 0.2}};
+  const Tetrad e = m->natural_tetrad(x, TetradKind::LNRF);
+  // The LNRF observer's e_(0) = ∂_t − ω ∂_φ: dφ/dt = −ω, i.e. at rest in the inertial frame.
+  EXPECT_NEAR(e[0][2] / e[0][0], -w, 1e-15);
+  const Vec4 k = local_null_direction(e, Vec3{0.3, 1, 0.2}, false);
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  auto inertial = [w](const double* s) {
+    return Vec3{s[1] * std::cos(s[2] + w * s[0]), s[1] * std::sin(s[2] + w * s[0]), s[3]};
+  };
+  const Vec3 p0 = inertial(y);
+  // Inertial velocity: dX/dt at the start, from k.
+  const double c = std::cos(x[2]), s = std::sin(x[2]);
+  const Vec3 v{(k[1] * c - x[1] * s * (k[2] + w * k[0])) / k[0], (k[1] * s + x[1] * c * (k[2] + w * k[0])) / k[0],
+               k[3] / k[0]};
+  EXPECT_NEAR(norm(v), 1.0, 1e-12);  // light moves at c in the inertial frame
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 2000;
+  double worst = 0;
+  auto cb = [&](const StepView& st) {
+    const Vec3 p = inertial(st.y1);
+    const Vec3 expect = p0 + v * (st.y1[0] - x[0]);
+    worst = std::max(worst, norm(p - expect));
+    return StepAction::Continue;
+  };
+  const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_EQ(r.reason, StopReason::Invalid);  // leaves through the light cylinder r = 1/ω = 5
+  EXPECT_NEAR(y[1], 1 / w, 1e-2);
+  EXPECT_LT(worst, 1e-8);
+}
+
+/// StraightSpinningString: with t' = t − a φ and φ' = k φ the metric is Minkowski in cylindrical
+/// coordinates, so light rays are straight lines of (ρ cos kφ, ρ sin kφ, z) and move with unit
+/// speed in t − a φ.
+TEST(MetricsCatalogue, StraightSpinningStringIsMinkowskiInDisguise) {
+  const double a = 0.7, kk = 0.6;
+  const auto m = make_metric("StraightSpinningString", {{"a", a}, {"k", kk}});
+  const Vec4 x{{0, 4.0, 0.2, 0.5}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{-0.8, 0.5, 0.1}, false);
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  auto flat = [kk](const double* s) {
+    return Vec3{s[1] * std::cos(kk * s[2]), s[1] * std::sin(kk * s[2]), s[3]};
+  };
+  const Vec3 p0 = flat(y);
+  const double tp0 = x[0] - a * x[2];
+  std::vector<std::pair<double, Vec3>> pts;
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 400;
+  cfg.lambda_max = 40;  // a bounded stretch: the test compares absolute positions
+  auto cb = [&](const StepView& st) {
+    pts.emplace_back(st.y1[0] - a * st.y1[2], flat(st.y1));
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  ASSERT_GT(pts.size(), 10u);
+  const Vec3 v = (pts.back().second - p0) * (1.0 / (pts.back().first - tp0));
+  EXPECT_NEAR(norm(v), 1.0, 1e-8);
+  for (const auto& [tp, p] : pts) EXPECT_LT(norm(p - (p0 + v * (tp - tp0))), 1e-8);
+}
+
+/// AlcubierreWarpSimple rescales a light ray's k to |k^t| = 1 after every accepted step (Motion4D's
+/// resize); timelike geodesics are not rescaled and keep their normalization.
+TEST(MetricsCatalogue, AlcubierreRescalesKtToOneAfterEveryStep) {
+  for (const std::string name : {"AlcubierreWarpSimple"}) {
+    SCOPED_TRACE(name);
+    const auto m = make_metric(name, {{"vs", 1.5}});
+    const Vec4 x{{0, -3, 0.3, 0.1}};
+    const Vec4 k = local_null_direction(m->natural_tetrad(x, TetradKind::Comoving), Vec3{1, 0.05, 0}, false);
+    double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+    SolverConfig cfg;
+    cfg.eps_abs = 1e-10;
+    cfg.max_steps = 400;
+    int steps = 0;
+    auto cb = [&](const StepView& s) {
+      ++steps;
+      EXPECT_NEAR(std::fabs(s.y1[4]), 1.0, 1e-15);
+      return StepAction::Continue;
+    };
+    m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+    EXPECT_GT(steps, 20);
+    // Timelike geodesics keep their normalization (no rescaling).
+    const Vec4 u = local_four_velocity(m->natural_tetrad(x, TetradKind::Comoving), Vec3{0.2, 0, 0});
+    double z[8] = {x[0], x[1], x[2], x[3], u[0], u[1], u[2], u[3]};
+    cfg.type = GeodesicType::Timelike;
+    cfg.max_steps = 50;
+    const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, z, 0.0, {});
+    EXPECT_LT(std::fabs(r.constraint_drift), 1e-8);
+  }
+}
+
+/// Majumdar–Papapetrou is an electrovacuum (traceless Maxwell stress): R = g^ab R_ab = 0 while R_ab
+/// itself does not vanish; far from the holes U → 1 + (m1 + m2)/r, so g_tt → −(1 − 2(m1 + m2)/r).
+TEST(MetricsCatalogue, ExtremeReissnerNordstromDiholeIsElectrovac) {
+  const auto m = make_metric("ExtremeReissnerNordstromDihole", {{"m1", 1.0}, {"m2", 0.5}});
+  std::mt19937 rng(3);
+  for (int i = 0; i < 10; ++i) {
+    const Vec4 x{{uni(rng, -3, 3), uni(rng, -4, 4), uni(rng, -4, 4), uni(rng, -4, 4)}};
+    if (!m->is_valid(x)) continue;
+    mc::expect_christoffel_matches_ad(*m, x, mc::kRuleRel, mc::kRuleFloorFrac);
+    double scale = 0;
+    const Mat4 ric = mc::ricci(*m, x, &scale);
+    Mat4 g;
+    m->metric_tensor(x, g);
+    const Mat4 gi = invert(g);
+    double R = 0, rmax = 0;
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        R += gi[a][b] * ric[a][b];
+        rmax = std::max(rmax, std::fabs(ric[a][b]));
+      }
+    EXPECT_LT(std::fabs(R), 1e-10 * scale);
+    EXPECT_GT(rmax, 1e-6 * scale);
+  }
+  Mat4 g;
+  const double r = 1e4;
+  m->metric_tensor(Vec4{{0, r, 0, 0}}, g);
+  EXPECT_NEAR(-g[0][0], 1.0 - 2.0 * 1.5 / r, 1e-7);
+}
