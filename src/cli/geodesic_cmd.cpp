@@ -165,7 +165,7 @@ int run_geodesic(const GeodesicArgs& a) {
     if (!finite || !(std::fabs(gkk - target) <= 1e-8 * std::max(size, 1.0)))
       throw Error(std::string("--dir: the start vector k = (") + fmt(k[0]) + ", " + fmt(k[1]) + ", " + fmt(k[2]) +
                   ", " + fmt(k[3]) + ") is not " + (type == GeodesicType::Lightlike ? "null" : "a unit timelike vector") +
-                  ": g(k,k) = " + fmt(gkk) + " instead of " + fmt(target) + " (direction \"" + a.dir + "\")");
+                  ": g(k,k) = " + fmt(gkk) + " instead of " + fmt(target) + " (direction \"" + dir + "\")");
   }
 
   // ---- integrate, collecting points ----
