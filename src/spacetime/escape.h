@@ -17,7 +17,7 @@
 // so dr/dλ never vanishes and r grows monotonically; where AB → 1 (asymptotic flatness)
 // (dr/dλ)² stays above a positive bound, so the ray reaches r = ∞. escapes_spherical() below is
 // this test; every metric that uses it states its r_photon with the derivation of h' > 0 beyond
-// it (test Escape.SphericalPhotonSphereRadii checks h' numerically).
+// it (test Escape.OutwardRadialRayStopsJustOutsideTheOutermostPhotonSphere finds h' = 0 numerically).
 //
 // The Kerr family (kerr_mino.h, KerrMinoConstants::no_radial_turning_point_beyond) uses a test
 // on the radial potential R(r) = (dr/dσ)² instead, as the photon region is not a sphere there.

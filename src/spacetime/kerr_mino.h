@@ -86,7 +86,7 @@ struct KerrMinoConstants {
   /// at every r > 3M (outside the photon sphere): R ≥ 0 means K ≤ E²r³/(r − 2M), whence
   /// R' = 4E²r³ − 2K(r − M) ≥ 2E²r³(r − 3M)/(r − 2M) > 0 and R'' = 12E²r² − 2K ≥ 2E²r²(5r − 12M)/(r − 2M) > 0;
   /// for a ≠ 0 it holds from about r ≳ √(K/E²) on, i.e. right after the periastron of a ray that
-  /// passes far outside the photon region (test Escape.KerrTestIsSafeAndPrompt).
+  /// passes far outside the photon region (tests Escape.EscapedRaysNeverTurnBack, Escape.Kerr*).
   bool no_radial_turning_point_beyond(double r) const {
     const double c4 = E * E - mu2, c3 = 2.0 * M * mu2, c2 = 2.0 * E * c - a2 * mu2 - K, c1 = 2.0 * M * K,
                  c0 = c * c - a2 * K;
