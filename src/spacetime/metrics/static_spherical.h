@@ -47,6 +47,7 @@ inline std::vector<MetricFunction> static_spherical_functions(
                    // Substitution r = r0 + u² (dr = 2u du) removes the 1/√(r − r0) singularity of
                    // dz/dr at a horizon; then composite 5-point Gauss–Legendre in u.
                    if (!(r >= r0)) return NAN;
+                   if (r == r0) return 0.0;
                    const double U = std::sqrt(r - r0);
                    constexpr int kPanels = 64;
                    static constexpr double xg[5] = {0.0, -0.5384693101056831, 0.5384693101056831,
