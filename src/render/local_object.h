@@ -70,9 +70,10 @@ class LocalFrame {
 /// An object (usually a compound or primitive of gpObjTypeLocal) seen through a local frame.
 class LocalObject final : public SceneObject {
  public:
-  /// Largest angle (radians) the frame may turn during one tested piece of a segment: the
-  /// frozen-frame chord is then off by at most R/128 at distance R from the axis.
-  static constexpr double kMaxTurnPerPiece = 1.0 / 64;
+  /// Largest angle (radians) the frame may turn during one tested piece of a segment: the chord
+  /// between the piece's ends (each mapped at its own time) then lies within R·θ²/8 = R/2048 of
+  /// the ray's true path at distance R from the axis.
+  static constexpr double kMaxTurnPerPiece = 1.0 / 16;
   static constexpr int kMaxPieces = 4096;
   LocalObject(SceneObjectPtr child, LocalFrame frame);
   bool intersect(const Segment& seg, Hit& hit) const override;
