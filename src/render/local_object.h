@@ -12,10 +12,11 @@
 // path is tested against the object at rest in that frame, which accounts for the light travel
 // time across the object. For a rotating or accelerated frame τ is re-evaluated at the hit event
 // and the test repeated until τ is stable. For a rotating frame the frozen-frame chord is right
-// only near the event of τ: where the frame turns by more than kMaxTurnPerPiece during the part of
-// the segment inside the world tube, that part is cut into pieces, each with its own τ, so that a
-// thin object far from the axis (a clock hand's tip) is not missed by a chord taken at the wrong
-// time. The hit's point/normal/ray_dir are in the local frame.
+// only near the event of τ: the hit is first found on the chord between the segment's ends each
+// mapped with the frame of its own time (continuous from segment to segment), then refined as
+// above; where the frame turns by more than kMaxTurnPerPiece during the part of the segment inside
+// the world tube, that part is cut into pieces. So a thin object far from the axis (a clock
+// hand's tip) is not missed. The hit's point/normal/ray_dir are in the local frame.
 #pragma once
 
 #include <memory>
@@ -69,9 +70,10 @@ class LocalFrame {
 /// An object (usually a compound or primitive of gpObjTypeLocal) seen through a local frame.
 class LocalObject final : public SceneObject {
  public:
-  /// Largest angle (radians) the frame may turn during one tested piece of a segment: the
-  /// frozen-frame chord is then off by at most R/128 at distance R from the axis.
-  static constexpr double kMaxTurnPerPiece = 1.0 / 64;
+  /// Largest angle (radians) the frame may turn during one tested piece of a segment: the chord
+  /// between the piece's ends (each mapped at its own time) then lies within R·θ²/8 = R/2048 of
+  /// the ray's true path at distance R from the axis.
+  static constexpr double kMaxTurnPerPiece = 1.0 / 16;
   static constexpr int kMaxPieces = 4096;
   LocalObject(SceneObjectPtr child, LocalFrame frame);
   bool intersect(const Segment& seg, Hit& hit) const override;

@@ -206,6 +206,8 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
     }
     return StepAction::Stop;
   };
+  double y0_ray[8];
+  for (int i = 0; i < 8; ++i) y0_ray[i] = y[i];
   const GeodesicResult gr = m.integrate(cfg_, system_, y, 0.0, on_step);
   stats.steps += gr.steps;
   stats.rhs_evals += gr.rhs_evals;
@@ -215,7 +217,21 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
     res.pos = vec4_at(y);
     res.k = vec4_at(y + 4);
     res.lambda = gr.lambda;
-    res.color = stop_color(gr.reason);
+    res.reason = gr.reason;
+    if (system_ == GeodesicSystem::Jacobi && (gr.reason == StopReason::StepUnderflow ||
+                                              gr.reason == StopReason::NotFinite || gr.reason == StopReason::MaxSteps)) {
+      // The Jacobi fields ride along without acting on the ray, but they diverge at a horizon
+      // and can stop the step control before the ray reaches the metric's break radius. The
+      // ray's fate must not depend on the filter (GeoViS gives a ray that runs into the hole its
+      // constraint colour in every filter): the geodesic alone decides how it ends.
+      double yg[kMaxSystemDim] = {};
+      for (int i = 0; i < 8; ++i) yg[i] = y0_ray[i];
+      const GeodesicResult g2 = m.integrate(cfg_, GeodesicSystem::Geodesic, yg, 0.0, {});
+      stats.steps += g2.steps;
+      stats.rhs_evals += g2.rhs_evals;
+      res.reason = g2.reason;
+    }
+    res.color = stop_color(res.reason);
     return res;
   }
 

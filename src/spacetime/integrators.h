@@ -838,18 +838,6 @@ struct MetricSystem {
     }
     scale = std::max(h, std::fabs(target));
   }
-  /// Components from F::kPassiveFrom on are carried along the geodesic without feeding back into
-  /// it (JacobiRHS: the screen vectors and the Jacobi matrix). They are controlled to eps_abs
-  /// relative to their size where it exceeds 1: the Jacobi matrix grows like the distance
-  /// travelled and, like the screen vectors' coordinate components, diverges at a horizon, where
-  /// an absolute tolerance would stall the step control (StepUnderflow) before the geodesic reaches
-  /// the break radius; the ray's own fate then depends on the filter, which in GeoViS it does not.
-  void tolerance_inv_scale(const double* y, double* is) const
-    requires requires { F::kPassiveFrom; }
-  {
-    for (int i = 0; i < F::kPassiveFrom; ++i) is[i] = 1.0;
-    for (int i = F::kPassiveFrom; i < N; ++i) is[i] = 1.0 / std::max(1.0, std::fabs(y[i]));
-  }
   /// Motion4D's Metric::resize, called after every accepted step: a metric may rescale the
   /// direction of a light ray with `void rescale_null_direction(double* k) const`
   /// (AlcubierreWarpSimple: |k^t| = 1). A null geodesic stays the same curve under k -> c k (only

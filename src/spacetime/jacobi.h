@@ -135,8 +135,6 @@ inline void optical_tidal_matrix_inline(const M& m, const Vec4& x, const Vec4& k
 template <class M>
 struct JacobiRHS {
   static constexpr int N = 24;
-  /// s1, s2, J, dJ/dλ (components 8..23) do not feed back into x, k (integrators.h MetricSystem).
-  static constexpr int kPassiveFrom = 8;
   const M& m;
   void operator()(const double* y, double* dy) const {
     const Vec4 x{{y[0], y[1], y[2], y[3]}};

@@ -501,6 +501,27 @@ RenderJob schwarzschild_static_job(double r_obs) {
   return job;
 }
 
+TEST(Tracer, RayIntoTheHoleGetsTheConstraintColourInEveryFilter) {
+  // GeoViS: a ray that runs into the hole ends with the horizon break and gets cstrcolor (black
+  // by default) whatever the filter; the background is grey here so that the two differ. The
+  // ray straight at the hole (−e_r) and one well outside the shadow (along +e_r, to the sky).
+  RenderJob job = schwarzschild_static_job(15);
+  job.camera = std::make_shared<PinholeCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, 10, 10, 8, 8);
+  job.background = Color{0.5, 0.5, 0.5};
+  job.scene = nullptr;  // no sky: an escaping ray shows the background
+  for (Filter f : {Filter::RGB, Filter::RGBjac}) {
+    job.filter = f;
+    Tracer tracer(job);
+    TraceStats stats;
+    const TraceResult in = tracer.trace_direction({-1, 0, 0}, stats);
+    EXPECT_EQ(in.reason, StopReason::Invalid) << static_cast<int>(f);
+    EXPECT_EQ(in.color.r, 0.0);
+    EXPECT_EQ(in.color.g, 0.0);
+    const TraceResult out = tracer.trace_direction({1, 0, 0}, stats);
+    EXPECT_EQ(out.color.r, 0.5) << static_cast<int>(f);
+  }
+}
+
 TEST(Tracer, SchwarzschildShadowThroughTheDomeCamera) {
   // 2PICam with pitch 90 looks along −e_(1) = −e_r, towards the hole (dome centre
   // R_y(−90°) ẑ = −x̂). The dome maps the angle ψ from its centre to the image radius sin ψ (in
