@@ -1,4 +1,4 @@
-// Issue 12: each scene of the GeoViS fidelity set (tests/data/fidelity/, copied from GeoViS's
+// Each scene of the GeoViS fidelity set (tests/data/fidelity/, copied from GeoViS's
 // examples with stand-in textures) renders, unchanged, to the picture GeoViS rendered from it
 // (<scene>.geovis.png, GeoViS output), by the match rule of tests/data/fidelity/README.md
 // (io/image_match.h). The render runs in-process at the scene's own resolution (its first frame);

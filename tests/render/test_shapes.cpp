@@ -360,7 +360,7 @@ TEST(ShapesFactory, AddObjectAppendsToCompound) {
   EXPECT_THROW(add_objects(bad, ctx), SceneError);
 }
 
-// ---- GeoViS semantics (issue 12): expected values from the GeoViS formulas by hand ------------
+// ---- GeoViS semantics: expected values from the GeoViS formulas by hand ------------
 
 TEST(ShapesCylinder, GeoViSFrameAndTextureCoordinatesAxisZ) {
   // Axis along +z: α = atan2(0, 0) = 0, β = atan2(0, 2) = 0, so e1 = x̂, e2 = ŷ; the unit
