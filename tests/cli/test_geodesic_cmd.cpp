@@ -148,7 +148,7 @@ TEST(GeodesicCmd, HelpStatesTheStopReasons) {
     EXPECT_NE(o.out.find(r), std::string::npos) << r;
 }
 
-TEST(GeodesicCmd, PolarAxisRayOfIssue11GetsThrough) {
+TEST(GeodesicCmd, NearAxisKerrRayThatUsedToStallGetsThrough) {
   // The Kerr ray that stalled at θ ≈ π − 7e-7 in the Mino equations and ended with max-steps.
   const Output o = run_args({"geodesic", "--metric", "KerrBL", "--param", "angmom=0.9", "--pos",
                              "0,1000,0.29670597283903605,0", "--dir", "-1,0.004989,-3e-7", "--eps-abs", "1e-9",

@@ -53,7 +53,7 @@ TEST(Sandbox, SystemAccessIsNotAvailableAndNamedWithFileAndLine) {
   TempDir dir;
   const std::string victim = dir.write("victim.txt", "keep me\n");
   const std::string marker = (dir.path / "pwned").string();
-  // Each call of the issue (and a few more ways out), on line 2 of its scene.
+  // Each way out of the sandbox a scene might try, on line 2 of its scene.
   const std::vector<std::pair<std::string, std::string>> calls = {
       {"system", "(system \"touch " + marker + "\")"},
       {"system*", "(system* \"touch\" \"" + marker + "\")"},

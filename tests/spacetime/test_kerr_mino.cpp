@@ -216,7 +216,7 @@ TEST(KerrMino, RaysPassingCloseToTheAxisDoNotStall) {
   // Rays that pass the north pole at θ_min ≈ |L|/√(B + 2A): with the default solver they used to
   // stall there for 5e-6 < |L/E| < 3.5e-4 (θ_min 1e-6 .. 6e-5; kerr_mino.h file comment: the
   // polar turning point was lost in the integration error of z'² = Z) and end with max_steps. The
-  // issue's ray (geovis geodesic, test GeodesicCmd.PolarAxisRayOfIssue11GetsThrough) passes the
+  // reported ray (geovis geodesic, test GeodesicCmd.NearAxisKerrRayThatUsedToStallGetsThrough) passes the
   // pole on an unstable near-spherical orbit at r ≈ 3M, where any two integrations part
   // exponentially; here a ray from r = 30 passes over the pole at r ≈ 30..40 and runs to λ = 100
   // (r ≈ 100).
