@@ -23,6 +23,7 @@
 #include <iostream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -505,8 +506,11 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
 
   std::unique_ptr<MpiTileDispatcher> dispatcher;
   if (mpi) dispatcher = std::make_unique<MpiTileDispatcher>(*mpi);
-  const InterruptHandler interrupt;
-  TileRenderSession session(tile_render_options(a, quiet, interrupt.flag()), dispatcher.get());
+  // SIGINT/SIGTERM stop at the next tile. Under mpirun, SIGTERM is mpirun ending the job (a rank
+  // died, a time limit): the MPI dispatcher's own handler then says where the job stood instead.
+  std::optional<InterruptHandler> interrupt;
+  if (!dispatcher) interrupt.emplace();
+  TileRenderSession session(tile_render_options(a, quiet, interrupt ? interrupt->flag() : nullptr), dispatcher.get());
   std::string identity;  // what a tile checkpoint must match: the same settings as the images' hash
   for (const std::string& line : settings) identity += line + "\n";
   int rendered = 0, skipped = 0;
@@ -535,7 +539,7 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
       try {
         rendered_image = render_frame_image(session, a, identity, f, int(eye), fj, img, quiet, verbose);
       } catch (const RenderInterrupted& e) {
-        return report_interrupted(e, interrupt.signal_number(), f, rendered + skipped, img + ".tiles");
+        return report_interrupted(e, interrupt ? interrupt->signal_number() : 0, f, rendered + skipped, img + ".tiles");
       }
       const RenderResult& r = rendered_image.result;
       // Data files first, the image last: an existing image means a complete frame (--resume).

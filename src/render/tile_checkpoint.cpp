@@ -13,6 +13,7 @@
 #include <iterator>
 
 #include "core/error.h"
+#include "io/atomic_file.h"
 
 namespace geovis {
 
@@ -52,7 +53,7 @@ void write_all(int fd, const std::string& bytes, const std::string& path) {
   while (done < bytes.size()) {
     const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw Error("checkpoint \"" + path + "\": write failed: " + std::strerror(errno));
+    if (n <= 0) throw Error("cannot write \"" + path + "\": " + std::strerror(errno));
     done += size_t(n);
   }
 }
@@ -75,25 +76,10 @@ TileCheckpoint::~TileCheckpoint() {
 }
 
 void TileCheckpoint::create() {
-  // The header is written to a temporary file, synced and renamed: a checkpoint file that exists
-  // always has a complete header.
-  const std::string tmp = path_ + ".tmp";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw Error("checkpoint \"" + tmp + "\": cannot create: " + std::strerror(errno));
-  try {
-    write_all(fd, header_bytes(key_), tmp);
-    if (::fsync(fd) != 0) throw Error("checkpoint \"" + tmp + "\": fsync failed: " + std::strerror(errno));
-  } catch (...) {
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    throw;
-  }
-  ::close(fd);
-  if (::rename(tmp.c_str(), path_.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    ::unlink(tmp.c_str());
-    throw Error("checkpoint \"" + path_ + "\": cannot rename the new file into place: " + why);
-  }
+  // The header is written like every other file (io/atomic_file.h: temporary file, fsync, rename):
+  // a checkpoint file that exists always has a complete header, and a failure names the checkpoint
+  // and what the OS said ("cannot write "IMG.tiles": No space left on device").
+  write_file_atomic(path_, header_bytes(key_));
   fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
   if (fd_ < 0) throw Error("checkpoint \"" + path_ + "\": cannot open for appending: " + std::strerror(errno));
 }

@@ -454,10 +454,12 @@ TEST(SceneBuilder, CalcRayWriteErrorsKeepTheOldFileAndSayWhy) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "geovis_test_calc_ray_errors";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  auto run_calc_ray = [](const std::string& file) {
+  auto run_calc_ray = [&dir](const std::string& file) {
     SceneText s = minkowski_base();
     s.add("calc-ray", {{"filename", file}, {"locted", "locTedObs"}, {"pos", vec({0, -10, 0, 0})}, {"dir", vec({90, 90})}});
-    SceneBuilder b(s.desc(), {});
+    BuildOptions bopts;
+    bopts.output_dir = dir.string();  // sandboxed scenes write only below the output folder
+    SceneBuilder b(s.desc(), bopts);
     std::ostringstream log;
     b.run_actions(log);
   };
