@@ -299,16 +299,8 @@ void prepare_output_folders(const std::vector<std::string>& outputs, bool quiet)
 /// Everything besides the frame number that determines the pixels; its hash goes into every image
 /// so that --resume recognises frames of other settings. (Files the scene loads or textures it
 /// reads are not included: a changed texture is not detected.)
-std::vector<std::string> render_settings(const RenderArgs& a) {
-  std::vector<std::string> s = {"geovis render 1"};
-  if (a.scene.empty()) {
-    s.push_back(default_scene_text());
-  } else {
-    std::ifstream f(a.scene, std::ios::binary);
-    std::ostringstream text;
-    text << f.rdbuf();
-    s.push_back(text.str());
-  }
+std::vector<std::string> render_settings(const RenderArgs& a, const std::string& scene_text) {
+  std::vector<std::string> s = {"geovis render 1", scene_text};
   for (const auto& d : a.scene_args.defines) s.push_back("--define " + d);
   s.push_back("--res " + a.res);
   s.push_back("--supersample " + std::to_string(a.supersample));
@@ -455,10 +447,11 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
   DataFileInfo data_info;
   data_info.version = kVersion;
   for (const auto& d : a.scene_args.defines) data_info.defines += (data_info.defines.empty() ? "" : " ") + d;
+  std::string scene_text;  // read once: the data files' scene hash and the --resume settings
   if (a.scene.empty()) {
     scene = evaluate_scene_string(default_scene_text(), default_scene_name() + ".scm", sopts);
     base = default_scene_name();
-    data_info.scene_hash = fnv1a_hex(default_scene_text());
+    scene_text = default_scene_text();
   } else {
     if (!fs::exists(a.scene)) throw Error("scene file \"" + a.scene + "\" does not exist");
     scene = evaluate_scene_file(a.scene, sopts);
@@ -466,9 +459,10 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
     std::ifstream text(a.scene, std::ios::binary);
     std::stringstream ss;
     ss << text.rdbuf();
+    scene_text = ss.str();
     data_info.scene_file = fs::path(a.scene).filename().string();
-    data_info.scene_hash = fnv1a_hex(ss.str());
   }
+  data_info.scene_hash = fnv1a_hex(scene_text);
   print_warnings(diag, quiet, printed);
 
   BuildOptions bopts;
@@ -497,7 +491,7 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
   check_image_extension(out);
   // Before anything is rendered: an unwritable folder is found now, not after the first frame.
   prepare_output_folders({frame_path(out, first, sequence), a.movie}, quiet);
-  const std::vector<std::string> settings = render_settings(a);
+  const std::vector<std::string> settings = render_settings(a, scene_text);
 
   std::ostringstream action_log;
   builder.run_actions(action_log);
