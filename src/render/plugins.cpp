@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/rotation.h"
 #include "io/image.h"
 #include "render/compound.h"
 #include "render/csg.h"
@@ -16,7 +17,6 @@ namespace geovis {
 
 namespace {
 
-constexpr double kDegToRad = 0.017453292519943295769;
 
 Diagnostics& diag_of(BuildContext& ctx) {
   static thread_local Diagnostics fallback;
@@ -156,9 +156,6 @@ std::vector<ParamSpec> object_specific(const std::string& cmd) {
             spec("motion", ParamType::String, "motion id"),
             spec("timeboxsize", ParamType::Number, "accepted for GeoViS compatibility (world tube from the motion's samples)"),
             spec("id", ParamType::String, "object id")};
-  if (cmd == "add-object")
-    return {spec("add-to", ParamType::String, "compound object id", true),
-            spec("obj", ParamType::String, "object id", true, true)};
   return {};
 }
 
@@ -348,12 +345,8 @@ SceneObjectPtr make_mesh(const ParamSet& ps, BuildContext& ctx) {
     Vec3 axis{r[1], r[2], r[3]};
     if (norm(axis) == 0) ps.fail("rotate", "expected #(angle_deg ax ay az) with a non-zero axis");
     axis = normalize(axis);
-    // Rodrigues' rotation matrix, applied before the transform.
-    const double a = r[0] * kDegToRad, c = std::cos(a), s = std::sin(a), k = 1 - c;
-    const double x = axis.x, y = axis.y, z = axis.z;
-    const double R[3][3] = {{c + x * x * k, x * y * k - z * s, x * z * k + y * s},
-                            {y * x * k + z * s, c + y * y * k, y * z * k - x * s},
-                            {z * x * k - y * s, z * y * k + x * s, c + z * z * k}};
+    // Rotation about the axis, applied before the transform.
+    const Matrix3 R = rotation_about_axis({axis.x, axis.y, axis.z}, r[0] * kDegToRad);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) rot(i, j) = R[i][j];
   }
@@ -437,14 +430,32 @@ TexturePtr make_texture(const ParamSet& ps, BuildContext& ctx) {
   return tex;
 }
 
+std::vector<ParamSpec> shader_keys() {
+  return {spec("type", ParamType::String, "SurfShader"), spec("id", ParamType::String, "shader id"),
+          spec("objcolor", ParamType::String, "texture id of the object colour"),
+          spec("normalmap", ParamType::String, "texture id of a normal map"),
+          spec("ambient", ParamType::Number, "ambient reflectance, default 1"),
+          spec("diffuse", ParamType::Number, "diffuse reflectance, default 0")};
+}
+
+std::vector<ParamSpec> light_keys() {
+  return {spec("type", ParamType::String, "PointLight"), spec("id", ParamType::String, "light id"),
+          spec("pos", ParamType::Any, "event #(t x y z) (or position #(x y z))", true),
+          spec("color", ParamType::Vec3, "RGB colour, default #(1 1 1)"),
+          spec("atten", ParamType::Vec3, "constant, linear, quadratic attenuation, default #(0 0 0)")};
+}
+
+std::vector<ParamSpec> light_manager_keys() {
+  return {spec("id", ParamType::String, "light manager id"),
+          spec("ambient", ParamType::Vec3, "ambient light, default #(1 1 1)"),
+          spec("diffuse", ParamType::Vec3, "diffuse light from the observer, default #(1 1 1)"),
+          spec("light", ParamType::String, "light id", false, true),
+          spec("shadows", ParamType::Bool, "point-light shadow rays (Minkowski only), default #f")};
+}
+
 ShaderPtr make_shader(const ParamSet& ps, BuildContext& ctx) {
   canonical_name(ps, "type", ps.get_string("type", "SurfShader"), shader_types(), "shader type");
-  ps.validate({spec("type", ParamType::String, "SurfShader"), spec("id", ParamType::String, "shader id"),
-               spec("objcolor", ParamType::String, "texture id of the object colour"),
-               spec("normalmap", ParamType::String, "texture id of a normal map"),
-               spec("ambient", ParamType::Number, "ambient reflectance, default 1"),
-               spec("diffuse", ParamType::Number, "diffuse reflectance, default 0")},
-              diag_of(ctx));
+  ps.validate(shader_keys(), diag_of(ctx));
   auto sh = std::make_shared<SurfaceShader>();
   if (ps.has("objcolor")) sh->objcolor = ctx.ref(ctx.textures, ps, "objcolor", "texture");
   if (ps.has("normalmap")) sh->normalmap = ctx.ref(ctx.textures, ps, "normalmap", "texture");
@@ -455,11 +466,7 @@ ShaderPtr make_shader(const ParamSet& ps, BuildContext& ctx) {
 
 PointLight make_point_light(const ParamSet& ps, BuildContext& ctx) {
   canonical_name(ps, "type", ps.get_string("type", "PointLight"), light_types(), "light type");
-  ps.validate({spec("type", ParamType::String, "PointLight"), spec("id", ParamType::String, "light id"),
-               spec("pos", ParamType::Any, "event #(t x y z) (or position #(x y z))", true),
-               spec("color", ParamType::Vec3, "RGB colour, default #(1 1 1)"),
-               spec("atten", ParamType::Vec3, "constant, linear, quadratic attenuation, default #(0 0 0)")},
-              diag_of(ctx));
+  ps.validate(light_keys(), diag_of(ctx));
   PointLight l;
   const auto p = ps.get_vector_any("pos", {3, 4});
   l.pos = p.size() == 4 ? Vec4{{p[0], p[1], p[2], p[3]}} : Vec4{{0, p[0], p[1], p[2]}};
@@ -472,12 +479,7 @@ PointLight make_point_light(const ParamSet& ps, BuildContext& ctx) {
 }
 
 LightManager make_light_manager(const ParamSet& ps, BuildContext& ctx) {
-  ps.validate({spec("id", ParamType::String, "light manager id"),
-               spec("ambient", ParamType::Vec3, "ambient light, default #(1 1 1)"),
-               spec("diffuse", ParamType::Vec3, "diffuse light from the observer, default #(1 1 1)"),
-               spec("light", ParamType::String, "light id", false, true),
-               spec("shadows", ParamType::Bool, "point-light shadow rays (Minkowski only), default #f")},
-              diag_of(ctx));
+  ps.validate(light_manager_keys(), diag_of(ctx));
   LightManager m;
   m.ambient = color3(ps.get_vector("ambient", 3, std::vector<double>{1, 1, 1}));
   m.diffuse = color3(ps.get_vector("diffuse", 3, std::vector<double>{1, 1, 1}));
@@ -565,16 +567,6 @@ SceneObjectPtr make_object(const ParamSet& ps, BuildContext& ctx) {
     ps.fail("subdivs", "expected a non-negative number of subdivisions");
   comp->id = ps.get_string("id", "");
   return comp;
-}
-
-void add_objects(const ParamSet& ps, BuildContext& ctx) {
-  ps.validate(object_specific("add-object"), diag_of(ctx));
-  const std::string target = ps.get_string("add-to");
-  const SceneObjectPtr& t = ref_object(ps, ctx, target, "add-to");
-  auto comp = std::dynamic_pointer_cast<CompoundObject>(t);
-  if (!comp)
-    ps.fail("add-to", "\"" + target + "\" is not a compound object (comp-object or comp-octree-object)");
-  comp->add(group_children(ps, ctx));
 }
 
 }  // namespace geovis

@@ -24,8 +24,6 @@ ShaderPtr make_shader(const ParamSet& ps, BuildContext& ctx);
 /// plane-triangle, plane-parallelogram, mesh-obj, csg-object, comp-object, comp-octree-object,
 /// local-comp-object (dispatch on ps.command()).
 SceneObjectPtr make_object(const ParamSet& ps, BuildContext& ctx);
-/// add-object: appends `obj` (repeatable) to the compound `add-to`.
-void add_objects(const ParamSet& ps, BuildContext& ctx);
 /// init-light (type PointLight).
 PointLight make_point_light(const ParamSet& ps, BuildContext& ctx);
 /// init-light-mgr.
@@ -41,5 +39,8 @@ std::vector<std::string> light_types();
 /// type, light type or object command. Empty when unknown.
 std::vector<ParamSpec> texture_keys(const std::string& type);
 std::vector<ParamSpec> object_keys(const std::string& command);
+std::vector<ParamSpec> shader_keys();
+std::vector<ParamSpec> light_keys();
+std::vector<ParamSpec> light_manager_keys();
 
 }  // namespace geovis

@@ -18,6 +18,7 @@
 
 #include <gc/gc.h>
 
+#include "scene/command_table.h"
 #include "scene/scheme_internal.h"
 
 namespace geovis {
@@ -110,7 +111,10 @@ void init_prelude_module(void*) {
                                        reinterpret_cast<scm_t_subr>(time_limit_reached));
   scm_gc_protect_object(g_time_limit_proc);
   // Read the prelude with symbols folded to lower case, like a scene, and evaluate it here.
-  SCM port = scm_open_input_string(scm_from_utf8_string(kPreludeSource));
+  std::string source = kPreludeSource;
+  const std::string marker = ";; @GEOVIS-COMMANDS@";
+  source.replace(source.find(marker), marker.size(), scheme_command_definitions());
+  SCM port = scm_open_input_string(scm_from_utf8_string(source.c_str()));
   scm_set_port_filename_x(port, scm_from_utf8_string("geovis-prelude.scm"));
   // ice-9/read.scm per-port reader options: #xFFF7 = inherit all, case-insensitive on.
   scm_call_3(scm_c_public_ref("guile", "%set-port-property!"), port,

@@ -16,6 +16,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/rotation.h"
+#include "scene/command_table.h"
 #include "scene/scheme_internal.h"
 #include "spacetime/geodesic.h"
 #include "spacetime/metric_registry.h"
@@ -23,37 +25,31 @@
 namespace geovis {
 
 const std::vector<std::string>& scene_command_names() {
-  static const std::vector<std::string> names = {
-      "init-metric",     "init-solver",      "init-camera",     "init-raygen",
-      "init-projector",  "local-tetrad",     "init-light-mgr",  "init-light",
-      "init-texture",    "init-shader",      "solid-ellipsoid", "solid-box",
-      "solid-cylinder",  "solid-ring",       "solid-background", "plane-ring",
-      "plane-triangle",  "mesh-obj",         "csg-object",      "comp-object",
-      "comp-octree-object", "local-comp-object", "add-object",  "init-motion",
-      "init-device",     "set-parameter",    "set-changeobj",   "gvs-print-motion",
-      "calc-ray",        "calc-proj-ray",    "gvs-print",
-      // geovis extensions (not in GeoViS): scene_extension_command_names()
-      "plane-parallelogram"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const SceneCommand& c : scene_commands())
+      if (c.role != CommandRole::Immediate) n.emplace_back(c.name);
+    return n;
+  }();
   return names;
 }
 
 const std::vector<std::string>& scene_extension_command_names() {
-  static const std::vector<std::string> names = {"plane-parallelogram"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const SceneCommand& c : scene_commands())
+      if (c.geovis_extension) n.emplace_back(c.name);
+    return n;
+  }();
   return names;
 }
 
 const std::vector<std::string>& scene_language_names() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> n = scene_command_names();
-    for (const char* s :
-         {"get-parameter", "vec3", "vec4", "translate-obj", "rotate-obj", "scale-obj",
-          "m4d-metriclist", "m4d-solverlist", "getenv", "exit", "load",
-          "gpobjtypelocal", "gpobjtypeincoords", "gpcsgdifferobj", "gpcsgunifiedobj",
-          "gpcsgintersecobj", "gptetraddefault", "gptetradstatic", "gptetradlnrf",
-          "gptetradfreefall", "gptetradcomoving", "gptetradcylinder", "gptetradcartesian", "pi",
-          "pihalf", "pi2", "gpdblmax", "deg_to_rad", "rad_to_deg", "radians", "degrees",
-          "calchfov"})
-      n.emplace_back(s);
+    std::vector<std::string> n = scene_command_list();
+    for (const auto& [scene_name, prelude_name] : scene_constant_bindings())
+      if (scene_name != "do" && scene_name != "quit" && scene_name.rfind("primitive-", 0) != 0)
+        n.push_back(scene_name);
     return n;
   }();
   return names;
@@ -412,21 +408,12 @@ Transform scaling(const std::vector<double>& s) {
   return t;
 }
 
-// Right-handed rotation by `angle` (radians) about the unit axis n (Rodrigues' formula,
-// R = cos a I + sin a [n]x + (1 - cos a) n n^T; Motion4D RotateMat3D, after Pique, Graphics
-// Gems 1990, pp. 465-469).
+// Rotation by `angle` (radians) about the unit axis n as a 3D Transform (core/rotation.h).
 Transform rotation3(std::array<double, 3> n, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle), k = 1.0 - c;
+  const Matrix3 r = rotation_about_axis(n, angle);
   Transform t = Transform::identity(3);
-  t(0, 0) = k * n[0] * n[0] + c;
-  t(0, 1) = k * n[0] * n[1] - s * n[2];
-  t(0, 2) = k * n[0] * n[2] + s * n[1];
-  t(1, 0) = k * n[1] * n[0] + s * n[2];
-  t(1, 1) = k * n[1] * n[1] + c;
-  t(1, 2) = k * n[1] * n[2] - s * n[0];
-  t(2, 0) = k * n[2] * n[0] - s * n[1];
-  t(2, 1) = k * n[2] * n[1] + s * n[0];
-  t(2, 2) = k * n[2] * n[2] + c;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) t(i, j) = r[i][j];
   return t;
 }
 
@@ -439,8 +426,6 @@ Transform rotation2(double cx, double cy, double angle) {
   r(1, 1) = std::cos(angle);
   return translation({cx, cy}) * r * translation({-cx, -cy});
 }
-
-constexpr double kDegToRad = 0.017453292519943295770;  // pi/180 (init.scm DEG_TO_RAD)
 
 SCM translate_obj(const std::vector<SCM>& a, const SourceLoc& loc) {
   const std::string cmd = "translate-obj";

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/rotation.h"
 
 namespace geovis {
 
@@ -22,10 +23,11 @@ Vec4 boost_event(const Vec4& x, const Vec3& v) {
   return event(gamma * (x[0] - vx), p + (gamma * gamma / (gamma + 1.0) * vx) * v - (gamma * x[0]) * v);
 }
 
-/// Rodrigues' rotation of p by the angle phi about the unit axis a.
+/// p rotated by the angle phi about the unit axis a (core/rotation.h).
 Vec3 rotate(const Vec3& p, const Vec3& a, double phi) {
-  const double ap = dot(a, p);
-  return ap * a + std::cos(phi) * (p - ap * a) + std::sin(phi) * cross(a, p);
+  const Matrix3 r = rotation_about_axis({a.x, a.y, a.z}, phi);
+  return {r[0][0] * p.x + r[0][1] * p.y + r[0][2] * p.z, r[1][0] * p.x + r[1][1] * p.y + r[1][2] * p.z,
+          r[2][0] * p.x + r[2][1] * p.y + r[2][2] * p.z};
 }
 
 }  // namespace

@@ -335,31 +335,6 @@ TEST(ShapesFactory, LocalObjectInPlainCompoundIsPlacedInCoordinates) {
   EXPECT_NEAR(hit.s, 0.4, kTol);
 }
 
-TEST(ShapesFactory, AddObjectAppendsToCompound) {
-  BuildContext ctx;
-  ParamSet a = params("solid-ellipsoid");
-  a.add("center", std::vector<double>{0, 0, 0});
-  ctx.objects["a"] = make_object(a, ctx);
-  ParamSet b = params("solid-ellipsoid");
-  b.add("center", std::vector<double>{5, 0, 0});
-  ctx.objects["b"] = make_object(b, ctx);
-  ParamSet c = params("comp-object");
-  c.add("obj", "a");
-  ctx.objects["scene"] = make_object(c, ctx);
-  Hit h;
-  EXPECT_FALSE(ctx.objects["scene"]->intersect(make_segment({5, 0, 10}, {5, 0, -10}), h));
-  ParamSet add = params("add-object");
-  add.add("add-to", "scene");
-  add.add("obj", "b");
-  add_objects(add, ctx);
-  ASSERT_TRUE(ctx.objects["scene"]->intersect(make_segment({5, 0, 10}, {5, 0, -10}), h));
-  EXPECT_EQ(h.object_id, 2);
-  ParamSet bad = params("add-object");
-  bad.add("add-to", "a");
-  bad.add("obj", "b");
-  EXPECT_THROW(add_objects(bad, ctx), SceneError);
-}
-
 // ---- GeoViS semantics: expected values from the GeoViS formulas by hand ------------
 
 TEST(ShapesCylinder, GeoViSFrameAndTextureCoordinatesAxisZ) {
