@@ -25,6 +25,9 @@ std::string format_diagnostic(const SourceLoc& loc, std::string_view command, st
   return out;
 }
 
+ParameterError::ParameterError(std::string_view owner, std::string_view key, std::string_view message)
+    : Error(std::string(owner) + ": " + std::string(key) + ": " + std::string(message)), key_(key), message_(message) {}
+
 SceneError::SceneError(const SourceLoc& loc, std::string_view command, std::string_view key,
                        std::string_view message)
     : Error(format_diagnostic(loc, command, key, message)), loc_(loc) {}

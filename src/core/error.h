@@ -24,6 +24,18 @@ class Error : public std::runtime_error {
   explicit Error(const std::string& msg) : std::runtime_error(msg) {}
 };
 
+/// A bad value of one parameter of a thing built from a scene (a camera, ...): "owner: key:
+/// message". The scene builder re-raises it at the scene's location under `key`.
+class ParameterError : public Error {
+ public:
+  ParameterError(std::string_view owner, std::string_view key, std::string_view message);
+  const std::string& key() const { return key_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string key_, message_;
+};
+
 /// An error in a scene or parameter set: "file:line: command: key: message".
 class SceneError : public Error {
  public:

@@ -24,15 +24,15 @@ void Camera::unknown_param(std::string_view name) const {
 CameraFrame CameraFrame::from(const Vec3& dir, const Vec3& vup, std::string_view camera) {
   const double nd = norm(dir), nu = norm(vup);
   if (!(nd > 0) || !std::isfinite(nd))
-    throw Error(std::string(camera) + ": dir: expected a non-zero direction, found a zero vector");
+    throw ParameterError(camera, "dir", "expected a non-zero direction, found a zero vector");
   if (!(nu > 0) || !std::isfinite(nu))
-    throw Error(std::string(camera) + ": vup: expected a non-zero up vector, found a zero vector");
+    throw ParameterError(camera, "vup", "expected a non-zero up vector, found a zero vector");
   CameraFrame f;
   f.fwd = dir / nd;
   const Vec3 h = cross(dir, vup);
   const double nh = norm(h);
   if (!(nh > 1e-12 * nd * nu))
-    throw Error(std::string(camera) + ": vup: expected a vector not parallel to dir, found a parallel one");
+    throw ParameterError(camera, "vup", "expected a vector not parallel to dir, found a parallel one");
   f.horiz = h / nh;
   f.vert = normalize(cross(f.horiz, f.fwd));
   return f;
@@ -44,17 +44,19 @@ Observer offset_observer(const Observer& obs, const Vec3& d) {
   return o;
 }
 
-std::vector<double> value_as_vector(const Value& v, size_t n, std::string_view what) {
+std::vector<double> value_as_vector(const Value& v, size_t n, std::string_view owner, std::string_view key) {
   if (n == 1 && v.is_number()) return {std::get<double>(v.v)};
   if (v.is_vector()) {
     const auto& d = std::get<std::vector<double>>(v.v);
     if (d.size() == n) return d;
   }
-  throw Error(std::string(what) + ": expected " +
-              (n == 1 ? std::string("a number") : "a " + std::to_string(n) + "-vector") + ", found " +
-              v.describe());
+  throw ParameterError(owner, key,
+                       "expected " + (n == 1 ? std::string("a number") : "a " + std::to_string(n) + "-vector") +
+                           ", found " + v.describe());
 }
 
-double value_as_number(const Value& v, std::string_view what) { return value_as_vector(v, 1, what)[0]; }
+double value_as_number(const Value& v, std::string_view owner, std::string_view key) {
+  return value_as_vector(v, 1, owner, key)[0];
+}
 
 }  // namespace geovis

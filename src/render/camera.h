@@ -75,9 +75,9 @@ struct CameraFrame {
 /// offset, exact in flat space), same tetrad components (GeoViS shifts the eye in the local frame).
 Observer offset_observer(const Observer& obs, const Vec3& local_offset);
 
-/// Reads a Value as a numeric vector of exactly n entries; throws Error naming `what` otherwise.
-std::vector<double> value_as_vector(const Value& v, size_t n, std::string_view what);
-/// Reads a Value as one number; throws Error naming `what` otherwise.
-double value_as_number(const Value& v, std::string_view what);
+/// Reads a Value as a numeric vector of exactly n entries; throws ParameterError(owner, key) otherwise.
+std::vector<double> value_as_vector(const Value& v, size_t n, std::string_view owner, std::string_view key);
+/// Reads a Value as one number; throws ParameterError(owner, key) otherwise.
+double value_as_number(const Value& v, std::string_view owner, std::string_view key);
 
 }  // namespace geovis

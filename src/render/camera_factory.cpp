@@ -119,22 +119,9 @@ std::shared_ptr<Camera> make_camera(const ParamSet& ps, BuildContext& ctx) {
     } else {
       cam = std::make_shared<DomeCamera>(ps.get_number("heading", 0.0), ps.get_number("pitch", 0.0), w);
     }
-  } catch (const SceneError&) {
-    throw;
-  } catch (const Error& e) {
-    // Camera constructors report "TYPE: key: problem"; attach the scene location.
-    std::string msg = e.what();
-    std::string key;
-    const std::string prefix = type + ": ";
-    if (msg.rfind(prefix, 0) == 0) {
-      msg = msg.substr(prefix.size());
-      const auto colon = msg.find(": ");
-      if (colon != std::string::npos && colon < 16) {
-        key = msg.substr(0, colon);
-        msg = msg.substr(colon + 2);
-      }
-    }
-    throw SceneError(ps.loc(), ps.command(), key, msg);
+  } catch (const ParameterError& e) {
+    // The camera names the key; the scene gives the location.
+    throw SceneError(ps.loc(), ps.command(), e.key(), e.message());
   }
   if (ps.has("filter")) {
     const std::string f = ps.get_string("filter");

@@ -40,7 +40,7 @@ DomeCamera::DomeCamera(double heading_deg, double pitch_deg, int size)
     : Camera(size, size), heading_deg_(heading_deg), pitch_deg_(pitch_deg) {
   Camera::set_resolution(size, size);
   if (!std::isfinite(heading_deg) || !std::isfinite(pitch_deg))
-    throw Error("2PICam: heading/pitch: expected finite angles in degrees");
+    throw ParameterError("2PICam", std::isfinite(heading_deg) ? "pitch" : "heading", "expected a finite angle in degrees");
   install();
 }
 
@@ -70,8 +70,8 @@ bool DomeCamera::direction(double px, double py, Vec3& d) const {
 void DomeCamera::set_param(std::string_view name, const Value& value) {
   const std::string n = to_lower(name);
   if (n != "heading" && n != "pitch") unknown_param(name);
-  const double a = value_as_number(value, "2PICam: " + n);
-  if (!std::isfinite(a)) throw Error("2PICam: " + n + ": expected a finite number, found " + value.describe());
+  const double a = value_as_number(value, "2PICam", n);
+  if (!std::isfinite(a)) throw ParameterError("2PICam", n, "expected a finite number, found " + value.describe());
   (n == "heading" ? heading_deg_ : pitch_deg_) = a;
   install();
 }

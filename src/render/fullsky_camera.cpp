@@ -13,7 +13,7 @@ namespace geovis {
 
 FullSkyCamera::FullSkyCamera(double angle_deg, int width, int height) : Camera(width, height), angle_deg_(angle_deg) {
   Camera::set_resolution(width, height);
-  if (!std::isfinite(angle_deg)) throw Error("4PICam: angle: expected a finite number of degrees");
+  if (!std::isfinite(angle_deg)) throw ParameterError("4PICam", "angle", "expected a finite number of degrees");
 }
 
 bool FullSkyCamera::direction(double px, double py, Vec3& d) const {
@@ -27,8 +27,8 @@ bool FullSkyCamera::direction(double px, double py, Vec3& d) const {
 
 void FullSkyCamera::set_param(std::string_view name, const Value& value) {
   if (to_lower(name) != "angle") unknown_param(name);
-  const double a = value_as_number(value, "4PICam: angle");
-  if (!std::isfinite(a)) throw Error("4PICam: angle: expected a finite number, found " + value.describe());
+  const double a = value_as_number(value, "4PICam", "angle");
+  if (!std::isfinite(a)) throw ParameterError("4PICam", "angle", "expected a finite number, found " + value.describe());
   angle_deg_ = a;
 }
 

@@ -15,8 +15,8 @@ namespace geovis {
 namespace {
 void check_fov(double h, double v, const char* cam) {
   if (!(h > 0 && h < 180) || !(v > 0 && v < 180))
-    throw Error(std::string(cam) + ": fov: expected two angles in (0, 180) degrees, found #(" +
-                std::to_string(h) + " " + std::to_string(v) + ")");
+    throw ParameterError(cam, "fov", "expected two angles in (0, 180) degrees, found #(" + std::to_string(h) + " " +
+                                         std::to_string(v) + ")");
 }
 Vec3 to_vec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 }  // namespace
@@ -44,17 +44,16 @@ bool PinholeCamera::direction(double px, double py, Vec3& d) const {
 
 void PinholeCamera::set_param(std::string_view name, const Value& value) {
   const std::string n = to_lower(name);
-  const std::string what = std::string(type_name()) + ": " + n;
   if (n == "dir") {
     const Vec3 old = dir_;
-    dir_ = to_vec3(value_as_vector(value, 3, what));
+    dir_ = to_vec3(value_as_vector(value, 3, type_name(), n));
     try { install(); } catch (...) { dir_ = old; install(); throw; }
   } else if (n == "vup") {
     const Vec3 old = vup_;
-    vup_ = to_vec3(value_as_vector(value, 3, what));
+    vup_ = to_vec3(value_as_vector(value, 3, type_name(), n));
     try { install(); } catch (...) { vup_ = old; install(); throw; }
   } else if (n == "fov") {
-    const auto f = value_as_vector(value, 2, what);
+    const auto f = value_as_vector(value, 2, type_name(), n);
     check_fov(f[0], f[1], type_name());
     fov_h_ = f[0];
     fov_v_ = f[1];

@@ -10,14 +10,14 @@ PinholeStereoCamera::PinholeStereoCamera(const Vec3& dir, const Vec3& vup, doubl
                                          int width, int height, double eye_separation)
     : PinholeCamera(dir, vup, fov_h_deg, fov_v_deg, width, height), sep_(eye_separation) {
   if (!(sep_ >= 0) || !std::isfinite(sep_))
-    throw Error("PinHoleStereoCam: sep: expected a non-negative number, found " + std::to_string(sep_));
+    throw ParameterError("PinHoleStereoCam", "sep", "expected a non-negative number, found " + std::to_string(sep_));
 }
 
 void PinholeStereoCamera::set_param(std::string_view name, const Value& value) {
   if (to_lower(name) == "eyesep") {
-    const double s = value_as_number(value, "PinHoleStereoCam: eyesep");
+    const double s = value_as_number(value, "PinHoleStereoCam", "eyesep");
     if (!(s >= 0) || !std::isfinite(s))
-      throw Error("PinHoleStereoCam: eyesep: expected a non-negative number, found " + value.describe());
+      throw ParameterError("PinHoleStereoCam", "eyesep", "expected a non-negative number, found " + value.describe());
     sep_ = s;
     return;
   }
