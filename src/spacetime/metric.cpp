@@ -254,6 +254,33 @@ int Metric::to_pseudo_cartesian(const Vec4& x, Vec3& p) const {
   }
 }
 
+bool Metric::pseudo_cartesian_jacobian(const Vec4& x, double J[3][3]) const {
+  switch (info_.coord_type) {
+    case CoordType::Spherical: {
+      // p = r (sinθ cosφ, sinθ sinφ, cosθ)
+      const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]), sp = std::sin(x[3]), cp = std::cos(x[3]);
+      const double j[3][3] = {{st * cp, r * ct * cp, -r * st * sp}, {st * sp, r * ct * sp, r * st * cp}, {ct, -r * st, 0}};
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) J[i][k] = j[i][k];
+      return true;
+    }
+    case CoordType::Cylindrical: {
+      // p = (r cosφ, r sinφ, z)
+      const double r = x[1], sp = std::sin(x[2]), cp = std::cos(x[2]);
+      const double j[3][3] = {{cp, -r * sp, 0}, {sp, r * cp, 0}, {0, 0, 1}};
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) J[i][k] = j[i][k];
+      return true;
+    }
+    case CoordType::Cartesian:
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) J[i][k] = i == k ? 1.0 : 0.0;
+      return true;
+    default:
+      return false;
+  }
+}
+
 Vec4 Metric::from_pseudo_cartesian(double t, const Vec3& p, int /*chart*/) const {
   switch (info_.coord_type) {
     case CoordType::Spherical: {

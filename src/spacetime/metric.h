@@ -141,6 +141,10 @@ class Metric {
   virtual int to_pseudo_cartesian(const Vec4& x, Vec3& p) const;
   /// Inverse of to_pseudo_cartesian for the given chart (time component t kept).
   virtual Vec4 from_pseudo_cartesian(double t, const Vec3& p, int chart = 0) const;
+  /// Jacobian J[i][j] = ∂p^i/∂x^(j+1) of to_pseudo_cartesian at x (maps a tangent vector's
+  /// spatial components to pseudo-Cartesian ones); false where the map has no closed form here
+  /// (custom coordinates). Default: by coordinate type, consistent with to_pseudo_cartesian.
+  virtual bool pseudo_cartesian_jacobian(const Vec4& x, double J[3][3]) const;
 
   // ---- hot path (dispatch once per geodesic) ----
   /// Integrates system `sys` from y (dim = system_dim(sys), updated in place) starting at
