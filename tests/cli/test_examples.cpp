@@ -2,10 +2,16 @@
 // `geovis check --strict`: it evaluates, every frame builds, and there is no warning at all (an
 // unknown key, an unset environment variable, a substituted texture, ... would be one). Each is
 // described in examples/README.md, and together they use every GeoViS command of the catalogue
-// (docs/geovis-catalogue.md §1) but the two README.md explains.
+// (docs/geovis-catalogue.md §1) but the two README.md explains. Their pictures at a small
+// resolution are pixel-identical to the recorded ones (a refactor must not change a picture).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <map>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -15,6 +21,8 @@
 
 #include "support/geovis_catalogue.h"
 #include "cli/command.h"
+#include "core/hash.h"
+#include "io/image.h"
 
 namespace geovis::cli {
 namespace {
@@ -95,6 +103,76 @@ TEST(Examples, TogetherUseEveryGeoViSCommand) {
     EXPECT_TRUE(used) << c << " is used by no example";
   }
 }
+
+// ---- pictures: pixel-identical to the recorded hashes -------------------------------------------
+//
+// tests/data/examples/pixel_hashes.txt holds, per example, the FNV-1a hash of the pixels of its
+// first frame at 24x18 (every PNG it writes). A change that is not meant to change what a scene
+// shows (a refactor, a speed-up that executes the same operations) must leave them all alone; a
+// change that is meant to (physics, GeoViS semantics) re-records them with
+// scripts/record_example_hashes.sh and says in its commit message which pictures changed and why.
+// The hashes were first recorded with the build of commit f7cf77a, before the command table.
+
+const fs::path kHashFile = fs::path(GEOVIS_TEST_DATA_DIR) / "examples" / "pixel_hashes.txt";
+
+std::map<std::string, std::string> recorded_hashes() {
+  std::map<std::string, std::string> out;
+  std::ifstream in(kHashFile);
+  std::string name, hash;
+  while (in >> name >> hash) out[name] = hash;
+  return out;
+}
+
+std::string example_name(const testing::TestParamInfo<std::string>& info) {
+  std::string n = info.param;
+  for (char& c : n)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return n;
+}
+
+std::vector<std::string> example_stems() {
+  std::vector<std::string> out;
+  for (const auto& p : example_scenes()) out.push_back(p.stem().string());
+  return out;
+}
+
+class ExamplePicture : public testing::TestWithParam<std::string> {};
+
+TEST_P(ExamplePicture, IsPixelIdenticalToTheRecordedOne) {
+  const std::string stem = GetParam();
+  const fs::path dir = fs::temp_directory_path() / ("geovis_example_" + stem + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  testing::internal::CaptureStderr();
+  const int rc = run_args({"render", (kExamples / (stem + ".scm")).string(), "--res", "24x18", "--frames", "0:0",
+                           "--threads", "1", "--quiet", "-o", (dir / (stem + ".png")).string()});
+  const std::string err = testing::internal::GetCapturedStderr();
+  ASSERT_EQ(rc, 0) << err;
+  std::vector<fs::path> pngs;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".png") pngs.push_back(e.path());
+  std::sort(pngs.begin(), pngs.end());
+  ASSERT_FALSE(pngs.empty());
+  std::uint64_t h = kFnv1a64Seed;
+  for (const auto& p : pngs) {
+    const Image img = read_image(p.string());
+    h = fnv1a64(img.pixels.data(), img.pixels.size() * sizeof(float), h);
+  }
+  fs::remove_all(dir);
+  const std::string got = fnv1a64_text(h);
+  if (std::getenv("GEOVIS_RECORD_EXAMPLE_HASHES")) {
+    std::ofstream(kHashFile.string() + "." + stem, std::ios::trunc) << stem << " " << got << "\n";
+    GTEST_SKIP() << "recorded " << stem << " " << got;
+  }
+  const auto recorded = recorded_hashes();
+  const auto it = recorded.find(stem);
+  ASSERT_NE(it, recorded.end()) << stem << " has no recorded hash in " << kHashFile
+                                << " (scripts/record_example_hashes.sh records it)";
+  EXPECT_EQ(got, it->second) << stem << ": the picture changed. If that is intended, re-record with "
+                                         "scripts/record_example_hashes.sh and say why in the commit.";
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, ExamplePicture, testing::ValuesIn(example_stems()), example_name);
 
 }  // namespace
 }  // namespace geovis::cli
