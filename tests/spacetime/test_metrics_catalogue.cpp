@@ -279,3 +279,47 @@ TEST(MetricsCatalogue, ExtremeReissnerNordstromDiholeIsElectrovac) {
   m->metric_tensor(Vec4{{0, r, 0, 0}}, g);
   EXPECT_NEAR(-g[0][0], 1.0 - 2.0 * 1.5 / r, 1e-7);
 }
+
+/// Kruskal: radial light rays are the straight lines T ± X = const (MTW 31.14, the (T, X) part is
+/// conformally flat), the areal radius satisfies (r/r_s − 1) e^(r/r_s) = X² − T² (MTW 31.13), and
+/// the static observer moves along the Killing vector X ∂_T + T ∂_X, i.e. keeps X² − T² (and r).
+TEST(MetricsCatalogue, KruskalRadialRaysAreStraightAndTheRadiusIsAreal) {
+  const double M = 1.3, rs = 2 * M;
+  const auto m = make_metric("Kruskal", {{"mass", M}});
+  for (const Vec4& x : {Vec4{{0.3, 2.0, 1.0, 0.2}}, Vec4{{-0.4, 0.1, 0.7, 0.0}}, Vec4{{0.2, -3.0, 2.0, 1.0}}}) {
+    Vec3 p;
+    const int chart = m->to_pseudo_cartesian(x, p);
+    const double r = norm(p), u = x[1] * x[1] - x[0] * x[0];
+    EXPECT_NEAR((r / rs - 1) * std::exp(r / rs), u, 1e-13 * std::max(1.0, std::fabs(u)));
+    // g_θθ = r² (the areal radius), and the inverse map returns the point.
+    Mat4 g;
+    m->metric_tensor(x, g);
+    EXPECT_NEAR(g[2][2], r * r, 1e-13 * r * r);
+    const Vec4 back = m->from_pseudo_cartesian(x[0], p, chart);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(back[i], x[i], 1e-9) << i;
+  }
+  // An ingoing radial light ray from outside through the horizon keeps T + X constant.
+  const Vec4 x{{0.0, 1.5, 1.0, 0.3}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{-1, 0, 0}, false);
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 2000;
+  double worst = 0, u_min = 1e300;
+  auto cb = [&](const StepView& s) {
+    worst = std::max(worst, std::fabs((s.y1[0] + s.y1[1]) - (x[0] + x[1])));
+    u_min = std::min(u_min, s.y1[1] * s.y1[1] - s.y1[0] * s.y1[0]);
+    return StepAction::Continue;
+  };
+  const GeodesicResult res = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  // Stops at the singularity break r = r_s·horizon_eps, X² − T² = (eps − 1) e^eps ≈ −1 + eps²/2.
+  EXPECT_EQ(res.reason, StopReason::Invalid) << stop_reason_name(res.reason);
+  EXPECT_LT(u_min, -1.0 + 1e-6);
+  EXPECT_LT(worst, 1e-9);
+  // Static observer: e_(0) ∝ X ∂_T + T ∂_X.
+  const Vec4 xs{{0.4, 1.2, 1.0, 0.0}};
+  const Tetrad e = m->natural_tetrad(xs, TetradKind::Static);
+  EXPECT_NEAR(e[0][1] / e[0][0], xs[0] / xs[1], 1e-15);
+  EXPECT_GT(e[0][0], 0.0);
+  EXPECT_THROW(m->natural_tetrad(Vec4{{1.0, 0.5, 1.0, 0.0}}, TetradKind::Static), Error);
+}

@@ -240,6 +240,18 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
          }
          return 4.0 * s / std::pow(x[0], 4);
        }},
+      // Kruskal: Schwarzschild, K = 48 M²/r⁶, with the areal radius from (r/r_s − 1) e^(r/r_s) = X² − T²
+      // (MTW 31.13) solved here by bisection (independent of the metric's Halley iteration).
+      {"Kruskal",
+       [](const Metric& m, const Vec4& x) {
+         const double M = m.param("mass"), rs = 2 * M, u = x[1] * x[1] - x[0] * x[0];
+         double lo = 0.0, hi = 2.0 + std::log(1.0 + std::max(u, 0.0)) + 1.0;
+         for (int i = 0; i < 200; ++i) {
+           const double mid = 0.5 * (lo + hi);
+           ((mid - 1) * std::exp(mid) < u ? lo : hi) = mid;
+         }
+         return 48.0 * M * M / std::pow(rs * 0.5 * (lo + hi), 6);
+       }},
   };
   return table;
 }
@@ -420,6 +432,7 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"Petrov_Type_D_AI_ES", {}},
       {"Petrov_Type_D_AII_ES", {}},
       {"Kasner", {{"u", 2.0}}},
+      {"Kruskal", {}},
   };
   return table;
 }
