@@ -42,7 +42,8 @@
   X(PetrovTypeD_AII, "Petrov_Type_D_AII_ES")     \
   X(ExtremeReissnerNordstromDihole, "ExtremeReissnerNordstromDihole") \
   X(SchwarzschildWT, "SchwarzschildWT")         \
-  X(Kruskal, "Kruskal")
+  X(Kruskal, "Kruskal")                         \
+  X(VaidyaIncRad, "VaidyaIncRad")
 
 namespace geovis {
 

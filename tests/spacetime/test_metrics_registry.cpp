@@ -252,6 +252,14 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
          }
          return 48.0 * M * M / std::pow(rs * 0.5 * (lo + hi), 6);
        }},
+      // Vaidya: the Ricci tensor is null dust (R = 0, R_ab R^ab = 0), so K is the Weyl part 48 m(v)²/r⁶
+      // (Griffiths & Podolský, Exact Space-Times (2009) §9.5), m(v) = k s^(1/3) tanh²(σ s), s = v_l − v.
+      {"VaidyaIncRad",
+       [](const Metric& m, const Vec4& x) {
+         const double s = m.param("vl") - x[0];
+         const double mv = s > 0 ? m.param("k") * std::cbrt(s) * std::pow(std::tanh(m.param("sigma") * s), 2) : 0.0;
+         return 48.0 * mv * mv / std::pow(x[1], 6);
+       }},
   };
   return table;
 }
@@ -260,6 +268,7 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
 const std::map<std::string, std::vector<std::pair<std::string, double>>>& kretschmann_params() {
   static const std::map<std::string, std::vector<std::pair<std::string, double>>> table = {
       {"Kasner", {{"u", 2.0}}},
+      {"VaidyaIncRad", {{"vl", 2.0}}},  // m(v) > 0 around the sample position v = 0
   };
   return table;
 }
