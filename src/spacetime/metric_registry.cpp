@@ -43,7 +43,8 @@
   X(ExtremeReissnerNordstromDihole, "ExtremeReissnerNordstromDihole") \
   X(SchwarzschildWT, "SchwarzschildWT")         \
   X(Kruskal, "Kruskal")                         \
-  X(VaidyaIncRad, "VaidyaIncRad")
+  X(VaidyaIncRad, "VaidyaIncRad")               \
+  X(SultanaDyerBlackhole, "SultanaDyerBlackhole")
 
 namespace geovis {
 

@@ -352,3 +352,41 @@ TEST(MetricsCatalogue, VaidyaIsANullDustWithTheMassFunctionsRate) {
   }
   EXPECT_GT(curved, 10);
 }
+
+/// Sultana–Dyer: ∂_t is a conformal Killing vector (g = t⁴ ĝ with static ĝ) and ∂_φ a Killing
+/// vector, so E = −g(∂_t, k) and L = g(∂_φ, k) are constant along light rays (Wald (1984) App. C.3);
+/// the conformally related null geodesics are Schwarzschild's.
+TEST(MetricsCatalogue, SultanaDyerLightRaysConserveTheConformalEnergyAndAngularMomentum) {
+  const auto m = make_metric("SultanaDyerBlackhole", {{"mass", 0.7}});
+  for (TetradKind kind : {TetradKind::Static, TetradKind::Comoving}) {
+    const Vec4 x{{2.0, 5.0, 1.2, 0.3}};
+    mc::expect_orthonormal(*m, x, kind);
+    const Vec4 k = local_null_direction(m->natural_tetrad(x, kind), Vec3{0.3, 0.8, -0.4}, true);
+    double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+    auto conserved = [&](const double* s) {
+      Mat4 g;
+      m->metric_tensor(Vec4{{s[0], s[1], s[2], s[3]}}, g);
+      double E = 0, L = 0;
+      for (int b = 0; b < 4; ++b) {
+        E -= g[0][b] * s[4 + b];
+        L += g[3][b] * s[4 + b];
+      }
+      return std::pair<double, double>{E, L};
+    };
+    const auto [E0, L0] = conserved(y);
+    SolverConfig cfg;
+    cfg.eps_abs = 1e-12;
+    cfg.max_steps = 300;
+    double worst = 0;
+    int steps = 0;
+    auto cb = [&](const StepView& s) {
+      const auto [E, L] = conserved(s.y1);
+      worst = std::max({worst, std::fabs(E - E0) / std::fabs(E0), std::fabs(L - L0) / std::fabs(L0)});
+      ++steps;
+      return StepAction::Continue;
+    };
+    m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+    EXPECT_GT(steps, 20);
+    EXPECT_LT(worst, 1e-8);
+  }
+}
