@@ -44,7 +44,8 @@
   X(SchwarzschildWT, "SchwarzschildWT")         \
   X(Kruskal, "Kruskal")                         \
   X(VaidyaIncRad, "VaidyaIncRad")               \
-  X(SultanaDyerBlackhole, "SultanaDyerBlackhole")
+  X(SultanaDyerBlackhole, "SultanaDyerBlackhole") \
+  X(FriedmanNonEmptyNull, "FriedmanNonEmptyNull")
 
 namespace geovis {
 

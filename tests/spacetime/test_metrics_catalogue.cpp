@@ -390,3 +390,38 @@ TEST(MetricsCatalogue, SultanaDyerLightRaysConserveTheConformalEnergyAndAngularM
     EXPECT_LT(worst, 1e-8);
   }
 }
+
+/// Friedmann dust: the Einstein tensor is that of pressure-free dust at rest in the chart,
+/// G_ab = 8πρ u_a u_b with u = ∂_χ/R (no pressure, no flux), and the density falls as ρ ∝ R⁻³
+/// (MTW (1973) §27.10), for k = 0, 1, −1 (the Kretschmann scalar is in the registry table).
+TEST(MetricsCatalogue, FriedmanIsPressureFreeDustWithRhoR3Constant) {
+  for (double k : {0.0, 1.0, -1.0}) {
+    SCOPED_TRACE(k);
+    const auto m = make_metric("FriedmanNonEmptyNull", {{"k", k}, {"mass", 2.0}});
+    double rhoR3_first = 0;
+    for (const Vec4& x : {Vec4{{0.7, 0.8, 1.0, 0.2}}, Vec4{{1.3, 0.5, 2.0, -1.0}}, Vec4{{2.2, 1.4, 0.6, 3.0}}}) {
+      ASSERT_TRUE(m->is_valid(x));
+      mc::expect_christoffel_matches_ad(*m, x, mc::kRuleRel, mc::kRuleFloorFrac);
+      Mat4 g;
+      m->metric_tensor(x, g);
+      const Mat4 gi = invert(g);
+      double scale = 0;
+      const Mat4 ric = mc::ricci(*m, x, &scale);
+      double Rs = 0;
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) Rs += gi[a][b] * ric[a][b];
+      Mat4 G;
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) G[a][b] = ric[a][b] - 0.5 * Rs * g[a][b];
+      const double R2 = -g[0][0];  // R(χ)², u_χ = −R
+      const double rho8pi = G[0][0] / R2;
+      EXPECT_GT(rho8pi, 0.0);
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+          if (a != 0 || b != 0) EXPECT_NEAR(G[a][b], 0.0, 1e-10 * scale * std::max(1.0, std::fabs(g[a][b]))) << a << b;
+      const double rhoR3 = rho8pi * std::pow(R2, 1.5);
+      if (rhoR3_first == 0) rhoR3_first = rhoR3;
+      EXPECT_NEAR(rhoR3, rhoR3_first, 1e-9 * rhoR3_first);
+    }
+  }
+}

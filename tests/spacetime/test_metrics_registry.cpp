@@ -260,6 +260,18 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
          const double mv = s > 0 ? m.param("k") * std::cbrt(s) * std::pow(std::tanh(m.param("sigma") * s), 2) : 0.0;
          return 48.0 * mv * mv / std::pow(x[1], 6);
        }},
+      // Robertson–Walker: the orthonormal Riemann components are R_0i0i = −ä/a and R_ijij = (ȧ² + k)/a²
+      // (MTW (1973) §27.6), so K = 12 [(ä/a)² + ((ȧ² + k)/a²)²]; in conformal time (a = R(χ),
+      // ȧ = R'/R, ä = (R R'' − R'²)/R³): K = 12 [(R R'' − R'²)² + (R'² + k R²)²]/R⁸.
+      {"FriedmanNonEmptyNull",
+       [](const Metric& m, const Vec4& x) {
+         const double kp = m.param("k"), C = 4.0 * m.param("mass") / (3.0 * M_PI), c = x[0];
+         const int k = kp >= 1 ? 1 : (kp <= -1 ? -1 : 0);
+         const double R = k == 0 ? 2.25 * C * c * c : (k == 1 ? 0.5 * C * (1 - std::cos(c)) : 0.5 * C * (std::cosh(c) - 1));
+         const double R1 = k == 0 ? 4.5 * C * c : (k == 1 ? 0.5 * C * std::sin(c) : 0.5 * C * std::sinh(c));
+         const double R2 = k == 0 ? 4.5 * C : (k == 1 ? 0.5 * C * std::cos(c) : 0.5 * C * std::cosh(c));
+         return 12.0 * (std::pow(R * R2 - R1 * R1, 2) + std::pow(R1 * R1 + k * R * R, 2)) / std::pow(R, 8);
+       }},
   };
   return table;
 }
