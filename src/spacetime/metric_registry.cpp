@@ -45,7 +45,8 @@
   X(Kruskal, "Kruskal")                         \
   X(VaidyaIncRad, "VaidyaIncRad")               \
   X(SultanaDyerBlackhole, "SultanaDyerBlackhole") \
-  X(FriedmanNonEmptyNull, "FriedmanNonEmptyNull")
+  X(FriedmanNonEmptyNull, "FriedmanNonEmptyNull") \
+  X(TeoWHl, "TeoWHl")
 
 namespace geovis {
 

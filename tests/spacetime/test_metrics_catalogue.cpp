@@ -425,3 +425,45 @@ TEST(MetricsCatalogue, FriedmanIsPressureFreeDustWithRhoR3Constant) {
     }
   }
 }
+
+/// TeoWHl: stationary and axisymmetric, so E = −g(∂_t, k) and L = g(∂_φ, k) are constant along a
+/// light ray that passes the throat into the other universe; the default frame is the static
+/// observer (e_(0) ∝ ∂_t) and the lnrf frame rotates with ω = −g_tφ/g_φφ = b0²/(2r³) (Teo, PRD 58
+/// (1998) 024014).
+TEST(MetricsCatalogue, TeoWHlConservesEnergyAndAngularMomentumThroughTheThroat) {
+  const double b0 = 1.4;
+  const auto m = make_metric("TeoWHl", {{"b0", b0}});
+  const Vec4 x{{0.0, 4.0, 1.3, 0.2}};
+  const Tetrad e = m->natural_tetrad(x);
+  EXPECT_EQ(e[0][1], 0.0);
+  EXPECT_EQ(e[0][3], 0.0);
+  const Tetrad lnrf = m->natural_tetrad(x, TetradKind::LNRF);
+  const double r = std::sqrt(b0 * b0 + x[1] * x[1]);
+  EXPECT_NEAR(lnrf[0][3] / lnrf[0][0], b0 * b0 / (2 * r * r * r), 1e-15);
+  const Vec4 k = local_null_direction(e, Vec3{-1.0, 0.1, 0.15}, false);
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  auto conserved = [&](const double* s) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{s[0], s[1], s[2], s[3]}}, g);
+    double E = 0, L = 0;
+    for (int b = 0; b < 4; ++b) {
+      E -= g[0][b] * s[4 + b];
+      L += g[3][b] * s[4 + b];
+    }
+    return std::pair<double, double>{E, L};
+  };
+  const auto [E0, L0] = conserved(y);
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 3000;
+  cfg.lambda_max = 30;
+  double worst = 0;
+  auto cb = [&](const StepView& s) {
+    const auto [E, L] = conserved(s.y1);
+    worst = std::max({worst, std::fabs(E - E0) / std::fabs(E0), std::fabs(L - L0) / std::fabs(L0)});
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_LT(y[1], -4.0);  // through the throat into the other universe
+  EXPECT_LT(worst, 1e-9);
+}
