@@ -46,7 +46,12 @@
   X(VaidyaIncRad, "VaidyaIncRad")               \
   X(SultanaDyerBlackhole, "SultanaDyerBlackhole") \
   X(FriedmanNonEmptyNull, "FriedmanNonEmptyNull") \
-  X(TeoWHl, "TeoWHl")
+  X(TeoWHl, "TeoWHl")                           \
+  X(PetrovTypeD_AIII, "Petrov_Type_D_AIII_ES")  \
+  X(PetrovTypeD_BI, "Petrov_Type_D_BI_ES")      \
+  X(PetrovTypeD_BII, "Petrov_Type_D_BII_ES")    \
+  X(PetrovTypeD_BIII, "Petrov_Type_D_BIII_ES")  \
+  X(PetrovTypeD_C, "Petrov_Type_D_C_ES")
 
 namespace geovis {
 

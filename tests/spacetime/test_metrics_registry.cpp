@@ -214,6 +214,21 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
       // Schwarzschild with b = 2M: K = 12 b²/r⁶.
       {"Petrov_Type_D_AI_ES",
        [](const Metric& m, const Vec4& x) { return 12.0 * std::pow(m.param("b"), 2) / std::pow(x[1], 6); }},
+      // The Ehlers–Kundt classes are one family, ds² = z² dΣ_ε² ∓ (b/z − ε) dt² ± dz²/(b/z − ε) with t
+      // and the Killing coordinate of Σ exchanged between A and B (Stephani et al., Exact Solutions
+      // (2003) §18.6); the only Weyl scalar is Ψ2 = −b/(2z³), so K = 48 Ψ2² = 12 b²/z⁶, with b = 1 for
+      // the flat-slice classes AIII and BIII (ε = 0). The C-metric with unit cubic coefficient,
+      // f(x) = x³ + a x + b, has Ψ2 = −(x + y)³/2 (2mA = 1 in the Kinnersley–Walker form with
+      // 1/r = A (x + y)), so K = 12 (x + y)⁶.
+      {"Petrov_Type_D_AII_ES",
+       [](const Metric& m, const Vec4& x) { return 12.0 * std::pow(m.param("b"), 2) / std::pow(x[3], 6); }},
+      {"Petrov_Type_D_AIII_ES", [](const Metric&, const Vec4& x) { return 12.0 / std::pow(x[3], 6); }},
+      {"Petrov_Type_D_BI_ES",
+       [](const Metric& m, const Vec4& x) { return 12.0 * std::pow(m.param("b"), 2) / std::pow(x[1], 6); }},
+      {"Petrov_Type_D_BII_ES",
+       [](const Metric& m, const Vec4& x) { return 12.0 * std::pow(m.param("b"), 2) / std::pow(x[3], 6); }},
+      {"Petrov_Type_D_BIII_ES", [](const Metric&, const Vec4& x) { return 12.0 / std::pow(x[3], 6); }},
+      {"Petrov_Type_D_C_ES", [](const Metric&, const Vec4& x) { return 12.0 * std::pow(x[2] + x[3], 6); }},
       // Spatial Schwarzschild slice times time: sectional curvatures −M/r³ (twice) and 2M/r³, so
       // K = 4 (1 + 1 + 4) M²/r⁶ = 24 M²/r⁶.
       {"SchwarzschildWT",
@@ -452,6 +467,11 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"SchwarzschildTortoise", {}},
       {"Petrov_Type_D_AI_ES", {}},
       {"Petrov_Type_D_AII_ES", {}},
+      {"Petrov_Type_D_AIII_ES", {}},
+      {"Petrov_Type_D_BI_ES", {}},
+      {"Petrov_Type_D_BII_ES", {}},
+      {"Petrov_Type_D_BIII_ES", {}},
+      {"Petrov_Type_D_C_ES", {}},
       {"Kasner", {{"u", 2.0}}},
       {"Kruskal", {}},
   };
