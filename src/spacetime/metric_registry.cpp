@@ -51,7 +51,8 @@
   X(PetrovTypeD_BI, "Petrov_Type_D_BI_ES")      \
   X(PetrovTypeD_BII, "Petrov_Type_D_BII_ES")    \
   X(PetrovTypeD_BIII, "Petrov_Type_D_BIII_ES")  \
-  X(PetrovTypeD_C, "Petrov_Type_D_C_ES")
+  X(PetrovTypeD_C, "Petrov_Type_D_C_ES")        \
+  X(PravdaCMetric, "Pravda_C-Metric")
 
 namespace geovis {
 

@@ -467,3 +467,35 @@ TEST(MetricsCatalogue, TeoWHlConservesEnergyAndAngularMomentumThroughTheThroat) 
   EXPECT_LT(y[1], -4.0);  // through the throat into the other universe
   EXPECT_LT(worst, 1e-9);
 }
+
+/// Pravda C-metric: a static axisymmetric vacuum, so ρ = √(−g_qq g_pp) and
+/// z = (1 + mA xy (x − y) + xy)/(A² (x + y)²) are Weyl canonical coordinates (the form behind
+/// Motion4D's Pravda_C-Metric_Canonical_Coords; Pravda & Pravdová, Czech. J. Phys. 50 (2000) 333):
+/// the (x, y) part of the metric is conformal to dρ² + dz², i.e. the map (x, y) → (ρ, z) has
+/// orthogonal columns with |∂_x(ρ, z)|²/g_xx = |∂_y(ρ, z)|²/g_yy.
+TEST(MetricsCatalogue, PravdaCMetricHasWeylCanonicalCoordinates) {
+  const double A = 0.15, mass = 0.8;
+  const auto m = make_metric("Pravda_C-Metric", {{"a", A}, {"m", mass}});
+  auto rho_z = [&](double x, double y) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{0, x, y, 0}}, g);
+    const double s = x + y;
+    return std::pair<double, double>{std::sqrt(-g[0][0] * g[3][3]),
+                                     (1 + mass * A * x * y * (x - y) + x * y) / (A * A * s * s)};
+  };
+  for (const auto& [x, y] : {std::pair{0.2, 2.0}, std::pair{-0.5, 3.0}, std::pair{0.7, 1.6}}) {
+    ASSERT_TRUE(m->is_valid(Vec4{{0, x, y, 0}})) << x << " " << y;
+    const double h = 1e-6;
+    const auto [rxp, zxp] = rho_z(x + h, y);
+    const auto [rxm, zxm] = rho_z(x - h, y);
+    const auto [ryp, zyp] = rho_z(x, y + h);
+    const auto [rym, zym] = rho_z(x, y - h);
+    const double rx = (rxp - rxm) / (2 * h), zx = (zxp - zxm) / (2 * h);
+    const double ry = (ryp - rym) / (2 * h), zy = (zyp - zym) / (2 * h);
+    Mat4 g;
+    m->metric_tensor(Vec4{{0, x, y, 0}}, g);
+    const double nx = rx * rx + zx * zx, ny = ry * ry + zy * zy;
+    EXPECT_NEAR((rx * ry + zx * zy) / std::sqrt(nx * ny), 0.0, 1e-7);
+    EXPECT_NEAR((nx / g[1][1]) / (ny / g[2][2]), 1.0, 1e-7);
+  }
+}

@@ -229,6 +229,12 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
        [](const Metric& m, const Vec4& x) { return 12.0 * std::pow(m.param("b"), 2) / std::pow(x[3], 6); }},
       {"Petrov_Type_D_BIII_ES", [](const Metric&, const Vec4& x) { return 12.0 / std::pow(x[3], 6); }},
       {"Petrov_Type_D_C_ES", [](const Metric&, const Vec4& x) { return 12.0 * std::pow(x[2] + x[3], 6); }},
+      // C-metric: Ψ2 = −m/r³ with r = 1/(A (x + y)) (Kinnersley & Walker, PRD 2 (1970) 1359), so
+      // K = 48 m² A⁶ (x + y)⁶.
+      {"Pravda_C-Metric",
+       [](const Metric& m, const Vec4& x) {
+         return 48.0 * std::pow(m.param("m"), 2) * std::pow(m.param("a") * (x[1] + x[2]), 6);
+       }},
       // Spatial Schwarzschild slice times time: sectional curvatures −M/r³ (twice) and 2M/r³, so
       // K = 4 (1 + 1 + 4) M²/r⁶ = 24 M²/r⁶.
       {"SchwarzschildWT",
@@ -472,6 +478,7 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"Petrov_Type_D_BII_ES", {}},
       {"Petrov_Type_D_BIII_ES", {}},
       {"Petrov_Type_D_C_ES", {}},
+      {"Pravda_C-Metric", {}},
       {"Kasner", {{"u", 2.0}}},
       {"Kruskal", {}},
   };
