@@ -59,15 +59,18 @@ class Kruskal final : public MetricCRTP<Kruskal> {
     } else if (a < 2.0) {
       w = a * (1.0 - a + 1.5 * a * a) / (1.0 + 2.5 * a * a);
     } else {
-      const double la = std::log(a);
-      w = la - std::log(la);
+      const double la = std::log(a), lla = std::log(la);
+      w = la - lla + lla / la;
     }
-    for (int i = 0; i < 30; ++i) {
+    // Halley converges cubically: after a step of size δ the error is O(δ³), so a step below
+    // 1e-9 (1 + |w|) leaves an error far below the double rounding (and a test on δ ~ 1e-16 would
+    // never be met reliably: δ itself is then rounding noise).
+    for (int i = 0; i < 20; ++i) {
       const double ew = std::exp(w), f = w * ew - a, wp1 = w + 1.0;
       if (wp1 <= 0.0) break;
       const double dw = f / (ew * wp1 - (w + 2.0) * f / (2.0 * wp1));
       w -= dw;
-      if (std::fabs(dw) <= 4e-16 * (1.0 + std::fabs(w))) break;
+      if (std::fabs(dw) <= 1e-9 * (1.0 + std::fabs(w))) break;
     }
     return 1.0 + w;
   }
