@@ -1,11 +1,14 @@
 // The metrics added from Motion4D's catalogue (Goedel family, Kasner, Curzon,
 // CosmicStringSchwarzschild, MinkowskiConformal, SchwarzschildTortoise, MinkowskiRotLattice,
-// StraightSpinningString, ExtremeReissnerNordstromDihole) beyond the generated registry tests
-// (test_metrics_registry.cpp): closed-form Christoffel symbols against AD at non-default parameters
-// and away from the sample position, tetrads of every kind, and physics with independent
-// expectations (Gödel's field equations, the Einstein static universe's null cone, the tortoise
-// radial light rays, the rotating lattice and spinning string seen from inertial frames,
-// Motion4D's k^t rescaling of AlcubierreWarpSimple, Majumdar–Papapetrou as an electrovacuum).
+// StraightSpinningString, ExtremeReissnerNordstromDihole, Kruskal, VaidyaIncRad,
+// SultanaDyerBlackhole, FriedmanNonEmptyNull, TeoWHl, Pravda_C-Metric) beyond the generated registry
+// tests (test_metrics_registry.cpp): closed-form Christoffel symbols against AD at non-default
+// parameters and away from the sample position, tetrads of every kind, and physics with independent
+// expectations (Gödel's field equations, the Einstein static universe's null cone, the tortoise and
+// Kruskal radial light rays, the rotating lattice and spinning string seen from inertial frames,
+// Motion4D's k^t rescaling of AlcubierreWarpSimple, Majumdar–Papapetrou as an electrovacuum,
+// Vaidya's null dust, conserved quantities of Sultana–Dyer and Teo light rays, Friedmann dust,
+// the C-metric's Weyl coordinates).
 #include <gtest/gtest.h>
 
 #include <algorithm>
