@@ -5,8 +5,8 @@
 // with the dust scale factors of Motion4D (calc_R), C = 4M/(3π):
 //   k = 0: R = (9/4) C χ²,   k = 1: R = (C/2)(1 − cos χ),   k = −1: R = (C/2)(cosh χ − 1).
 // The parameter k is snapped as in Motion4D: k >= 1 → 1, k <= −1 → −1, otherwise 0. Each R solves
-// the dust (zero pressure) equation 2 R R'' − R'² + k R² = 0 (the pressure-free Friedmann equation, MTW §27.10, in conformal
-// time).
+// the dust (zero pressure) equation 2 R R'' − R'² + k R² = 0 (the pressure-free Friedmann equation,
+// MTW §27.10, in conformal time).
 // Christoffel symbols: diagonal metric (diagonal_metric.h) with h = R² (−1, 1/B², r²/B², r² sin²θ/B²),
 // ∂_χ h = (2R'/R) h, ∂_r(1/B²) = −k r/B³.
 // Natural tetrad (Motion4D localToCoord, the same for default and static): the comoving dust
@@ -24,16 +24,17 @@ namespace geovis {
 class FriedmanNonEmptyNull final : public MetricCRTP<FriedmanNonEmptyNull> {
  public:
   FriedmanNonEmptyNull()
-      : MetricCRTP({"FriedmanNonEmptyNull",
-                    {"chi", "r", "theta", "phi"},
-                    CoordType::Spherical,
-                    {{"k", 0.0, -1e300, 1e300, false, false, "spatial curvature k (snapped: >= 1 -> 1, <= -1 -> -1, else 0)"},
-                     {"mass", 1.0, 0.0, 1e300, true, false, "mass M of the dust (C = 4M/(3 pi))"}},
-                    {TetradKind::Default, TetradKind::Static},
-                    "Friedmann dust universe in conformal time (Friedmann, Z. Phys. 10 (1922) 377; Misner, Thorne & "
-                    "Wheeler (1973) 27.10)",
-                    Vec4{{1, 10, M_PI / 2, 0}},
-                    {}}) {
+      : MetricCRTP(
+            {"FriedmanNonEmptyNull",
+             {"chi", "r", "theta", "phi"},
+             CoordType::Spherical,
+             {{"k", 0.0, -1e300, 1e300, false, false, "spatial curvature k (snapped: >= 1 -> 1, <= -1 -> -1, else 0)"},
+              {"mass", 1.0, 0.0, 1e300, true, false, "mass M of the dust (C = 4M/(3 pi))"}},
+             {TetradKind::Default, TetradKind::Static},
+             "Friedmann dust universe in conformal time (Friedmann, Z. Phys. 10 (1922) 377; Misner, Thorne & "
+             "Wheeler (1973) 27.10)",
+             Vec4{{1, 10, M_PI / 2, 0}},
+             {}}) {
     on_params_changed();
   }
 
@@ -110,8 +111,8 @@ class FriedmanNonEmptyNull final : public MetricCRTP<FriedmanNonEmptyNull> {
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     if (!is_valid(x))
-      throw Error("FriedmanNonEmptyNull: no comoving observer at chi = " + std::to_string(x[0]) + ", r = " +
-                  std::to_string(x[1]) + " (outside the chart)");
+      throw Error("FriedmanNonEmptyNull: no comoving observer at chi = " + std::to_string(x[0]) +
+                  ", r = " + std::to_string(x[1]) + " (outside the chart)");
     const double R = scale(x[0]), r = x[1];
     const double B = std::fabs(1.0 + 0.25 * double(k_) * r * r);
     Tetrad e{};

@@ -80,8 +80,8 @@ class PetrovTypeD_BI final : public MetricCRTP<PetrovTypeD_BI> {
     require_tetrad_kind(kind);
     const double r = x[1], st = std::sin(x[2]);
     if (!(r > 0.0 && r > b_) || st == 0.0)
-      throw Error("Petrov_Type_D_BI_ES: no static observer at r = " + std::to_string(r) + ", theta = " +
-                  std::to_string(x[2]) + " (needs r > max(0, b), sin(theta) != 0)");
+      throw Error("Petrov_Type_D_BI_ES: no static observer at r = " + std::to_string(r) +
+                  ", theta = " + std::to_string(x[2]) + " (needs r > max(0, b), sin(theta) != 0)");
     const double w = std::sqrt(1.0 - b_ / r);
     Tetrad e{};
     e[0][0] = 1.0 / (r * std::fabs(st));

@@ -90,8 +90,7 @@ class PravdaCMetric final : public MetricCRTP<PravdaCMetric> {
   bool is_valid(const Vec4& x) const override {
     const double X = x[1], Y = x[2];
     return 1.0 - X * X - ma2_ * X * X * X > horizon_eps_ && -1.0 + Y * Y - ma2_ * Y * Y * Y > horizon_eps_ &&
-           X + Y != 0.0 &&
-           std::isfinite(x[0]) && std::isfinite(X) && std::isfinite(Y) && std::isfinite(x[3]);
+           X + Y != 0.0 && std::isfinite(x[0]) && std::isfinite(X) && std::isfinite(Y) && std::isfinite(x[3]);
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {

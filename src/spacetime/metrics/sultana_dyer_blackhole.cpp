@@ -121,8 +121,8 @@ class SultanaDyerBlackhole final : public MetricCRTP<SultanaDyerBlackhole> {
     const double h = 2.0 * m_ / r;
     const bool comoving = kind == TetradKind::Comoving;
     if (!(t > 0.0 && r > 0.0) || st == 0.0 || (!comoving && !(h < 1.0)))
-      throw Error("SultanaDyerBlackhole: no " + std::string(tetrad_kind_name(kind)) + " observer at t = " +
-                  std::to_string(t) + ", r = " + std::to_string(r) +
+      throw Error("SultanaDyerBlackhole: no " + std::string(tetrad_kind_name(kind)) +
+                  " observer at t = " + std::to_string(t) + ", r = " + std::to_string(r) +
                   " (needs t > 0, sin(theta) != 0 and, for the static frame, r > 2m)");
     const double ia = 1.0 / (t * t);
     Tetrad e{};

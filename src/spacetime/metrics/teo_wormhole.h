@@ -115,7 +115,8 @@ class TeoWormhole : public MetricCRTP<M> {
       const double w2 = 1.0 - r2 * st * st * om * om;  // −g_tt
       if (!(w2 > 0.0)) {
         std::ostringstream os;
-        os << name << ": no static observer at l = " << x[1] << ", theta = " << x[2] << " (g_tt >= 0); use the lnrf frame";
+        os << name << ": no static observer at l = " << x[1] << ", theta = " << x[2]
+           << " (g_tt >= 0); use the lnrf frame";
         throw Error(os.str());
       }
       const double w = std::sqrt(w2);
