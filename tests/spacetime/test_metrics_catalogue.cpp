@@ -502,3 +502,43 @@ TEST(MetricsCatalogue, PravdaCMetricHasWeylCanonicalCoordinates) {
     EXPECT_NEAR((nx / g[1][1]) / (ny / g[2][2]), 1.0, 1e-7);
   }
 }
+
+/// Kruskal's escape test (the Schwarzschild photon-sphere criterion in the areal radius): a light ray
+/// declared escaped keeps moving outward when followed further (over a stretch only: T and X grow
+/// like e^(r/(2 r_s)), so the ray cannot be followed to r ~ 1e4 as in Escape.EscapedRaysNeverTurnBack).
+TEST(MetricsCatalogue, KruskalEscapedRaysNeverTurnBack) {
+  const auto m = make_metric("Kruskal");
+  std::mt19937 rng(5);
+  int escaped = 0;
+  for (int n = 0; n < 30; ++n) {
+    const Vec4 x{{uni(rng, -0.5, 0.5), uni(rng, 2.0, 4.0), uni(rng, 0.3, 2.8), uni(rng, -3, 3)}};
+    const Vec3 d{uni(rng, -1, 1), uni(rng, -1, 1), uni(rng, -1, 1)};
+    const Vec4 k = local_null_direction(m->natural_tetrad(x), d, n % 2 == 0);
+    double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+    SolverConfig cfg;
+    cfg.kind = SolverKind::DormandPrince853;
+    cfg.eps_abs = 1e-10;
+    cfg.max_steps = 20000;
+    cfg.escape_radius = 0;
+    const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
+    if (r.reason != StopReason::Escaped) continue;
+    ++escaped;
+    Vec3 p;
+    m->to_pseudo_cartesian(Vec4{{y[0], y[1], y[2], y[3]}}, p);
+    EXPECT_GT(norm(p), 1.5 * 2.0);  // beyond the photon sphere
+    cfg.escape_radius = INFINITY;
+    cfg.max_steps = 400;
+    double prev = norm(p), worst = 0;
+    auto cb = [&](const StepView& s) {
+      Vec3 q;
+      m->to_pseudo_cartesian(Vec4{{s.y1[0], s.y1[1], s.y1[2], s.y1[3]}}, q);
+      worst = std::max(worst, (prev - norm(q)) / prev);
+      prev = norm(q);
+      return StepAction::Continue;
+    };
+    m->integrate(cfg, GeodesicSystem::Geodesic, y, r.lambda, cb);
+    EXPECT_LE(worst, 1e-12) << "ray " << n;
+    EXPECT_GT(prev, 2.0 * r.escape_radius) << "ray " << n;
+  }
+  EXPECT_GT(escaped, 5);
+}
