@@ -52,7 +52,8 @@
   X(PetrovTypeD_BII, "Petrov_Type_D_BII_ES")    \
   X(PetrovTypeD_BIII, "Petrov_Type_D_BIII_ES")  \
   X(PetrovTypeD_C, "Petrov_Type_D_C_ES")        \
-  X(PravdaCMetric, "Pravda_C-Metric")
+  X(PravdaCMetric, "Pravda_C-Metric")           \
+  X(PravdaCMetricCanonical, "Pravda_C-Metric_Canonical_Coords")
 
 namespace geovis {
 

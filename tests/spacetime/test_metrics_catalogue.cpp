@@ -542,3 +542,41 @@ TEST(MetricsCatalogue, KruskalEscapedRaysNeverTurnBack) {
   }
   EXPECT_GT(escaped, 5);
 }
+
+/// C-metric in boost-rotation symmetric coordinates: the boost ζ ∂_τ + τ ∂_ζ and the rotation ∂_φ
+/// are Killing vectors (Bičák & Schmidt, PRD 40 (1989) 1827), so g(B, k) and g(∂_φ, k) are constant
+/// along a light ray, on both sides of the roof (default tetrad exchanges e_(0) and e_(3) there).
+TEST(MetricsCatalogue, PravdaCanonicalConservesBoostAndRotationCharges) {
+  const auto m = make_metric("Pravda_C-Metric_Canonical_Coords", {{"a", 0.1}, {"m", 1.0}});
+  for (const Vec4& x : {Vec4{{1.0, 1.0, 0.0, 0.2}}, Vec4{{0.3, 1.5, 0.4, 2.0}}}) {
+    ASSERT_TRUE(m->is_valid(x));
+    mc::expect_christoffel_matches_ad(*m, x, mc::kRuleRel, mc::kRuleFloorFrac);
+    const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{0.4, -0.3, 0.8}, true);
+    double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+    auto charges = [&](const double* s) {
+      Mat4 g;
+      m->metric_tensor(Vec4{{s[0], s[1], s[2], s[3]}}, g);
+      const double B[4] = {s[3], 0.0, 0.0, s[0]};  // ζ ∂_τ + τ ∂_ζ
+      double EB = 0, L = 0;
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) EB += g[a][b] * B[a] * s[4 + b];
+      for (int b = 0; b < 4; ++b) L += g[2][b] * s[4 + b];
+      return std::pair<double, double>{EB, L};
+    };
+    const auto [E0, L0] = charges(y);
+    SolverConfig cfg;
+    cfg.eps_abs = 1e-12;
+    cfg.max_steps = 300;
+    double worst = 0;
+    int steps = 0;
+    auto cb = [&](const StepView& s) {
+      const auto [E, L] = charges(s.y1);
+      worst = std::max({worst, std::fabs(E - E0) / std::fabs(E0), std::fabs(L - L0) / std::fabs(L0)});
+      ++steps;
+      return StepAction::Continue;
+    };
+    m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+    EXPECT_GT(steps, 20);
+    EXPECT_LT(worst, 1e-8);
+  }
+}

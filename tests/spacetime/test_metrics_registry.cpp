@@ -479,6 +479,7 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"Petrov_Type_D_BIII_ES", {}},
       {"Petrov_Type_D_C_ES", {}},
       {"Pravda_C-Metric", {}},
+      {"Pravda_C-Metric_Canonical_Coords", {{"a", 0.1}}},  // rod ends |Z_i| ~ 1/(2A²): better conditioned
       {"Kasner", {{"u", 2.0}}},
       {"Kruskal", {}},
   };
