@@ -41,7 +41,19 @@
   X(PetrovTypeD_AI, "Petrov_Type_D_AI_ES")       \
   X(PetrovTypeD_AII, "Petrov_Type_D_AII_ES")     \
   X(ExtremeReissnerNordstromDihole, "ExtremeReissnerNordstromDihole") \
-  X(SchwarzschildWT, "SchwarzschildWT")
+  X(SchwarzschildWT, "SchwarzschildWT")         \
+  X(Kruskal, "Kruskal")                         \
+  X(VaidyaIncRad, "VaidyaIncRad")               \
+  X(SultanaDyerBlackhole, "SultanaDyerBlackhole") \
+  X(FriedmanNonEmptyNull, "FriedmanNonEmptyNull") \
+  X(TeoWHl, "TeoWHl")                           \
+  X(PetrovTypeD_AIII, "Petrov_Type_D_AIII_ES")  \
+  X(PetrovTypeD_BI, "Petrov_Type_D_BI_ES")      \
+  X(PetrovTypeD_BII, "Petrov_Type_D_BII_ES")    \
+  X(PetrovTypeD_BIII, "Petrov_Type_D_BIII_ES")  \
+  X(PetrovTypeD_C, "Petrov_Type_D_C_ES")        \
+  X(PravdaCMetric, "Pravda_C-Metric")           \
+  X(PravdaCMetricCanonical, "Pravda_C-Metric_Canonical_Coords")
 
 namespace geovis {
 

@@ -48,7 +48,7 @@ TEST(Escape, DeclaredByTheAsymptoticallyFlatMetrics) {
   const std::set<std::string> flat = {"Minkowski",         "Schwarzschild",       "SchwarzschildCart",
                                       "SchwarzschildIsotropic", "EddFinkIn",     "PainleveGullstrand",
                                       "KerrBL",            "ReissnerNordstrom",   "JanisNewmanWinicour",
-                                      "MorrisThorne"};
+                                      "MorrisThorne",      "Kruskal"};
   for (const std::string& n : metric_names()) {
     if (n == "Kottler") continue;
     EXPECT_EQ(make_metric(n)->asymptotically_flat(), flat.count(n) == 1) << n;

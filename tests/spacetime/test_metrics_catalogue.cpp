@@ -1,11 +1,14 @@
 // The metrics added from Motion4D's catalogue (Goedel family, Kasner, Curzon,
 // CosmicStringSchwarzschild, MinkowskiConformal, SchwarzschildTortoise, MinkowskiRotLattice,
-// StraightSpinningString, ExtremeReissnerNordstromDihole) beyond the generated registry tests
-// (test_metrics_registry.cpp): closed-form Christoffel symbols against AD at non-default parameters
-// and away from the sample position, tetrads of every kind, and physics with independent
-// expectations (Gödel's field equations, the Einstein static universe's null cone, the tortoise
-// radial light rays, the rotating lattice and spinning string seen from inertial frames,
-// Motion4D's k^t rescaling of AlcubierreWarpSimple, Majumdar–Papapetrou as an electrovacuum).
+// StraightSpinningString, ExtremeReissnerNordstromDihole, Kruskal, VaidyaIncRad,
+// SultanaDyerBlackhole, FriedmanNonEmptyNull, TeoWHl, Pravda_C-Metric) beyond the generated registry
+// tests (test_metrics_registry.cpp): closed-form Christoffel symbols against AD at non-default
+// parameters and away from the sample position, tetrads of every kind, and physics with independent
+// expectations (Gödel's field equations, the Einstein static universe's null cone, the tortoise and
+// Kruskal radial light rays, the rotating lattice and spinning string seen from inertial frames,
+// Motion4D's k^t rescaling of AlcubierreWarpSimple, Majumdar–Papapetrou as an electrovacuum,
+// Vaidya's null dust, conserved quantities of Sultana–Dyer and Teo light rays, Friedmann dust,
+// the C-metric's Weyl coordinates).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -278,4 +281,302 @@ TEST(MetricsCatalogue, ExtremeReissnerNordstromDiholeIsElectrovac) {
   const double r = 1e4;
   m->metric_tensor(Vec4{{0, r, 0, 0}}, g);
   EXPECT_NEAR(-g[0][0], 1.0 - 2.0 * 1.5 / r, 1e-7);
+}
+
+/// Kruskal: radial light rays are the straight lines T ± X = const (MTW 31.14, the (T, X) part is
+/// conformally flat), the areal radius satisfies (r/r_s − 1) e^(r/r_s) = X² − T² (MTW 31.13), and
+/// the static observer moves along the Killing vector X ∂_T + T ∂_X, i.e. keeps X² − T² (and r).
+TEST(MetricsCatalogue, KruskalRadialRaysAreStraightAndTheRadiusIsAreal) {
+  const double M = 1.3, rs = 2 * M;
+  const auto m = make_metric("Kruskal", {{"mass", M}});
+  for (const Vec4& x : {Vec4{{0.3, 2.0, 1.0, 0.2}}, Vec4{{-0.4, 0.1, 0.7, 0.0}}, Vec4{{0.2, -3.0, 2.0, 1.0}}}) {
+    Vec3 p;
+    const int chart = m->to_pseudo_cartesian(x, p);
+    const double r = norm(p), u = x[1] * x[1] - x[0] * x[0];
+    EXPECT_NEAR((r / rs - 1) * std::exp(r / rs), u, 1e-13 * std::max(1.0, std::fabs(u)));
+    // g_θθ = r² (the areal radius), and the inverse map returns the point.
+    Mat4 g;
+    m->metric_tensor(x, g);
+    EXPECT_NEAR(g[2][2], r * r, 1e-13 * r * r);
+    const Vec4 back = m->from_pseudo_cartesian(x[0], p, chart);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(back[i], x[i], 1e-9) << i;
+  }
+  // An ingoing radial light ray from outside through the horizon keeps T + X constant.
+  const Vec4 x{{0.0, 1.5, 1.0, 0.3}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{-1, 0, 0}, false);
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 2000;
+  double worst = 0, u_min = 1e300;
+  auto cb = [&](const StepView& s) {
+    worst = std::max(worst, std::fabs((s.y1[0] + s.y1[1]) - (x[0] + x[1])));
+    u_min = std::min(u_min, s.y1[1] * s.y1[1] - s.y1[0] * s.y1[0]);
+    return StepAction::Continue;
+  };
+  const GeodesicResult res = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  // Stops at the singularity break r = r_s·horizon_eps, X² − T² = (eps − 1) e^eps ≈ −1 + eps²/2.
+  EXPECT_EQ(res.reason, StopReason::Invalid) << stop_reason_name(res.reason);
+  EXPECT_LT(u_min, -1.0 + 1e-6);
+  EXPECT_LT(worst, 1e-9);
+  // Static observer: e_(0) ∝ X ∂_T + T ∂_X.
+  const Vec4 xs{{0.4, 1.2, 1.0, 0.0}};
+  const Tetrad e = m->natural_tetrad(xs, TetradKind::Static);
+  EXPECT_NEAR(e[0][1] / e[0][0], xs[0] / xs[1], 1e-15);
+  EXPECT_GT(e[0][0], 0.0);
+  EXPECT_THROW(m->natural_tetrad(Vec4{{1.0, 0.5, 1.0, 0.0}}, TetradKind::Static), Error);
+}
+
+/// Vaidya: a null dust, R_ab = (2 m'(v)/r²) δ^v_a δ^v_b (Poisson, A Relativist's Toolkit (2004)
+/// §4.3.5), with m'(v) from a central difference of the mass function written out here; Minkowski
+/// (R_ab = 0) for v >= v_l.
+TEST(MetricsCatalogue, VaidyaIsANullDustWithTheMassFunctionsRate) {
+  const double k = 1.3, sigma = 0.7, vl = 2.0;
+  const auto m = make_metric("VaidyaIncRad", {{"k", k}, {"sigma", sigma}, {"vl", vl}});
+  auto mass = [&](double v) { return v < vl ? k * std::cbrt(vl - v) * std::pow(std::tanh(sigma * (vl - v)), 2) : 0.0; };
+  std::mt19937 rng(7);
+  int curved = 0;
+  for (int i = 0; i < 20; ++i) {
+    const Vec4 x{{uni(rng, -3, 3), uni(rng, 5, 15), uni(rng, 0.3, 2.8), uni(rng, -3, 3)}};
+    ASSERT_TRUE(m->is_valid(x));
+    mc::expect_christoffel_matches_ad(*m, x, mc::kRuleRel, mc::kRuleFloorFrac);
+    for (TetradKind kind : m->info().tetrads) mc::expect_orthonormal(*m, x, kind);
+    const double h = 1e-5, dm = (mass(x[0] + h) - mass(x[0] - h)) / (2 * h);
+    double scale = 0;
+    const Mat4 ric = mc::ricci(*m, x, &scale);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        const double ref = (a == 0 && b == 0) ? 2.0 * dm / (x[1] * x[1]) : 0.0;
+        // Finite-difference error of m' (h² times the third derivative, rounding/h) ~1e-10 relative; in
+        // the flat region v >= v_l the components are rounding noise of Christoffel products ~1/r².
+        EXPECT_NEAR(ric[a][b], ref, 1e-7 * std::fabs(2.0 * dm / (x[1] * x[1])) + 1e-14) << a << b << " v " << x[0];
+      }
+    if (x[0] < vl) ++curved;
+  }
+  EXPECT_GT(curved, 10);
+}
+
+/// Sultana–Dyer: ∂_t is a conformal Killing vector (g = t⁴ ĝ with static ĝ) and ∂_φ a Killing
+/// vector, so E = −g(∂_t, k) and L = g(∂_φ, k) are constant along light rays (Wald (1984) App. C.3);
+/// the conformally related null geodesics are Schwarzschild's.
+TEST(MetricsCatalogue, SultanaDyerLightRaysConserveTheConformalEnergyAndAngularMomentum) {
+  const auto m = make_metric("SultanaDyerBlackhole", {{"mass", 0.7}});
+  for (TetradKind kind : {TetradKind::Static, TetradKind::Comoving}) {
+    const Vec4 x{{2.0, 5.0, 1.2, 0.3}};
+    mc::expect_orthonormal(*m, x, kind);
+    const Vec4 k = local_null_direction(m->natural_tetrad(x, kind), Vec3{0.3, 0.8, -0.4}, true);
+    double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+    auto conserved = [&](const double* s) {
+      Mat4 g;
+      m->metric_tensor(Vec4{{s[0], s[1], s[2], s[3]}}, g);
+      double E = 0, L = 0;
+      for (int b = 0; b < 4; ++b) {
+        E -= g[0][b] * s[4 + b];
+        L += g[3][b] * s[4 + b];
+      }
+      return std::pair<double, double>{E, L};
+    };
+    const auto [E0, L0] = conserved(y);
+    SolverConfig cfg;
+    cfg.eps_abs = 1e-12;
+    cfg.max_steps = 300;
+    double worst = 0;
+    int steps = 0;
+    auto cb = [&](const StepView& s) {
+      const auto [E, L] = conserved(s.y1);
+      worst = std::max({worst, std::fabs(E - E0) / std::fabs(E0), std::fabs(L - L0) / std::fabs(L0)});
+      ++steps;
+      return StepAction::Continue;
+    };
+    m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+    EXPECT_GT(steps, 20);
+    EXPECT_LT(worst, 1e-8);
+  }
+}
+
+/// Friedmann dust: the Einstein tensor is that of pressure-free dust at rest in the chart,
+/// G_ab = 8πρ u_a u_b with u = ∂_χ/R (no pressure, no flux), and the density falls as ρ ∝ R⁻³
+/// (MTW (1973) §27.10), for k = 0, 1, −1 (the Kretschmann scalar is in the registry table).
+TEST(MetricsCatalogue, FriedmanIsPressureFreeDustWithRhoR3Constant) {
+  for (double k : {0.0, 1.0, -1.0}) {
+    SCOPED_TRACE(k);
+    const auto m = make_metric("FriedmanNonEmptyNull", {{"k", k}, {"mass", 2.0}});
+    double rhoR3_first = 0;
+    for (const Vec4& x : {Vec4{{0.7, 0.8, 1.0, 0.2}}, Vec4{{1.3, 0.5, 2.0, -1.0}}, Vec4{{2.2, 1.4, 0.6, 3.0}}}) {
+      ASSERT_TRUE(m->is_valid(x));
+      mc::expect_christoffel_matches_ad(*m, x, mc::kRuleRel, mc::kRuleFloorFrac);
+      Mat4 g;
+      m->metric_tensor(x, g);
+      const Mat4 gi = invert(g);
+      double scale = 0;
+      const Mat4 ric = mc::ricci(*m, x, &scale);
+      double Rs = 0;
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) Rs += gi[a][b] * ric[a][b];
+      Mat4 G;
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) G[a][b] = ric[a][b] - 0.5 * Rs * g[a][b];
+      const double R2 = -g[0][0];  // R(χ)², u_χ = −R
+      const double rho8pi = G[0][0] / R2;
+      EXPECT_GT(rho8pi, 0.0);
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b)
+          if (a != 0 || b != 0) EXPECT_NEAR(G[a][b], 0.0, 1e-10 * scale * std::max(1.0, std::fabs(g[a][b]))) << a << b;
+      const double rhoR3 = rho8pi * std::pow(R2, 1.5);
+      if (rhoR3_first == 0) rhoR3_first = rhoR3;
+      EXPECT_NEAR(rhoR3, rhoR3_first, 1e-9 * rhoR3_first);
+    }
+  }
+}
+
+/// TeoWHl: stationary and axisymmetric, so E = −g(∂_t, k) and L = g(∂_φ, k) are constant along a
+/// light ray that passes the throat into the other universe; the default frame is the static
+/// observer (e_(0) ∝ ∂_t) and the lnrf frame rotates with ω = −g_tφ/g_φφ = b0²/(2r³) (Teo, PRD 58
+/// (1998) 024014).
+TEST(MetricsCatalogue, TeoWHlConservesEnergyAndAngularMomentumThroughTheThroat) {
+  const double b0 = 1.4;
+  const auto m = make_metric("TeoWHl", {{"b0", b0}});
+  const Vec4 x{{0.0, 4.0, 1.3, 0.2}};
+  const Tetrad e = m->natural_tetrad(x);
+  EXPECT_EQ(e[0][1], 0.0);
+  EXPECT_EQ(e[0][3], 0.0);
+  const Tetrad lnrf = m->natural_tetrad(x, TetradKind::LNRF);
+  const double r = std::sqrt(b0 * b0 + x[1] * x[1]);
+  EXPECT_NEAR(lnrf[0][3] / lnrf[0][0], b0 * b0 / (2 * r * r * r), 1e-15);
+  const Vec4 k = local_null_direction(e, Vec3{-1.0, 0.1, 0.15}, false);
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  auto conserved = [&](const double* s) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{s[0], s[1], s[2], s[3]}}, g);
+    double E = 0, L = 0;
+    for (int b = 0; b < 4; ++b) {
+      E -= g[0][b] * s[4 + b];
+      L += g[3][b] * s[4 + b];
+    }
+    return std::pair<double, double>{E, L};
+  };
+  const auto [E0, L0] = conserved(y);
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 3000;
+  cfg.lambda_max = 30;
+  double worst = 0;
+  auto cb = [&](const StepView& s) {
+    const auto [E, L] = conserved(s.y1);
+    worst = std::max({worst, std::fabs(E - E0) / std::fabs(E0), std::fabs(L - L0) / std::fabs(L0)});
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_LT(y[1], -4.0);  // through the throat into the other universe
+  EXPECT_LT(worst, 1e-9);
+}
+
+/// Pravda C-metric: a static axisymmetric vacuum, so ρ = √(−g_qq g_pp) and
+/// z = (1 + mA xy (x − y) + xy)/(A² (x + y)²) are Weyl canonical coordinates (the form behind
+/// Motion4D's Pravda_C-Metric_Canonical_Coords; Pravda & Pravdová, Czech. J. Phys. 50 (2000) 333):
+/// the (x, y) part of the metric is conformal to dρ² + dz², i.e. the map (x, y) → (ρ, z) has
+/// orthogonal columns with |∂_x(ρ, z)|²/g_xx = |∂_y(ρ, z)|²/g_yy.
+TEST(MetricsCatalogue, PravdaCMetricHasWeylCanonicalCoordinates) {
+  const double A = 0.15, mass = 0.8;
+  const auto m = make_metric("Pravda_C-Metric", {{"a", A}, {"m", mass}});
+  auto rho_z = [&](double x, double y) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{0, x, y, 0}}, g);
+    const double s = x + y;
+    return std::pair<double, double>{std::sqrt(-g[0][0] * g[3][3]),
+                                     (1 + mass * A * x * y * (x - y) + x * y) / (A * A * s * s)};
+  };
+  for (const auto& [x, y] : {std::pair{0.2, 2.0}, std::pair{-0.5, 3.0}, std::pair{0.7, 1.6}}) {
+    ASSERT_TRUE(m->is_valid(Vec4{{0, x, y, 0}})) << x << " " << y;
+    const double h = 1e-6;
+    const auto [rxp, zxp] = rho_z(x + h, y);
+    const auto [rxm, zxm] = rho_z(x - h, y);
+    const auto [ryp, zyp] = rho_z(x, y + h);
+    const auto [rym, zym] = rho_z(x, y - h);
+    const double rx = (rxp - rxm) / (2 * h), zx = (zxp - zxm) / (2 * h);
+    const double ry = (ryp - rym) / (2 * h), zy = (zyp - zym) / (2 * h);
+    Mat4 g;
+    m->metric_tensor(Vec4{{0, x, y, 0}}, g);
+    const double nx = rx * rx + zx * zx, ny = ry * ry + zy * zy;
+    EXPECT_NEAR((rx * ry + zx * zy) / std::sqrt(nx * ny), 0.0, 1e-7);
+    EXPECT_NEAR((nx / g[1][1]) / (ny / g[2][2]), 1.0, 1e-7);
+  }
+}
+
+/// Kruskal's escape test (the Schwarzschild photon-sphere criterion in the areal radius): a light ray
+/// declared escaped keeps moving outward when followed further (over a stretch only: T and X grow
+/// like e^(r/(2 r_s)), so the ray cannot be followed to r ~ 1e4 as in Escape.EscapedRaysNeverTurnBack).
+TEST(MetricsCatalogue, KruskalEscapedRaysNeverTurnBack) {
+  const auto m = make_metric("Kruskal");
+  std::mt19937 rng(5);
+  int escaped = 0;
+  for (int n = 0; n < 30; ++n) {
+    const Vec4 x{{uni(rng, -0.5, 0.5), uni(rng, 2.0, 4.0), uni(rng, 0.3, 2.8), uni(rng, -3, 3)}};
+    const Vec3 d{uni(rng, -1, 1), uni(rng, -1, 1), uni(rng, -1, 1)};
+    const Vec4 k = local_null_direction(m->natural_tetrad(x), d, n % 2 == 0);
+    double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+    SolverConfig cfg;
+    cfg.kind = SolverKind::DormandPrince853;
+    cfg.eps_abs = 1e-10;
+    cfg.max_steps = 20000;
+    cfg.escape_radius = 0;
+    const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
+    if (r.reason != StopReason::Escaped) continue;
+    ++escaped;
+    Vec3 p;
+    m->to_pseudo_cartesian(Vec4{{y[0], y[1], y[2], y[3]}}, p);
+    EXPECT_GT(norm(p), 1.5 * 2.0);  // beyond the photon sphere
+    cfg.escape_radius = INFINITY;
+    cfg.max_steps = 400;
+    double prev = norm(p), worst = 0;
+    auto cb = [&](const StepView& s) {
+      Vec3 q;
+      m->to_pseudo_cartesian(Vec4{{s.y1[0], s.y1[1], s.y1[2], s.y1[3]}}, q);
+      worst = std::max(worst, (prev - norm(q)) / prev);
+      prev = norm(q);
+      return StepAction::Continue;
+    };
+    m->integrate(cfg, GeodesicSystem::Geodesic, y, r.lambda, cb);
+    EXPECT_LE(worst, 1e-12) << "ray " << n;
+    EXPECT_GT(prev, 2.0 * r.escape_radius) << "ray " << n;
+  }
+  EXPECT_GT(escaped, 5);
+}
+
+/// C-metric in boost-rotation symmetric coordinates: the boost ζ ∂_τ + τ ∂_ζ and the rotation ∂_φ
+/// are Killing vectors (Bičák & Schmidt, PRD 40 (1989) 1827), so g(B, k) and g(∂_φ, k) are constant
+/// along a light ray, on both sides of the roof (default tetrad exchanges e_(0) and e_(3) there).
+TEST(MetricsCatalogue, PravdaCanonicalConservesBoostAndRotationCharges) {
+  const auto m = make_metric("Pravda_C-Metric_Canonical_Coords", {{"a", 0.1}, {"m", 1.0}});
+  for (const Vec4& x : {Vec4{{1.0, 1.0, 0.0, 0.2}}, Vec4{{0.3, 1.5, 0.4, 2.0}}}) {
+    ASSERT_TRUE(m->is_valid(x));
+    mc::expect_christoffel_matches_ad(*m, x, mc::kRuleRel, mc::kRuleFloorFrac);
+    const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{0.4, -0.3, 0.8}, true);
+    double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+    auto charges = [&](const double* s) {
+      Mat4 g;
+      m->metric_tensor(Vec4{{s[0], s[1], s[2], s[3]}}, g);
+      const double B[4] = {s[3], 0.0, 0.0, s[0]};  // ζ ∂_τ + τ ∂_ζ
+      double EB = 0, L = 0;
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) EB += g[a][b] * B[a] * s[4 + b];
+      for (int b = 0; b < 4; ++b) L += g[2][b] * s[4 + b];
+      return std::pair<double, double>{EB, L};
+    };
+    const auto [E0, L0] = charges(y);
+    SolverConfig cfg;
+    cfg.eps_abs = 1e-12;
+    cfg.max_steps = 300;
+    double worst = 0;
+    int steps = 0;
+    auto cb = [&](const StepView& s) {
+      const auto [E, L] = charges(s.y1);
+      worst = std::max({worst, std::fabs(E - E0) / std::fabs(E0), std::fabs(L - L0) / std::fabs(L0)});
+      ++steps;
+      return StepAction::Continue;
+    };
+    m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+    EXPECT_GT(steps, 20);
+    EXPECT_LT(worst, 1e-8);
+  }
 }

@@ -238,7 +238,7 @@ TEST(MorrisThorne, RadialRayCrossesThroatAndSwitchesChart) {
 }
 
 TEST(MorrisThorne, PseudoCartesianRoundTripBothCharts) {
-  for (const char* name : {"MorrisThorne", "TeoSimpleWH"}) {
+  for (const char* name : {"MorrisThorne", "TeoSimpleWH", "TeoWHl"}) {
     auto m = make_metric(name);
     for (double l : {3.0, -3.0, 0.5, -0.5}) {
       const Vec4 x{{1.5, l, 1.1, -2.0}};

@@ -214,6 +214,27 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
       // Schwarzschild with b = 2M: K = 12 b²/r⁶.
       {"Petrov_Type_D_AI_ES",
        [](const Metric& m, const Vec4& x) { return 12.0 * std::pow(m.param("b"), 2) / std::pow(x[1], 6); }},
+      // The Ehlers–Kundt classes are one family, ds² = z² dΣ_ε² ∓ (b/z − ε) dt² ± dz²/(b/z − ε) with t
+      // and the Killing coordinate of Σ exchanged between A and B (Stephani et al., Exact Solutions
+      // (2003) §18.6); the only Weyl scalar is Ψ2 = −b/(2z³), so K = 48 Ψ2² = 12 b²/z⁶, with b = 1 for
+      // the flat-slice classes AIII and BIII (ε = 0). The C-metric with unit cubic coefficient,
+      // f(x) = x³ + a x + b, has Ψ2 = −(x + y)³/2 (2mA = 1 in the Kinnersley–Walker form with
+      // 1/r = A (x + y)), so K = 12 (x + y)⁶.
+      {"Petrov_Type_D_AII_ES",
+       [](const Metric& m, const Vec4& x) { return 12.0 * std::pow(m.param("b"), 2) / std::pow(x[3], 6); }},
+      {"Petrov_Type_D_AIII_ES", [](const Metric&, const Vec4& x) { return 12.0 / std::pow(x[3], 6); }},
+      {"Petrov_Type_D_BI_ES",
+       [](const Metric& m, const Vec4& x) { return 12.0 * std::pow(m.param("b"), 2) / std::pow(x[1], 6); }},
+      {"Petrov_Type_D_BII_ES",
+       [](const Metric& m, const Vec4& x) { return 12.0 * std::pow(m.param("b"), 2) / std::pow(x[3], 6); }},
+      {"Petrov_Type_D_BIII_ES", [](const Metric&, const Vec4& x) { return 12.0 / std::pow(x[3], 6); }},
+      {"Petrov_Type_D_C_ES", [](const Metric&, const Vec4& x) { return 12.0 * std::pow(x[2] + x[3], 6); }},
+      // C-metric: Ψ2 = −m/r³ with r = 1/(A (x + y)) (Kinnersley & Walker, PRD 2 (1970) 1359), so
+      // K = 48 m² A⁶ (x + y)⁶.
+      {"Pravda_C-Metric",
+       [](const Metric& m, const Vec4& x) {
+         return 48.0 * std::pow(m.param("m"), 2) * std::pow(m.param("a") * (x[1] + x[2]), 6);
+       }},
       // Spatial Schwarzschild slice times time: sectional curvatures −M/r³ (twice) and 2M/r³, so
       // K = 4 (1 + 1 + 4) M²/r⁶ = 24 M²/r⁶.
       {"SchwarzschildWT",
@@ -240,6 +261,38 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
          }
          return 4.0 * s / std::pow(x[0], 4);
        }},
+      // Kruskal: Schwarzschild, K = 48 M²/r⁶, with the areal radius from (r/r_s − 1) e^(r/r_s) = X² − T²
+      // (MTW 31.13) solved here by bisection (independent of the metric's Halley iteration).
+      {"Kruskal",
+       [](const Metric& m, const Vec4& x) {
+         const double M = m.param("mass"), rs = 2 * M, u = x[1] * x[1] - x[0] * x[0];
+         double lo = 0.0, hi = 2.0 + std::log(1.0 + std::max(u, 0.0)) + 1.0;
+         for (int i = 0; i < 200; ++i) {
+           const double mid = 0.5 * (lo + hi);
+           ((mid - 1) * std::exp(mid) < u ? lo : hi) = mid;
+         }
+         return 48.0 * M * M / std::pow(rs * 0.5 * (lo + hi), 6);
+       }},
+      // Vaidya: the Ricci tensor is null dust (R = 0, R_ab R^ab = 0), so K is the Weyl part 48 m(v)²/r⁶
+      // (Griffiths & Podolský, Exact Space-Times (2009) §9.5), m(v) = k s^(1/3) tanh²(σ s), s = v_l − v.
+      {"VaidyaIncRad",
+       [](const Metric& m, const Vec4& x) {
+         const double s = m.param("vl") - x[0];
+         const double mv = s > 0 ? m.param("k") * std::cbrt(s) * std::pow(std::tanh(m.param("sigma") * s), 2) : 0.0;
+         return 48.0 * mv * mv / std::pow(x[1], 6);
+       }},
+      // Robertson–Walker: the orthonormal Riemann components are R_0i0i = −ä/a and R_ijij = (ȧ² + k)/a²
+      // (MTW (1973) §27.6), so K = 12 [(ä/a)² + ((ȧ² + k)/a²)²]; in conformal time (a = R(χ),
+      // ȧ = R'/R, ä = (R R'' − R'²)/R³): K = 12 [(R R'' − R'²)² + (R'² + k R²)²]/R⁸.
+      {"FriedmanNonEmptyNull",
+       [](const Metric& m, const Vec4& x) {
+         const double kp = m.param("k"), C = 4.0 * m.param("mass") / (3.0 * M_PI), c = x[0];
+         const int k = kp >= 1 ? 1 : (kp <= -1 ? -1 : 0);
+         const double R = k == 0 ? 2.25 * C * c * c : (k == 1 ? 0.5 * C * (1 - std::cos(c)) : 0.5 * C * (std::cosh(c) - 1));
+         const double R1 = k == 0 ? 4.5 * C * c : (k == 1 ? 0.5 * C * std::sin(c) : 0.5 * C * std::sinh(c));
+         const double R2 = k == 0 ? 4.5 * C : (k == 1 ? 0.5 * C * std::cos(c) : 0.5 * C * std::cosh(c));
+         return 12.0 * (std::pow(R * R2 - R1 * R1, 2) + std::pow(R1 * R1 + k * R * R, 2)) / std::pow(R, 8);
+       }},
   };
   return table;
 }
@@ -248,6 +301,7 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
 const std::map<std::string, std::vector<std::pair<std::string, double>>>& kretschmann_params() {
   static const std::map<std::string, std::vector<std::pair<std::string, double>>> table = {
       {"Kasner", {{"u", 2.0}}},
+      {"VaidyaIncRad", {{"vl", 2.0}}},  // m(v) > 0 around the sample position v = 0
   };
   return table;
 }
@@ -419,7 +473,15 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"SchwarzschildTortoise", {}},
       {"Petrov_Type_D_AI_ES", {}},
       {"Petrov_Type_D_AII_ES", {}},
+      {"Petrov_Type_D_AIII_ES", {}},
+      {"Petrov_Type_D_BI_ES", {}},
+      {"Petrov_Type_D_BII_ES", {}},
+      {"Petrov_Type_D_BIII_ES", {}},
+      {"Petrov_Type_D_C_ES", {}},
+      {"Pravda_C-Metric", {}},
+      {"Pravda_C-Metric_Canonical_Coords", {{"a", 0.1}}},  // rod ends |Z_i| ~ 1/(2A²): better conditioned
       {"Kasner", {{"u", 2.0}}},
+      {"Kruskal", {}},
   };
   return table;
 }
