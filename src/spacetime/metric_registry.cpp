@@ -41,7 +41,9 @@
   X(PetrovTypeD_AI, "Petrov_Type_D_AI_ES")       \
   X(PetrovTypeD_AII, "Petrov_Type_D_AII_ES")     \
   X(ExtremeReissnerNordstromDihole, "ExtremeReissnerNordstromDihole") \
-  X(SchwarzschildWT, "SchwarzschildWT")
+  X(SchwarzschildWT, "SchwarzschildWT")         \
+  X(SchwarzschildGravWave, "SchwarzschildGravWave") \
+  X(PlaneGravWave, "PlaneGravWave")
 
 namespace geovis {
 

@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -278,4 +280,93 @@ TEST(MetricsCatalogue, ExtremeReissnerNordstromDiholeIsElectrovac) {
   const double r = 1e4;
   m->metric_tensor(Vec4{{0, r, 0, 0}}, g);
   EXPECT_NEAR(-g[0][0], 1.0 - 2.0 * 1.5 / r, 1e-7);
+}
+
+namespace {
+
+/// The largest |R_ab| at x and the Riemann scale there.
+double max_ricci(const Metric& m, const Vec4& x, double* scale = nullptr) {
+  const Mat4 ric = mc::ricci(m, x, scale);
+  double worst = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) worst = std::max(worst, std::fabs(ric[a][b]));
+  return worst;
+}
+
+}  // namespace
+
+/// SchwarzschildGravWave: ε = 0 is Schwarzschild, and the perturbation solves the linearised vacuum
+/// equations, so R_ab = O(ε²): doubling ε quadruples the Ricci tensor (it would double if the
+/// perturbation violated the field equations at first order).
+TEST(MetricsCatalogue, SchwarzschildGravWaveIsALinearisedVacuumPerturbation) {
+  const auto s = make_metric("Schwarzschild", {{"mass", 1.2}});
+  const auto w0 = make_metric("SchwarzschildGravWave", {{"mass", 1.2}, {"epsilon", 0.0}, {"sigma", 0.7}});
+  const Vec4 x{{0.4, 5.5, 1.1, 0.3}};
+  Mat4 gs, gw;
+  s->metric_tensor(x, gs);
+  w0->metric_tensor(x, gw);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) EXPECT_NEAR(gw[a][b], gs[a][b], 1e-14 * std::fabs(gs[a][a])) << a << b;
+  for (const Vec4& y : {x, Vec4{{2.0, 9.0, 0.6, 1.0}}, Vec4{{-1.3, 3.1, 2.0, 0.0}}}) {
+    const auto w1 = make_metric("SchwarzschildGravWave", {{"mass", 1.2}, {"epsilon", 1e-3}, {"sigma", 0.7}});
+    const auto w2 = make_metric("SchwarzschildGravWave", {{"mass", 1.2}, {"epsilon", 2e-3}, {"sigma", 0.7}});
+    double scale = 0;
+    const double r1 = max_ricci(*w1, y, &scale), r2 = max_ricci(*w2, y);
+    EXPECT_GT(r1, 1e-9 * scale);  // not zero (the test measures the scaling)
+    EXPECT_NEAR(r2 / r1, 4.0, 0.05) << "at r = " << y[1];
+  }
+}
+
+/// PlaneGravWave: flat before (u < −a) and after (0 < u < 1) the wave; inside it the Ricci
+/// residual of the truncated sine series (relative to the curvature) decreases with its degree; and a light ray crossing the wave keeps
+/// the Killing constants p² k^y, q² k^z and −k^t + k^x (g_ab ξ^a k^b for ξ = ∂_y, ∂_z, ∂_t + ∂_x).
+TEST(MetricsCatalogue, PlaneGravWaveIsFlatOutsideNullInsideAndKeepsItsKillingConstants) {
+  const auto m = make_metric("PlaneGravWave", {{"long_ext", 1.3}});
+  for (const Vec4& x : {Vec4{{0, 2.0, 0.3, -1}}, Vec4{{0.5, 0.2, 1, 2}}}) {  // u = −2 and u = 0.3
+    Riemann R;
+    m->riemann(x, R);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        for (int c = 0; c < 4; ++c)
+          for (int d = 0; d < 4; ++d) EXPECT_NEAR(R.R[a][b][c][d], 0.0, 1e-13) << a << b << c << d;
+  }
+  double residual_prev = 1e300;
+  for (double degree : {10.0, 30.0, 90.0}) {
+    const auto md = make_metric("PlaneGravWave", {{"long_ext", 1.3}, {"degree", degree}});
+    double residual = 0;
+    for (double u : {-1.1, -0.65, -0.2}) {
+      const Vec4 x{{u, 0.0, 0.4, 0.1}};
+      double scale = 0;
+      residual = std::max(residual, max_ricci(*md, x, &scale) / scale);
+      EXPECT_GT(scale, 0.1);
+    }
+    EXPECT_LT(residual, residual_prev) << "degree " << degree;
+    residual_prev = residual;
+    std::printf("PlaneGravWave degree %g: max |R_ab| / max |R^a_bcd| = %.3g\n", degree, residual);
+  }
+  EXPECT_LT(residual_prev, 0.05);
+  // A future-directed ray from before the wave, through it and beyond.
+  const Vec4 x{{0, 2.0, 0.0, 0.0}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{-0.6, 0.5, 0.3}, false);
+  auto constants = [&](const double* y) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{y[0], y[1], y[2], y[3]}}, g);
+    return std::array<double, 3>{g[2][2] * y[6], g[3][3] * y[7], -y[4] + y[5]};
+  };
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  const auto c0 = constants(y);
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 3000;
+  cfg.lambda_max = 3.0;
+  double worst = 0, u_max = -1e300;
+  auto cb = [&](const StepView& s) {
+    const auto c = constants(s.y1);
+    for (int i = 0; i < 3; ++i) worst = std::max(worst, std::fabs(c[i] - c0[i]));
+    u_max = std::max(u_max, s.y1[0] - s.y1[1]);
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_GT(u_max, 0.1);  // the ray has crossed the whole wave
+  EXPECT_LT(worst, 1e-9);
 }
