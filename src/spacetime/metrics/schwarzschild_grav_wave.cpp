@@ -103,10 +103,20 @@ class SchwarzschildGravWave final : public MetricCRTP<SchwarzschildGravWave> {
   }
 
   /// Outside the horizon break radius r_s (1 + horizon_eps), where X ∝ 1/√f still is finite, and
-  /// off the polar axis (Motion4D stops at r² <= (1 + 1e-6) r_s²).
+  /// off the polar axis (Motion4D stops at r² <= (1 + 1e-6) r_s²). The perturbation grows like
+  /// X ~ −σ²r far out, so the chart also ends where a factor 1 + εXc, 1 + εYc or 1 + εZc of the
+  /// line element falls to horizon_eps (beyond, g is degenerate or has the wrong signature; the
+  /// linearised wave has long stopped being small there).
   bool is_valid(const Vec4& x) const override {
-    return x[1] > r_break_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0 &&
-           std::sin(x[2]) != 0.0;
+    if (!(x[1] > r_break_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0 &&
+          std::sin(x[2]) != 0.0))
+      return false;
+    const double r = x[1], r2 = r * r;
+    const double f = 1.0 - 2.0 * M_ / r, q = std::sqrt(f) / r2;
+    const double P = M_ - (M_ * M_ + sigma_ * sigma_ * r2 * r2) / (r - 2.0 * M_);
+    const double ec = eps_ * std::cos(sigma_ * x[0]) * q;
+    return 1.0 + ec * P > horizon_eps_ && 1.0 + ec * 3.0 * M_ > horizon_eps_ &&
+           1.0 + ec * (r - 3.0 * M_) > horizon_eps_;
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
