@@ -43,7 +43,8 @@
   X(ExtremeReissnerNordstromDihole, "ExtremeReissnerNordstromDihole") \
   X(SchwarzschildWT, "SchwarzschildWT")         \
   X(SchwarzschildGravWave, "SchwarzschildGravWave") \
-  X(PlaneGravWave, "PlaneGravWave")
+  X(PlaneGravWave, "PlaneGravWave")             \
+  X(BesselGravWaveCart, "BesselGravWaveCart")
 
 namespace geovis {
 

@@ -64,6 +64,17 @@ TEST(MetricsCatalogue, ChristoffelsAndTetradsAtRandomPointsAndParameters) {
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.1, 3.2), uni(r, -3, 3), uni(r, -5, 5)}}; }},
       {"StraightSpinningString", {{"a", 0.7}, {"k", 0.6}},
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.3, 9), uni(r, -3, 3), uni(r, -5, 5)}}; }},
+      {"SchwarzschildGravWave", {{"mass", 0.8}, {"epsilon", 0.05}, {"sigma", 0.5}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.5, 8), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
+      // u = t − x across the wave and both flat regions.
+      {"PlaneGravWave", {{"long_ext", 0.8}, {"degree", 12}},
+       [](std::mt19937& r) {
+         const double t = uni(r, -3, 3);
+         return Vec4{{t, t - uni(r, -1.5, 0.9), uni(r, -3, 3), uni(r, -3, 3)}};
+       }},
+      // ρ up to 8: both the series (ρ < 2) and the library Bessel functions.
+      {"BesselGravWaveCart", {{"c", 0.7}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -6, 6), uni(r, -6, 6), uni(r, -5, 5)}}; }},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
@@ -320,7 +331,7 @@ TEST(MetricsCatalogue, SchwarzschildGravWaveIsALinearisedVacuumPerturbation) {
 /// PlaneGravWave: flat before (u < −a) and after (0 < u < 1) the wave; inside it the Ricci
 /// residual of the truncated sine series (relative to the curvature) decreases with its degree; and a light ray crossing the wave keeps
 /// the Killing constants p² k^y, q² k^z and −k^t + k^x (g_ab ξ^a k^b for ξ = ∂_y, ∂_z, ∂_t + ∂_x).
-TEST(MetricsCatalogue, PlaneGravWaveIsFlatOutsideNullInsideAndKeepsItsKillingConstants) {
+TEST(MetricsCatalogue, PlaneGravWaveIsFlatOutsideTheWaveAndKeepsItsKillingConstants) {
   const auto m = make_metric("PlaneGravWave", {{"long_ext", 1.3}});
   for (const Vec4& x : {Vec4{{0, 2.0, 0.3, -1}}, Vec4{{0.5, 0.2, 1, 2}}}) {  // u = −2 and u = 0.3
     Riemann R;
@@ -368,5 +379,43 @@ TEST(MetricsCatalogue, PlaneGravWaveIsFlatOutsideNullInsideAndKeepsItsKillingCon
   };
   m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
   EXPECT_GT(u_max, 0.1);  // the ray has crossed the whole wave
+  EXPECT_LT(worst, 1e-9);
+}
+
+/// BesselGravWaveCart: vacuum away from the axis too (where J0, J1 come from the library instead of
+/// the series), and a light ray keeps the Killing constants of ∂_z and of the rotation
+/// x ∂_y − y ∂_x: e^(2U) k^z and g(x ∂_y − y ∂_x, k).
+TEST(MetricsCatalogue, BesselGravWaveCartIsVacuumAndKeepsItsKillingConstants) {
+  const auto m = make_metric("BesselGravWaveCart", {{"c", 0.8}});
+  for (const Vec4& x : {Vec4{{0.3, 3.0, -2.0, 1.0}}, Vec4{{1.9, -0.4, 5.5, 0.0}}, Vec4{{-0.7, 0.5, 0.2, 2.0}}}) {
+    double scale = 0;
+    const double ric = max_ricci(*m, x, &scale);
+    EXPECT_GT(scale, 1e-3);
+    EXPECT_LT(ric, 1e-10 * scale) << "at (" << x[1] << ", " << x[2] << ")";
+  }
+  const Vec4 x{{0.2, 1.0, 0.5, 0.0}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{0.8, 0.3, 0.4}, false);
+  auto constants = [&](const double* y) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{y[0], y[1], y[2], y[3]}}, g);
+    double L = 0;
+    for (int b = 0; b < 4; ++b) L += (y[1] * g[2][b] - y[2] * g[1][b]) * y[4 + b];
+    return std::array<double, 2>{g[3][3] * y[7], L};
+  };
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  const auto c0 = constants(y);
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 3000;
+  cfg.lambda_max = 8.0;
+  double worst = 0, rho_max = 0;
+  auto cb = [&](const StepView& s) {
+    const auto c = constants(s.y1);
+    for (int i = 0; i < 2; ++i) worst = std::max(worst, std::fabs(c[i] - c0[i]));
+    rho_max = std::max(rho_max, std::hypot(s.y1[1], s.y1[2]));
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_GT(rho_max, 2.5);  // into the library branch of J0, J1
   EXPECT_LT(worst, 1e-9);
 }
