@@ -44,7 +44,8 @@
   X(SchwarzschildWT, "SchwarzschildWT")         \
   X(SchwarzschildGravWave, "SchwarzschildGravWave") \
   X(PlaneGravWave, "PlaneGravWave")             \
-  X(BesselGravWaveCart, "BesselGravWaveCart")
+  X(BesselGravWaveCart, "BesselGravWaveCart")   \
+  X(HalilsoyWave, "HalilsoyWave")
 
 namespace geovis {
 

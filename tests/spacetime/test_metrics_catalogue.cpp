@@ -75,6 +75,8 @@ TEST(MetricsCatalogue, ChristoffelsAndTetradsAtRandomPointsAndParameters) {
       // ρ up to 8: both the series (ρ < 2) and the library Bessel functions.
       {"BesselGravWaveCart", {{"c", 0.7}},
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -6, 6), uni(r, -6, 6), uni(r, -5, 5)}}; }},
+      {"HalilsoyWave", {{"alpha", 0.6}, {"c", 0.8}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.2, 9), uni(r, -3, 3), uni(r, -5, 5)}}; }},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
@@ -417,5 +419,59 @@ TEST(MetricsCatalogue, BesselGravWaveCartIsVacuumAndKeepsItsKillingConstants) {
   };
   m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
   EXPECT_GT(rho_max, 2.5);  // into the library branch of J0, J1
+  EXPECT_LT(worst, 1e-9);
+}
+
+/// HalilsoyWave: α = 0 is the Bessel wave, so its metric equals BesselGravWaveCart's pulled back to
+/// cylindrical coordinates (x = ρ cos φ, y = ρ sin φ; two independent implementations); for α != 0
+/// it is vacuum and a light ray keeps the Killing constants g(∂_φ, k) and g(∂_z, k) (the
+/// cross-polarisation couples φ and z).
+TEST(MetricsCatalogue, HalilsoyWaveIsTheBesselWaveAtAlphaZeroAndKeepsItsKillingConstants) {
+  const auto h = make_metric("HalilsoyWave", {{"c", 0.9}});
+  const auto b = make_metric("BesselGravWaveCart", {{"c", 0.9}});
+  for (const Vec4& x : {Vec4{{0.3, 2.5, 0.7, 1.0}}, Vec4{{-1.2, 6.0, 2.5, -3.0}}}) {
+    const double rho = x[1], ph = x[2], c = std::cos(ph), s = std::sin(ph);
+    Mat4 gb, gh;
+    b->metric_tensor(Vec4{{x[0], rho * c, rho * s, x[3]}}, gb);
+    h->metric_tensor(x, gh);
+    // J^a_μ = ∂X^a/∂x^μ for X = (t, x, y, z), x = (t, ρ, φ, z).
+    double J[4][4] = {{1, 0, 0, 0}, {0, c, -rho * s, 0}, {0, s, rho * c, 0}, {0, 0, 0, 1}};
+    for (int m = 0; m < 4; ++m)
+      for (int n = 0; n < 4; ++n) {
+        double v = 0;
+        for (int a = 0; a < 4; ++a)
+          for (int bb = 0; bb < 4; ++bb) v += J[a][m] * J[bb][n] * gb[a][bb];
+        EXPECT_NEAR(gh[m][n], v, 1e-12 * std::max(1.0, std::fabs(v))) << m << n;
+      }
+  }
+  const auto m = make_metric("HalilsoyWave", {{"alpha", 0.5}, {"c", 0.9}});
+  const Vec4 x{{0.2, 3.0, 0.5, 0.0}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{0.5, 0.6, 0.4}, false);
+  auto constants = [&](const double* y) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{y[0], y[1], y[2], y[3]}}, g);
+    std::array<double, 2> c{};
+    for (int bb = 0; bb < 4; ++bb) {
+      c[0] += g[2][bb] * y[4 + bb];
+      c[1] += g[3][bb] * y[4 + bb];
+    }
+    return c;
+  };
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  const auto c0 = constants(y);
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 3000;
+  cfg.lambda_max = 6.0;
+  double worst = 0;
+  int steps = 0;
+  auto cb = [&](const StepView& s) {
+    const auto c = constants(s.y1);
+    for (int i = 0; i < 2; ++i) worst = std::max(worst, std::fabs(c[i] - c0[i]));
+    ++steps;
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_GT(steps, 20);
   EXPECT_LT(worst, 1e-9);
 }

@@ -421,6 +421,7 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"Petrov_Type_D_AII_ES", {}},
       {"Kasner", {{"u", 2.0}}},
       {"BesselGravWaveCart", {}},
+      {"HalilsoyWave", {{"alpha", 0.4}}},
   };
   return table;
 }

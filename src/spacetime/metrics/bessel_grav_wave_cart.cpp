@@ -29,6 +29,7 @@
 #include <sstream>
 
 #include "spacetime/metric_crtp.h"
+#include "spacetime/metrics/bessel.h"
 #include "spacetime/metrics/metric_derivs.h"
 
 namespace geovis {
@@ -37,21 +38,6 @@ namespace bessel_wave {
 
 /// Below s = ρ² = kSeries the power series (16 terms, error < 1e-20), above it the library's J0, J1.
 constexpr double kSeries = 4.0;
-
-inline double j0(double r) { return std::cyl_bessel_j(0.0, r); }
-inline double j1(double r) { return std::cyl_bessel_j(1.0, r); }
-/// Dual numbers: J0′ = −J1, J1′ = J0 − J1/ρ (A&S 9.1.27).
-template <class T>
-Dual<T> j1(const Dual<T>& r);
-template <class T>
-Dual<T> j0(const Dual<T>& r) {
-  return chain(r, j0(r.v), T(-1.0) * j1(r.v));
-}
-template <class T>
-Dual<T> j1(const Dual<T>& r) {
-  const T v = j1(r.v);
-  return chain(r, v, j0(r.v) - v / r.v);
-}
 
 /// A(s) = J0(√s), B(s) = J1(√s)/√s for any scalar type.
 template <class T>
@@ -70,8 +56,8 @@ void ab(const T& s, T& A, T& B) {
     return;
   }
   const T r = sqrt(s);
-  A = j0(r);
-  B = j1(r) / r;
+  A = bessel::j0(r);
+  B = bessel::j1(r) / r;
 }
 
 /// φ(w) = (e^w − 1)/w (series near w = 0) for any scalar type.
