@@ -45,7 +45,8 @@
   X(SchwarzschildGravWave, "SchwarzschildGravWave") \
   X(PlaneGravWave, "PlaneGravWave")             \
   X(BesselGravWaveCart, "BesselGravWaveCart")   \
-  X(HalilsoyWave, "HalilsoyWave")
+  X(HalilsoyWave, "HalilsoyWave")               \
+  X(Bonnor, "Bonnor")
 
 namespace geovis {
 

@@ -77,6 +77,8 @@ TEST(MetricsCatalogue, ChristoffelsAndTetradsAtRandomPointsAndParameters) {
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -6, 6), uni(r, -6, 6), uni(r, -5, 5)}}; }},
       {"HalilsoyWave", {{"alpha", 0.6}, {"c", 0.8}},
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.2, 9), uni(r, -3, 3), uni(r, -5, 5)}}; }},
+      {"Bonnor", {{"mass", 0.7}, {"b", 0.9}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.9, 12), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
@@ -474,4 +476,53 @@ TEST(MetricsCatalogue, HalilsoyWaveIsTheBesselWaveAtAlphaZeroAndKeepsItsKillingC
   m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
   EXPECT_GT(steps, 20);
   EXPECT_LT(worst, 1e-9);
+}
+
+namespace {
+
+/// Einstein–Maxwell (non-null field) test: R = 0 and Rainich's algebraic condition
+/// R^a_c R^c_b = ¼ δ^a_b (R_cd R^cd) (Misner & Wheeler, Ann. Phys. 2 (1957) 525, eq. 47), relative
+/// to the size of R_ab R^ab; also checks that the Ricci tensor does not vanish (not vacuum).
+void expect_electrovac_rainich(const Metric& m, const Vec4& x) {
+  Mat4 g;
+  m.metric_tensor(x, g);
+  const Mat4 gi = invert(g);
+  double scale = 0;
+  const Mat4 ric = mc::ricci(m, x, &scale);
+  Mat4 mixed{};  // R^a_b
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      for (int c = 0; c < 4; ++c) mixed[a][b] += gi[a][c] * ric[c][b];
+  double R = 0, rr = 0, rmax = 0;
+  for (int a = 0; a < 4; ++a) {
+    R += mixed[a][a];
+    for (int b = 0; b < 4; ++b) {
+      rr += mixed[a][b] * mixed[b][a];
+      rmax = std::max(rmax, std::fabs(mixed[a][b]));
+    }
+  }
+  EXPECT_GT(rmax, 1e-6 * scale) << "Ricci-flat here: the test would prove nothing";
+  EXPECT_LT(std::fabs(R), 1e-10 * scale);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      double sq = 0;
+      for (int c = 0; c < 4; ++c) sq += mixed[a][c] * mixed[c][b];
+      EXPECT_NEAR(sq, a == b ? 0.25 * rr : 0.0, 1e-9 * rr) << a << b;
+    }
+}
+
+}  // namespace
+
+/// Bonnor's dipole is an Einstein–Maxwell field (R = 0 and Rainich's condition hold, R_ab != 0);
+/// at b = 0 it is the Zipoy–Voorhees δ = 2 vacuum with g_tt = −(1 − 2m/r)².
+TEST(MetricsCatalogue, BonnorIsElectrovacAndZipoyVoorheesAtZeroDipole) {
+  const auto m = make_metric("Bonnor", {{"mass", 1.0}, {"b", 0.8}});
+  for (const Vec4& x : {Vec4{{0, 4.0, 0.7, 0.1}}, Vec4{{1, 9.0, 1.5, 2.0}}, Vec4{{0, 3.0, 2.6, 0.0}}}) {
+    SCOPED_TRACE(x[1]);
+    expect_electrovac_rainich(*m, x);
+  }
+  const auto zv = make_metric("Bonnor", {{"mass", 1.3}, {"b", 0.0}});
+  Mat4 g;
+  zv->metric_tensor(Vec4{{0, 5.0, 0.9, 0}}, g);
+  EXPECT_NEAR(g[0][0], -std::pow(1.0 - 2.0 * 1.3 / 5.0, 2), 1e-15);
 }

@@ -422,6 +422,7 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"Kasner", {{"u", 2.0}}},
       {"BesselGravWaveCart", {}},
       {"HalilsoyWave", {{"alpha", 0.4}}},
+      {"Bonnor", {{"b", 0.0}}},  // Zipoy-Voorhees delta = 2
   };
   return table;
 }
