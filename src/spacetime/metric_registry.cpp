@@ -46,7 +46,8 @@
   X(PlaneGravWave, "PlaneGravWave")             \
   X(BesselGravWaveCart, "BesselGravWaveCart")   \
   X(HalilsoyWave, "HalilsoyWave")               \
-  X(Bonnor, "Bonnor")
+  X(Bonnor, "Bonnor")                           \
+  X(AlcubierreWarp, "AlcubierreWarp")
 
 namespace geovis {
 

@@ -77,6 +77,12 @@ TEST(MetricsCatalogue, ChristoffelsAndTetradsAtRandomPointsAndParameters) {
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -6, 6), uni(r, -6, 6), uni(r, -5, 5)}}; }},
       {"HalilsoyWave", {{"alpha", 0.6}, {"c", 0.8}},
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.2, 9), uni(r, -3, 3), uni(r, -5, 5)}}; }},
+      // Across the bubble wall (r_s near R = 1.5) and inside it.
+      {"AlcubierreWarp", {{"sigma", 5.0}, {"r", 1.5}, {"vs", 0.9}},
+       [](std::mt19937& r) {
+         const double t = uni(r, -2, 2);
+         return Vec4{{t, 0.9 * t + uni(r, -2, 2), uni(r, -2, 2), uni(r, -2, 2)}};
+       }},
       {"Bonnor", {{"mass", 0.7}, {"b", 0.9}},
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.9, 12), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
   };
@@ -525,4 +531,80 @@ TEST(MetricsCatalogue, BonnorIsElectrovacAndZipoyVoorheesAtZeroDipole) {
   Mat4 g;
   zv->metric_tensor(Vec4{{0, 5.0, 0.9, 0}}, g);
   EXPECT_NEAR(g[0][0], -std::pow(1.0 - 2.0 * 1.3 / 5.0, 2), 1e-15);
+}
+
+/// AlcubierreWarp: light rays through the bubble wall keep g(k,k) = 0 to 1e-8 of the size of its
+/// terms without any rescaling or projection of k (Motion4D projects k onto the null cone for this
+/// metric; geovis integrates the geodesic equation as it is), for subluminal and superluminal
+/// bubbles, from inside and from outside the bubble.
+TEST(MetricsCatalogue, AlcubierreWarpRaysThroughTheWallKeepTheirConstraint) {
+  double overall = 0;
+  for (double vs : {0.5, 1.0, 2.0}) {
+    const auto m = make_metric("AlcubierreWarp", {{"vs", vs}});
+    for (const Vec4& x : {Vec4{{0, 0, 0.3, 0}}, Vec4{{0, -3, 0.2, 0.1}}, Vec4{{0, 0.5, 1.2, -0.3}}}) {
+      const Tetrad e = m->natural_tetrad(x, TetradKind::Comoving);
+      for (const Vec3& d : {Vec3{1, 0, 0}, Vec3{-1, 0.3, 0.2}, Vec3{0.2, 1, 0}, Vec3{0.1, -0.2, 1}, Vec3{1, 0.5, 0}}) {
+        for (bool past : {true, false}) {
+          const Vec4 k = local_null_direction(e, d, past);
+          double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+          SolverConfig cfg;
+          cfg.kind = SolverKind::DormandPrince853;
+          cfg.eps_abs = 1e-12;
+          cfg.max_steps = 1000;
+          cfg.lambda_max = 10.0;
+          cfg.constraint_tol = 1e300;
+          double worst = 0, fmax = 0;
+          auto cb = [&](const StepView& s) {
+            Mat4 g;
+            m->metric_tensor(Vec4{{s.y1[0], s.y1[1], s.y1[2], s.y1[3]}}, g);
+            double kk = 0, size = 0;
+            for (int a = 0; a < 4; ++a)
+              for (int b = 0; b < 4; ++b) {
+                kk += g[a][b] * s.y1[4 + a] * s.y1[4 + b];
+                size += std::fabs(g[a][b] * s.y1[4 + a] * s.y1[4 + b]);
+              }
+            worst = std::max(worst, std::fabs(kk) / size);
+            fmax = std::max(fmax, std::fabs(g[0][1]));
+            overall = std::max(overall, worst);
+            return StepAction::Continue;
+          };
+          const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+          EXPECT_LE(worst, 1e-8) << "vs " << vs << " from x = " << x[1] << ", " << x[2] << " direction " << d.x << ","
+                                 << d.y << "," << d.z << (past ? " past" : " future") << " over " << r.steps
+                                 << " steps, max |v f| " << fmax;
+        }
+      }
+    }
+  }
+  std::printf("AlcubierreWarp: worst relative null-constraint drift %.3g\n", overall);
+}
+
+/// AlcubierreWarp: with unit lapse the Eulerian observers u = ∂_t + v_s f ∂_x are geodesics
+/// (Alcubierre, CQG 11 (1994) L73): a timelike geodesic started with u inside the wall keeps
+/// u^t = 1, u^y = u^z = 0 and u^x = v_s f with f from Alcubierre's tanh definition (eq. 7), which
+/// the metric evaluates in a different, cancellation-free form.
+TEST(MetricsCatalogue, AlcubierreWarpEulerianObserversAreGeodesics) {
+  const double sigma = 4.0, R = 1.2, vs = 1.7;
+  const auto m = make_metric("AlcubierreWarp", {{"sigma", sigma}, {"r", R}, {"vs", vs}});
+  auto f = [&](const double* q) {
+    const double rs = std::sqrt((q[1] - vs * q[0]) * (q[1] - vs * q[0]) + q[2] * q[2] + q[3] * q[3]);
+    return (std::tanh(sigma * (rs + R)) - std::tanh(sigma * (rs - R))) / (2.0 * std::tanh(sigma * R));
+  };
+  const Vec4 x0{{0.0, 0.4, 1.0, 0.2}};  // r_s = 1.1, in the wall
+  const Tetrad e = m->natural_tetrad(x0, TetradKind::Comoving);
+  double y[8] = {x0[0], x0[1], x0[2], x0[3], e[0][0], e[0][1], e[0][2], e[0][3]};
+  SolverConfig cfg;
+  cfg.type = GeodesicType::Timelike;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 100000;
+  double dev = 0;
+  auto cb = [&](const StepView& s) {
+    const double* q = s.y1;
+    dev = std::max({dev, std::fabs(q[4] - 1.0), std::fabs(q[5] - vs * f(q)), std::fabs(q[6]), std::fabs(q[7]),
+                    std::fabs(q[0] - s.lambda1)});
+    return s.lambda1 > 3.0 ? StepAction::Stop : StepAction::Continue;
+  };
+  const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_EQ(r.reason, StopReason::Callback);
+  EXPECT_LT(dev, 1e-9);
 }
