@@ -47,7 +47,8 @@
   X(BesselGravWaveCart, "BesselGravWaveCart")   \
   X(HalilsoyWave, "HalilsoyWave")               \
   X(Bonnor, "Bonnor")                           \
-  X(AlcubierreWarp, "AlcubierreWarp")
+  X(AlcubierreWarp, "AlcubierreWarp")           \
+  X(ChazyCurzonRot, "ChazyCurzonRot")
 
 namespace geovis {
 

@@ -83,6 +83,9 @@ TEST(MetricsCatalogue, ChristoffelsAndTetradsAtRandomPointsAndParameters) {
          const double t = uni(r, -2, 2);
          return Vec4{{t, 0.9 * t + uni(r, -2, 2), uni(r, -2, 2), uni(r, -2, 2)}};
        }},
+      // ρ >= 2.5: g_φφ > 0 there, so that the comoving tetrad exists.
+      {"ChazyCurzonRot", {{"mass", 0.8}, {"p", -0.3}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.5, 8), uni(r, -3, 3), uni(r, -6, 6)}}; }},
       {"Bonnor", {{"mass", 0.7}, {"b", 0.9}},
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.9, 12), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
   };
@@ -607,4 +610,49 @@ TEST(MetricsCatalogue, AlcubierreWarpEulerianObserversAreGeodesics) {
   const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
   EXPECT_EQ(r.reason, StopReason::Callback);
   EXPECT_LT(dev, 1e-9);
+}
+
+/// ChazyCurzonRot: p = −1 is the static Curzon particle (compared with the Curzon metric, an
+/// independent implementation), and for |p| < 1 a light ray keeps the Killing constants g(∂_t, k)
+/// and g(∂_φ, k) of the stationary, axisymmetric vacuum.
+TEST(MetricsCatalogue, ChazyCurzonRotIsCurzonAtPMinusOneAndKeepsItsKillingConstants) {
+  const auto rot = make_metric("ChazyCurzonRot", {{"mass", 1.3}, {"p", -1.0}});
+  const auto cur = make_metric("Curzon", {{"mass", 1.3}});
+  for (const Vec4& x : {Vec4{{0.3, 2.5, 0.7, 1.0}}, Vec4{{-1.2, 6.0, 2.5, -3.0}}}) {
+    Mat4 a, b;
+    rot->metric_tensor(x, a);
+    cur->metric_tensor(x, b);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) EXPECT_NEAR(a[i][j], b[i][j], 1e-13 * std::max(1.0, std::fabs(b[i][j]))) << i << j;
+  }
+  const auto m = make_metric("ChazyCurzonRot", {{"mass", 1.0}, {"p", 0.5}});
+  const Vec4 x{{0.0, 4.0, 0.3, 1.0}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{-0.6, 0.5, 0.4}, false);
+  auto constants = [&](const double* y) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{y[0], y[1], y[2], y[3]}}, g);
+    std::array<double, 2> c{};
+    for (int bb = 0; bb < 4; ++bb) {
+      c[0] += g[0][bb] * y[4 + bb];
+      c[1] += g[2][bb] * y[4 + bb];
+    }
+    return c;
+  };
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  const auto c0 = constants(y);
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 3000;
+  cfg.lambda_max = 20.0;
+  double worst = 0;
+  int steps = 0;
+  auto cb = [&](const StepView& s) {
+    const auto c = constants(s.y1);
+    for (int i = 0; i < 2; ++i) worst = std::max(worst, std::fabs(c[i] - c0[i]));
+    ++steps;
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_GT(steps, 20);
+  EXPECT_LT(worst, 1e-9);
 }

@@ -423,6 +423,7 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"BesselGravWaveCart", {}},
       {"HalilsoyWave", {{"alpha", 0.4}}},
       {"Bonnor", {{"b", 0.0}}},  // Zipoy-Voorhees delta = 2
+      {"ChazyCurzonRot", {}},
   };
   return table;
 }
