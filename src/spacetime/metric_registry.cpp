@@ -48,7 +48,8 @@
   X(HalilsoyWave, "HalilsoyWave")               \
   X(Bonnor, "Bonnor")                           \
   X(AlcubierreWarp, "AlcubierreWarp")           \
-  X(ChazyCurzonRot, "ChazyCurzonRot")
+  X(ChazyCurzonRot, "ChazyCurzonRot")           \
+  X(TomimatsuSato, "TomimatsuSato")
 
 namespace geovis {
 

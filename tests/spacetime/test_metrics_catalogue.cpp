@@ -86,6 +86,8 @@ TEST(MetricsCatalogue, ChristoffelsAndTetradsAtRandomPointsAndParameters) {
       // ρ >= 2.5: g_φφ > 0 there, so that the comoving tetrad exists.
       {"ChazyCurzonRot", {{"mass", 0.8}, {"p", -0.3}},
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.5, 8), uni(r, -3, 3), uni(r, -6, 6)}}; }},
+      {"TomimatsuSato", {{"k", 0.7}, {"p", 0.6}, {"q", -0.8}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.5, 9), uni(r, -0.95, 0.95), uni(r, -3, 3)}}; }},
       {"Bonnor", {{"mass", 0.7}, {"b", 0.9}},
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.9, 12), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
   };
@@ -655,4 +657,28 @@ TEST(MetricsCatalogue, ChazyCurzonRotIsCurzonAtPMinusOneAndKeepsItsKillingConsta
   m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
   EXPECT_GT(steps, 20);
   EXPECT_LT(worst, 1e-9);
+}
+
+/// TomimatsuSato: p = 1, q = 0 is the static Zipoy–Voorhees δ = 2 solution, g_tt = −((x − 1)/(x + 1))²;
+/// far out g_tt -> −(1 − 2M/R) with M = 2k/p and R = k x; the pseudo-Cartesian map inverts.
+TEST(MetricsCatalogue, TomimatsuSatoLimitsAndChart) {
+  const auto zv = make_metric("TomimatsuSato", {{"k", 0.8}, {"p", 1.0}, {"q", 0.0}});
+  for (const Vec4& x : {Vec4{{0, 1.7, 0.3, 0}}, Vec4{{0, 4.0, -0.8, 1}}}) {
+    Mat4 g;
+    zv->metric_tensor(x, g);
+    EXPECT_NEAR(g[0][0], -std::pow((x[1] - 1) / (x[1] + 1), 2), 1e-14);
+    EXPECT_EQ(g[0][3], 0.0);
+  }
+  const double k = 0.6, p = 0.8;
+  const auto m = make_metric("TomimatsuSato", {{"k", k}, {"p", p}, {"q", 0.6}});
+  const double x = 1e5;
+  Mat4 g;
+  m->metric_tensor(Vec4{{0, x, 0.2, 0}}, g);
+  const double M = 2 * k / p, R = k * x;
+  EXPECT_NEAR(-g[0][0], 1.0 - 2.0 * M / R, 10.0 * M * M / (R * R));
+  const Vec4 X{{0.5, 2.3, -0.4, 1.1}};
+  Vec3 c;
+  m->to_pseudo_cartesian(X, c);
+  const Vec4 back = m->from_pseudo_cartesian(0.5, c);
+  for (int i = 1; i < 4; ++i) EXPECT_NEAR(back[i], X[i], 1e-12) << i;
 }

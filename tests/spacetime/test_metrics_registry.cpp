@@ -424,6 +424,7 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"HalilsoyWave", {{"alpha", 0.4}}},
       {"Bonnor", {{"b", 0.0}}},  // Zipoy-Voorhees delta = 2
       {"ChazyCurzonRot", {}},
+      {"TomimatsuSato", {}},
   };
   return table;
 }
