@@ -65,7 +65,7 @@ class TomimatsuSato final : public MetricCRTP<TomimatsuSato> {
     g[0][3] = g[3][0] = -k_ * Y2 * C / B;
     g[1][1] = k2_ * B / (p4_ * S3 * X2);
     g[2][2] = k2_ * B / (p4_ * S3 * Y2);
-    g[3][3] = k2_ * Y2 * (X2 * B / A - Y2 * C * C / (A * B));
+    g[3][3] = k2_ * Y2 * (X2 * B / A - Y2 * (C / A) * (C / B));
   }
 
   void derivs(const Vec4& X, MetricDerivs& d) const {
@@ -94,7 +94,8 @@ class TomimatsuSato final : public MetricCRTP<TomimatsuSato> {
       Cd[i] = X2d[i] * sg * nu + X2 * sgd[i] * nu + X2 * sg * nud[i] + mud[i] * tau + mu * taud[i];
     }
     const double iB = 1.0 / B, iA = 1.0 / A, S3 = S * S * S;
-    const double H = X2 * B * iA - Y2 * C * C * iA * iB;
+    // Ratios first: A, B ~ x⁸ and C ~ x⁷ far out, so products like C²AB overflow beyond x ~ 1e10.
+    const double H1 = X2 * B * iA, H2 = Y2 * (C * iA) * (C * iB), H = H1 - H2;
     d.g[0][0] = -A * iB;
     d.g[0][3] = d.g[3][0] = -k_ * Y2 * C * iB;
     d.g[1][1] = k2_ * B / (p4_ * S3 * X2);
@@ -102,13 +103,12 @@ class TomimatsuSato final : public MetricCRTP<TomimatsuSato> {
     d.g[3][3] = k2_ * Y2 * H;
     for (int i = 0; i < 2; ++i) {
       const int c = i + 1;  // coordinate index of x, y
-      d.dg[c][0][0] = -(Ad[i] * B - A * Bd[i]) * iB * iB;
+      d.dg[c][0][0] = -(Ad[i] - A * iB * Bd[i]) * iB;
       d.dg[c][0][3] = d.dg[c][3][0] = -k_ * (Y2d[i] * C + Y2 * Cd[i] - Y2 * C * Bd[i] * iB) * iB;
       d.dg[c][1][1] = k2_ / p4_ * (Bd[i] / (S3 * X2) - 3.0 * B * Sd[i] / (S3 * S * X2) - B * X2d[i] / (S3 * X2 * X2));
       d.dg[c][2][2] = k2_ / p4_ * (Bd[i] / (S3 * Y2) - 3.0 * B * Sd[i] / (S3 * S * Y2) - B * Y2d[i] / (S3 * Y2 * Y2));
-      const double Hd = (X2d[i] * B + X2 * Bd[i]) * iA - X2 * B * Ad[i] * iA * iA -
-                        (Y2d[i] * C * C + 2.0 * Y2 * C * Cd[i]) * iA * iB +
-                        Y2 * C * C * (Ad[i] * B + A * Bd[i]) * iA * iA * iB * iB;
+      const double Hd = (X2d[i] * B + X2 * Bd[i]) * iA - H1 * Ad[i] * iA -
+                        (Y2d[i] * C + 2.0 * Y2 * Cd[i]) * (C * iA) * iB + H2 * (Ad[i] * iA + Bd[i] * iB);
       d.dg[c][3][3] = k2_ * (Y2d[i] * H + Y2 * Hd);
     }
   }
