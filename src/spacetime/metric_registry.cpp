@@ -49,7 +49,8 @@
   X(Bonnor, "Bonnor")                           \
   X(AlcubierreWarp, "AlcubierreWarp")           \
   X(ChazyCurzonRot, "ChazyCurzonRot")           \
-  X(TomimatsuSato, "TomimatsuSato")
+  X(TomimatsuSato, "TomimatsuSato")             \
+  X(Glampedakis, "Glampedakis")
 
 namespace geovis {
 
