@@ -50,7 +50,8 @@
   X(AlcubierreWarp, "AlcubierreWarp")           \
   X(ChazyCurzonRot, "ChazyCurzonRot")           \
   X(TomimatsuSato, "TomimatsuSato")             \
-  X(Glampedakis, "Glampedakis")
+  X(Glampedakis, "Glampedakis")                 \
+  X(HartleThorneGB, "HartleThorneGB")
 
 namespace geovis {
 

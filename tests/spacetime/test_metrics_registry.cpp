@@ -220,6 +220,7 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
        [](const Metric& m, const Vec4& x) { return 24.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
       // Defaults a = epsilon = 0: Schwarzschild.
       {"Glampedakis", [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
+      {"HartleThorneGB", [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
       // Einstein static universe of unit radius: R_ijkl = g_ik g_jl − g_il g_jk on S³, K = 2·3·2 = 12.
       {"MinkowskiConformal", [](const Metric&, const Vec4&) { return 12.0; }},
       // Locally Schwarzschild: the conical deficit does not change the curvature.
