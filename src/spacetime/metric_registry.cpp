@@ -51,7 +51,8 @@
   X(ChazyCurzonRot, "ChazyCurzonRot")           \
   X(TomimatsuSato, "TomimatsuSato")             \
   X(Glampedakis, "Glampedakis")                 \
-  X(HartleThorneGB, "HartleThorneGB")
+  X(HartleThorneGB, "HartleThorneGB")           \
+  X(ErezRosenVar, "ErezRosenVar")
 
 namespace geovis {
 

@@ -92,6 +92,8 @@ TEST(MetricsCatalogue, ChristoffelsAndTetradsAtRandomPointsAndParameters) {
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 3.5, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
       {"HartleThorneGB", {{"mass", 0.9}, {"angmom", 0.5}, {"eta", 0.8}},
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 3.0, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
+      {"ErezRosenVar", {{"mass", 1.3}, {"q", -0.7}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.8, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
       {"Bonnor", {{"mass", 0.7}, {"b", 0.9}},
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.9, 12), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
   };
@@ -721,4 +723,24 @@ TEST(MetricsCatalogue, HartleThorneGBIsQuasiKerrWithEpsilonEtaASquared) {
   gb->metric_tensor(x, b);
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) EXPECT_NEAR(a[i][j], b[i][j], 1e-14 * std::max(1.0, std::fabs(b[i][j]))) << i << j;
+}
+
+/// ErezRosenVar: vacuum for large |q| and close in (where the q² part of γ matters), and far out
+/// g_tt = −e^(2ψ) with ψ -> ½ ln(1 − 2m/r) − (2/15) q (m/r)³ P2(cos θ) (the Newtonian quadrupole;
+/// the leading corrections are O((m/r)⁴)).
+TEST(MetricsCatalogue, ErezRosenVarIsVacuumWithANewtonianQuadrupoleFarOut) {
+  const auto m = make_metric("ErezRosenVar", {{"mass", 1.0}, {"q", 2.5}});
+  for (const Vec4& x : {Vec4{{0, 2.3, 0.4, 0}}, Vec4{{0, 3.5, 1.2, 1}}, Vec4{{0, 8.0, 2.5, 2}}}) {
+    double scale = 0;
+    const double ric = max_ricci(*m, x, &scale);
+    EXPECT_LT(ric, 1e-10 * scale) << "at r = " << x[1];
+  }
+  const double q = 0.6, r = 200.0, th = 0.7;
+  const auto w = make_metric("ErezRosenVar", {{"mass", 1.0}, {"q", q}});
+  Mat4 g;
+  w->metric_tensor(Vec4{{0, r, th, 0}}, g);
+  const double P2 = 0.5 * (3 * std::cos(th) * std::cos(th) - 1);
+  const double psi = 0.5 * std::log(-g[0][0]);
+  const double quad = psi - 0.5 * std::log(1 - 2 / r);
+  EXPECT_NEAR(quad, -2.0 / 15.0 * q * P2 / (r * r * r), 5.0 * q / std::pow(r, 4));
 }

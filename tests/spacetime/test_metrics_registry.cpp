@@ -221,6 +221,8 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
       // Defaults a = epsilon = 0: Schwarzschild.
       {"Glampedakis", [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
       {"HartleThorneGB", [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
+      // With q = 0 (kretschmann_params): Schwarzschild in Weyl form.
+      {"ErezRosenVar", [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
       // Einstein static universe of unit radius: R_ijkl = g_ik g_jl − g_il g_jk on S³, K = 2·3·2 = 12.
       {"MinkowskiConformal", [](const Metric&, const Vec4&) { return 12.0; }},
       // Locally Schwarzschild: the conical deficit does not change the curvature.
@@ -251,6 +253,7 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
 const std::map<std::string, std::vector<std::pair<std::string, double>>>& kretschmann_params() {
   static const std::map<std::string, std::vector<std::pair<std::string, double>>> table = {
       {"Kasner", {{"u", 2.0}}},
+      {"ErezRosenVar", {{"q", 0.0}}},
   };
   return table;
 }
@@ -429,6 +432,7 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"ChazyCurzonRot", {}},
       {"TomimatsuSato", {}},
       {"Glampedakis", {{"angmom", 0.5}}},  // epsilon = 0: Kerr
+      {"ErezRosenVar", {{"q", 0.8}}},
   };
   return table;
 }
