@@ -19,7 +19,7 @@ class Glampedakis final : public MetricCRTP<Glampedakis> {
                     {{"angmom", 0.0, -1e300, 1e300, false, false, "Kerr parameter a"},
                      {"epsilon", 0.0, -1e300, 1e300, false, false, "quadrupole deviation epsilon from Kerr"},
                      {"mass", 1.0, 0.0, 1e300, true, false, "mass M > 0"}},
-                    {TetradKind::Default, TetradKind::Static},
+                    {TetradKind::Default},
                     "Glampedakis-Babak quasi-Kerr (Glampedakis & Babak, CQG 23 (2006) 4167)",
                     Vec4{{0, 10, M_PI / 2, 0}},
                     {}}) {

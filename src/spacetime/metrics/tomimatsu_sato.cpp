@@ -17,10 +17,9 @@
 // Derivatives (hand-written below, chain rule through μ, σ, ν, τ, A, B, C; μ_x = 4p²(x² − 1)x,
 // μ_y = −4q²(1 − y²)y, σ_x = 4pqx, σ_y = −4pqy, ν_x = 12px² + 16x + 4p, τ_x = −4q(1 − y²),
 // τ_y = 8qy(px + 1)/p) give the Christoffel symbols through metric_derivs.h.
-// Natural tetrads: default = static (Motion4D's localToCoord), e_(0) = ∂_t/√(−g_tt),
-// e_(3) = (g_tφ ∂_t − g_tt ∂_φ)/√(−g_tt D), D = g_tφ² − g_tt g_φφ (outside the ergoregion only); and
-// the locally non-rotating observer (LNRF, also inside it), e_(0) = (∂_t + Ω ∂_φ)/α with
-// Ω = −g_tφ/g_φφ, α² = D/g_φφ, e_(3) = ∂_φ/√g_φφ; both with e_(1,2) = ∂_(x,y)/√g_(xx,yy).
+// Natural tetrad (Motion4D's localToCoord, static): e_(0) = ∂_t/√(−g_tt),
+// e_(3) = (g_tφ ∂_t − g_tt ∂_φ)/√(−g_tt D), D = g_tφ² − g_tt g_φφ, e_(1,2) = ∂_(x,y)/√g_(xx,yy)
+// (outside the ergoregion only; the same as quasi_kerr.h's static tetrad).
 // Pseudo-Cartesian: ρ = k √((x² − 1)(1 − y²)), z = k x y (prolate spheroidal with foci z = ±k).
 #include <cmath>
 #include <sstream>
@@ -39,7 +38,7 @@ class TomimatsuSato final : public MetricCRTP<TomimatsuSato> {
                     {{"k", 0.4330127019, 0.0, 1e300, true, false, "scale k > 0 of the prolate spheroidal coordinates (M = 2k/p)"},
                      {"p", 0.5, 0.0, 1.0, true, false, "parameter p in (0, 1]"},
                      {"q", 0.8660254038, -1.0, 1.0, false, false, "parameter q, p^2 + q^2 = 1 (rotation)"}},
-                    {TetradKind::Default, TetradKind::Static, TetradKind::LNRF},
+                    {TetradKind::Default},
                     "Tomimatsu-Sato delta = 2 (Tomimatsu & Sato, PRL 29 (1972) 1344; Manko, PTP 127 (2012) 1057)",
                     Vec4{{0, 5, 0.5, 0}},
                     {}}) {
@@ -137,29 +136,20 @@ class TomimatsuSato final : public MetricCRTP<TomimatsuSato> {
     require_tetrad_kind(kind);
     Mat4 g;
     if (is_valid(X)) g_tmpl(X, g);
-    const bool lnrf = kind == TetradKind::LNRF;
-    if (!is_valid(X) || !(g[3][3] > 0.0) || (!lnrf && !(g[0][0] < 0.0))) {
+    if (!is_valid(X) || !(g[3][3] > 0.0) || !(g[0][0] < 0.0)) {
       std::ostringstream os;
-      os << "TomimatsuSato: no " << (lnrf ? "locally non-rotating" : "static") << " observer at (x, y) = (" << X[1]
-         << ", " << X[2] << ") (needs x > 1, |y| < 1, B > 0, g_phiphi > 0" << (lnrf ? "" : " and g_tt < 0")
-         << ")";
+      os << "TomimatsuSato: no static observer at (x, y) = (" << X[1] << ", " << X[2]
+         << ") (needs x > 1, |y| < 1, B > 0, g_phiphi > 0 and g_tt < 0, i.e. outside the ergoregion)";
       throw Error(os.str());
     }
     const double D = g[0][3] * g[0][3] - g[0][0] * g[3][3];  // > 0: −det of the (t, φ) block
+    const double w = std::sqrt(-g[0][0]);
     Tetrad e{};
-    if (lnrf) {
-      const double alpha = std::sqrt(D / g[3][3]);
-      e[0][0] = 1.0 / alpha;
-      e[0][3] = -g[0][3] / g[3][3] / alpha;
-      e[3][3] = 1.0 / std::sqrt(g[3][3]);
-    } else {
-      const double w = std::sqrt(-g[0][0]);
-      e[0][0] = 1.0 / w;
-      e[3][0] = g[0][3] / (w * std::sqrt(D));
-      e[3][3] = -g[0][0] / (w * std::sqrt(D));
-    }
+    e[0][0] = 1.0 / w;
     e[1][1] = 1.0 / std::sqrt(g[1][1]);
     e[2][2] = 1.0 / std::sqrt(g[2][2]);
+    e[3][0] = g[0][3] / (w * std::sqrt(D));
+    e[3][3] = -g[0][0] / (w * std::sqrt(D));
     return e;
   }
 
