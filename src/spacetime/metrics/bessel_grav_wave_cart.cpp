@@ -39,6 +39,28 @@ namespace bessel_wave {
 /// Below s = ρ² = kSeries the power series (16 terms, error < 1e-20), above it the library's J0, J1.
 constexpr double kSeries = 4.0;
 
+/// Ratios of successive series terms, tabulated (the hot path multiplies instead of dividing):
+/// kRatio[0][k] = 1/k² (A), kRatio[1][k] = 1/(k(k+1)) (B), kRatio[2][k] = 1/((k−1)(k+1)) (B′),
+/// kRatio[3][k] = 1/(k+1) (φ), kRatio[4][k] = k/((k−1)(k+1)) (φ′), for k = 0..20.
+struct SeriesRatios {
+  double r[5][21];
+};
+constexpr SeriesRatios make_series_ratios() {
+  SeriesRatios t{};
+  for (int k = 2; k <= 20; ++k) {
+    t.r[0][k] = 1.0 / (k * k);
+    t.r[1][k] = 1.0 / (k * (k + 1));
+    t.r[2][k] = 1.0 / ((k - 1) * (k + 1));
+    t.r[3][k] = 1.0 / (k + 1);
+    t.r[4][k] = double(k) / ((k - 1) * (k + 1));
+  }
+  t.r[0][1] = 1.0;
+  t.r[1][1] = 0.5;
+  t.r[3][1] = 0.5;
+  return t;
+}
+constexpr SeriesRatios kRatio = make_series_ratios();
+
 /// A(s) = J0(√s), B(s) = J1(√s)/√s for any scalar type.
 template <class T>
 void ab(const T& s, T& A, T& B) {
@@ -49,8 +71,8 @@ void ab(const T& s, T& A, T& B) {
     A = T(1.0);
     B = T(1.0);
     for (int k = 16; k >= 1; --k) {
-      A = 1.0 + A * w / double(k * k);
-      B = 1.0 + B * w / double(k * (k + 1));
+      A = 1.0 + A * w * kRatio.r[0][k];
+      B = 1.0 + B * w * kRatio.r[1][k];
     }
     B = 0.5 * B;
     return;
@@ -66,7 +88,7 @@ T phi(const T& w) {
   using std::exp;
   if (w < 0.5 && w > -0.5) {
     T p = T(1.0);
-    for (int n = 20; n >= 1; --n) p = 1.0 + p * w / double(n + 1);
+    for (int n = 20; n >= 1; --n) p = 1.0 + p * w * kRatio.r[3][n];
     return p;
   }
   return (exp(w) - 1.0) / w;
@@ -120,7 +142,7 @@ class BesselGravWaveCart final : public MetricCRTP<BesselGravWaveCart> {
       // B′ = ½ Σ_(k>=1) k (−1/4)^k s^(k−1)/(k!(k+1)!), Horner form.
       const double w = -0.25 * s;
       double p = 1.0;
-      for (int k = 16; k >= 2; --k) p = 1.0 + p * w * double(k) / double((k - 1) * k * (k + 1));
+      for (int k = 16; k >= 2; --k) p = 1.0 + p * w * bessel_wave::kRatio.r[2][k];
       dB = 0.5 * (-0.25) * p / 2.0;
     } else {
       dB = (A - 2.0 * B) / (2.0 * s);
@@ -139,7 +161,7 @@ class BesselGravWaveCart final : public MetricCRTP<BesselGravWaveCart> {
     double dph;  // φ′(w) = Σ n w^(n−1)/(n+1)! near 0, (e^w − φ)/w elsewhere
     if (w < 0.5 && w > -0.5) {
       double p = 1.0;
-      for (int n = 20; n >= 2; --n) p = 1.0 + p * w * double(n) / double((n - 1) * (n + 1));
+      for (int n = 20; n >= 2; --n) p = 1.0 + p * w * bessel_wave::kRatio.r[4][n];
       dph = 0.5 * p;
     } else {
       dph = (std::exp(w) - ph) / w;
