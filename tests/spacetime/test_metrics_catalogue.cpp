@@ -1,11 +1,15 @@
 // The metrics added from Motion4D's catalogue (Goedel family, Kasner, Curzon,
 // CosmicStringSchwarzschild, MinkowskiConformal, SchwarzschildTortoise, MinkowskiRotLattice,
-// StraightSpinningString, ExtremeReissnerNordstromDihole) beyond the generated registry tests
-// (test_metrics_registry.cpp): closed-form Christoffel symbols against AD at non-default parameters
-// and away from the sample position, tetrads of every kind, and physics with independent
-// expectations (Gödel's field equations, the Einstein static universe's null cone, the tortoise
-// radial light rays, the rotating lattice and spinning string seen from inertial frames,
-// Motion4D's k^t rescaling of AlcubierreWarpSimple, Majumdar–Papapetrou as an electrovacuum).
+// StraightSpinningString, ExtremeReissnerNordstromDihole, and the gravitational waves, Weyl and
+// quasi-Kerr metrics SchwarzschildGravWave, PlaneGravWave, BesselGravWaveCart, HalilsoyWave,
+// Bonnor, ErezRosenVar, ChazyCurzonRot, TomimatsuSato, Glampedakis, HartleThorneGB and
+// AlcubierreWarp) beyond the generated registry tests (test_metrics_registry.cpp): closed-form
+// Christoffel symbols against AD at non-default parameters and away from the sample position,
+// tetrads of every kind, and physics with independent expectations (Gödel's field equations, the
+// Einstein static universe's null cone, the tortoise radial light rays, the rotating lattice and
+// spinning string seen from inertial frames, Motion4D's k^t rescaling of AlcubierreWarpSimple,
+// Majumdar–Papapetrou and Bonnor as electrovacua, linearised vacuum perturbations, Killing
+// constants along light rays, limits to Schwarzschild, Kerr, Curzon and Zipoy–Voorhees).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -498,7 +502,7 @@ TEST(MetricsCatalogue, HalilsoyWaveIsTheBesselWaveAtAlphaZeroAndKeepsItsKillingC
 namespace {
 
 /// Einstein–Maxwell (non-null field) test: R = 0 and Rainich's algebraic condition
-/// R^a_c R^c_b = ¼ δ^a_b (R_cd R^cd) (Misner & Wheeler, Ann. Phys. 2 (1957) 525, eq. 47), relative
+/// R^a_c R^c_b = ¼ δ^a_b (R_cd R^cd) (Rainich, Trans. Amer. Math. Soc. 27 (1925) 106; Misner & Wheeler, Ann. Phys. 2 (1957) 525), relative
 /// to the size of R_ab R^ab; also checks that the Ricci tensor does not vanish (not vacuum).
 void expect_electrovac_rainich(const Metric& m, const Vec4& x) {
   Mat4 g;
@@ -592,7 +596,7 @@ TEST(MetricsCatalogue, AlcubierreWarpRaysThroughTheWallKeepTheirConstraint) {
 
 /// AlcubierreWarp: with unit lapse the Eulerian observers u = ∂_t + v_s f ∂_x are geodesics
 /// (Alcubierre, CQG 11 (1994) L73): a timelike geodesic started with u inside the wall keeps
-/// u^t = 1, u^y = u^z = 0 and u^x = v_s f with f from Alcubierre's tanh definition (eq. 7), which
+/// u^t = 1, u^y = u^z = 0 and u^x = v_s f with f from Alcubierre's tanh definition, which
 /// the metric evaluates in a different, cancellation-free form.
 TEST(MetricsCatalogue, AlcubierreWarpEulerianObserversAreGeodesics) {
   const double sigma = 4.0, R = 1.2, vs = 1.7;

@@ -2,7 +2,7 @@
 // coordinates (t, x, y, z):
 //   ds² = −dt² + (dx − v_s f(r_s) dt)² + dy² + dz²,  r_s = √((x − v_s t)² + y² + z²),
 //   f(r_s) = [tanh(σ(r_s + R)) − tanh(σ(r_s − R))]/(2 tanh σR)
-// (Alcubierre, Class. Quantum Grav. 11 (1994) L73, eqs. (6)–(8); Müller & Grave, Catalogue of
+// (Alcubierre, Class. Quantum Grav. 11 (1994) L73, eq. (8) and its shape function; Müller & Grave, Catalogue of
 // Spacetimes, arXiv:0904.4184, "Alcubierre warp drive"). With tanh a − tanh b =
 // sinh(a − b)/(cosh a cosh b) and sinh 2σR/(2 tanh σR) = cosh²σR the shape function is evaluated
 // without cancellation as

@@ -1,7 +1,7 @@
 // Rotating Chazy–Curzon spacetime in Weyl–Papapetrou coordinates (t, ρ, φ, z) (Motion4D
 // "ChazyCurzonRot"): the stationary vacuum obtained from the static Curzon particle by an Ehlers
 // transformation (Ehlers, Colloques Internationaux CNRS 91 (1962) 275; Stephani et al., Exact
-// Solutions of Einstein's Field Equations (2003) §34.1):
+// Solutions of Einstein's Field Equations (2003), ch. 34):
 //   ds² = −e^(2U) (dt + A dφ)² + e^(−2U) [e^(2k) (dρ² + dz²) + ρ² dφ²],
 //   e^(−2U) = cosh(2m/r) − p sinh(2m/r),  k = −m²ρ²/(2r⁴),  A = 2 q m z/r,
 //   r² = ρ² + z²,  q = √(1 − p²),  |p| <= 1.

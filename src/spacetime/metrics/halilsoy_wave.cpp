@@ -1,6 +1,6 @@
 // Halilsoy's cross-polarised standing cylindrical gravitational wave, coordinates (t, ρ, φ, z)
 // (Motion4D "HalilsoyWave"; M. Halilsoy, Nuovo Cimento B 102 (1988) 563; Stephani et al., Exact
-// Solutions of Einstein's Field Equations (2003) §22.3; Müller & Grave, Catalogue of Spacetimes,
+// Solutions of Einstein's Field Equations (2003), p. 353, as Motion4D cites; Müller & Grave, Catalogue of Spacetimes,
 // arXiv:0904.4184):
 //   ds² = V [e^(2k) (dρ² − dt²) + ρ² dφ²] + (dz + A dφ)²/V,
 //   V = cosh²α e^(−2ψ) + sinh²α e^(2ψ),  ψ = C J0(ρ) cos t,  A = −2C sinh(2α) ρ J1(ρ) sin t,

@@ -1,5 +1,5 @@
 // Plane gravitational sandwich wave of finite longitudinal extension a (Motion4D "PlaneGravWave";
-// Rindler, Relativity: Special, General, and Cosmological (2006) §15.3; Müller & Grave, Catalogue
+// Rindler, Relativity: Special, General, and Cosmological (2006), as Motion4D cites; Müller & Grave, Catalogue
 // of Spacetimes, arXiv:0904.4184, "Plane gravitational wave"), coordinates (t, x, y, z), u = t − x:
 //   ds² = −dt² + dx² + p(u)² dy² + q(u)² dz²,
 //   p = p0, q = q0 for u < −a;  p = L e^m, q = L e^(−m) for −a <= u <= 0;  p = q = 1 − u for u > 0,
