@@ -53,7 +53,18 @@
   X(PetrovTypeD_BIII, "Petrov_Type_D_BIII_ES")  \
   X(PetrovTypeD_C, "Petrov_Type_D_C_ES")        \
   X(PravdaCMetric, "Pravda_C-Metric")           \
-  X(PravdaCMetricCanonical, "Pravda_C-Metric_Canonical_Coords")
+  X(PravdaCMetricCanonical, "Pravda_C-Metric_Canonical_Coords") \
+  X(SchwarzschildGravWave, "SchwarzschildGravWave") \
+  X(PlaneGravWave, "PlaneGravWave")             \
+  X(BesselGravWaveCart, "BesselGravWaveCart")   \
+  X(HalilsoyWave, "HalilsoyWave")               \
+  X(Bonnor, "Bonnor")                           \
+  X(AlcubierreWarp, "AlcubierreWarp")           \
+  X(ChazyCurzonRot, "ChazyCurzonRot")           \
+  X(TomimatsuSato, "TomimatsuSato")             \
+  X(Glampedakis, "Glampedakis")                 \
+  X(HartleThorneGB, "HartleThorneGB")           \
+  X(ErezRosenVar, "ErezRosenVar")
 
 namespace geovis {
 

@@ -1,17 +1,23 @@
 // The metrics added from Motion4D's catalogue (Goedel family, Kasner, Curzon,
 // CosmicStringSchwarzschild, MinkowskiConformal, SchwarzschildTortoise, MinkowskiRotLattice,
 // StraightSpinningString, ExtremeReissnerNordstromDihole, Kruskal, VaidyaIncRad,
-// SultanaDyerBlackhole, FriedmanNonEmptyNull, TeoWHl, Pravda_C-Metric) beyond the generated registry
-// tests (test_metrics_registry.cpp): closed-form Christoffel symbols against AD at non-default
-// parameters and away from the sample position, tetrads of every kind, and physics with independent
-// expectations (Gödel's field equations, the Einstein static universe's null cone, the tortoise and
-// Kruskal radial light rays, the rotating lattice and spinning string seen from inertial frames,
-// Motion4D's k^t rescaling of AlcubierreWarpSimple, Majumdar–Papapetrou as an electrovacuum,
-// Vaidya's null dust, conserved quantities of Sultana–Dyer and Teo light rays, Friedmann dust,
-// the C-metric's Weyl coordinates).
+// SultanaDyerBlackhole, FriedmanNonEmptyNull, TeoWHl, Pravda_C-Metric, and the gravitational
+// waves, Weyl and quasi-Kerr metrics SchwarzschildGravWave, PlaneGravWave, BesselGravWaveCart,
+// HalilsoyWave, Bonnor, ErezRosenVar, ChazyCurzonRot, TomimatsuSato, Glampedakis, HartleThorneGB and
+// AlcubierreWarp) beyond the generated registry tests (test_metrics_registry.cpp): closed-form
+// Christoffel symbols against AD at non-default parameters and away from the sample position,
+// tetrads of every kind, and physics with independent expectations (Gödel's field equations, the
+// Einstein static universe's null cone, the tortoise and Kruskal radial light rays, the rotating
+// lattice and spinning string seen from inertial frames, Motion4D's k^t rescaling of
+// AlcubierreWarpSimple, Majumdar–Papapetrou and Bonnor as electrovacua, Vaidya's null dust,
+// conserved quantities of Sultana–Dyer and Teo light rays, Friedmann dust, the C-metric's Weyl
+// coordinates, linearised vacuum perturbations, Killing constants along light rays, limits to
+// Schwarzschild, Kerr, Curzon and Zipoy–Voorhees).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -65,6 +71,38 @@ TEST(MetricsCatalogue, ChristoffelsAndTetradsAtRandomPointsAndParameters) {
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.1, 3.2), uni(r, -3, 3), uni(r, -5, 5)}}; }},
       {"StraightSpinningString", {{"a", 0.7}, {"k", 0.6}},
        [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.3, 9), uni(r, -3, 3), uni(r, -5, 5)}}; }},
+      {"SchwarzschildGravWave", {{"mass", 0.8}, {"epsilon", 0.05}, {"sigma", 0.5}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.5, 8), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
+      // u = t − x across the wave and both flat regions.
+      {"PlaneGravWave", {{"long_ext", 0.8}, {"degree", 12}},
+       [](std::mt19937& r) {
+         const double t = uni(r, -3, 3);
+         return Vec4{{t, t - uni(r, -1.5, 0.9), uni(r, -3, 3), uni(r, -3, 3)}};
+       }},
+      // ρ up to 8: both the series (ρ < 2) and the library Bessel functions.
+      {"BesselGravWaveCart", {{"c", 0.7}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -6, 6), uni(r, -6, 6), uni(r, -5, 5)}}; }},
+      {"HalilsoyWave", {{"alpha", 0.6}, {"c", 0.8}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.2, 9), uni(r, -3, 3), uni(r, -5, 5)}}; }},
+      // Across the bubble wall (r_s near R = 1.5) and inside it.
+      {"AlcubierreWarp", {{"sigma", 5.0}, {"r", 1.5}, {"vs", 0.9}},
+       [](std::mt19937& r) {
+         const double t = uni(r, -2, 2);
+         return Vec4{{t, 0.9 * t + uni(r, -2, 2), uni(r, -2, 2), uni(r, -2, 2)}};
+       }},
+      // ρ >= 2.5: g_φφ > 0 there, so that the comoving tetrad exists.
+      {"ChazyCurzonRot", {{"mass", 0.8}, {"p", -0.3}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.5, 8), uni(r, -3, 3), uni(r, -6, 6)}}; }},
+      {"TomimatsuSato", {{"k", 0.7}, {"p", 0.6}, {"q", -0.8}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.5, 9), uni(r, -0.95, 0.95), uni(r, -3, 3)}}; }},
+      {"Glampedakis", {{"mass", 1.2}, {"angmom", 0.7}, {"epsilon", 0.3}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 3.5, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
+      {"HartleThorneGB", {{"mass", 0.9}, {"angmom", 0.5}, {"eta", 0.8}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 3.0, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
+      {"ErezRosenVar", {{"mass", 1.3}, {"q", -0.7}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.8, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
+      {"Bonnor", {{"mass", 0.7}, {"b", 0.9}},
+       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.9, 12), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
@@ -579,4 +617,434 @@ TEST(MetricsCatalogue, PravdaCanonicalConservesBoostAndRotationCharges) {
     EXPECT_GT(steps, 20);
     EXPECT_LT(worst, 1e-8);
   }
+
+namespace {
+
+/// The largest |R_ab| at x and the Riemann scale there.
+double max_ricci(const Metric& m, const Vec4& x, double* scale = nullptr) {
+  const Mat4 ric = mc::ricci(m, x, scale);
+  double worst = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) worst = std::max(worst, std::fabs(ric[a][b]));
+  return worst;
+}
+
+}  // namespace
+
+/// SchwarzschildGravWave: ε = 0 is Schwarzschild, and the perturbation solves the linearised vacuum
+/// equations, so R_ab = O(ε²): doubling ε quadruples the Ricci tensor (it would double if the
+/// perturbation violated the field equations at first order).
+TEST(MetricsCatalogue, SchwarzschildGravWaveIsALinearisedVacuumPerturbation) {
+  const auto s = make_metric("Schwarzschild", {{"mass", 1.2}});
+  const auto w0 = make_metric("SchwarzschildGravWave", {{"mass", 1.2}, {"epsilon", 0.0}, {"sigma", 0.7}});
+  const Vec4 x{{0.4, 5.5, 1.1, 0.3}};
+  Mat4 gs, gw;
+  s->metric_tensor(x, gs);
+  w0->metric_tensor(x, gw);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) EXPECT_NEAR(gw[a][b], gs[a][b], 1e-14 * std::fabs(gs[a][a])) << a << b;
+  for (const Vec4& y : {x, Vec4{{2.0, 9.0, 0.6, 1.0}}, Vec4{{-1.3, 3.1, 2.0, 0.0}}}) {
+    const auto w1 = make_metric("SchwarzschildGravWave", {{"mass", 1.2}, {"epsilon", 1e-3}, {"sigma", 0.7}});
+    const auto w2 = make_metric("SchwarzschildGravWave", {{"mass", 1.2}, {"epsilon", 2e-3}, {"sigma", 0.7}});
+    double scale = 0;
+    const double r1 = max_ricci(*w1, y, &scale), r2 = max_ricci(*w2, y);
+    EXPECT_GT(r1, 1e-9 * scale);  // not zero (the test measures the scaling)
+    EXPECT_NEAR(r2 / r1, 4.0, 0.05) << "at r = " << y[1];
+  }
+}
+
+/// PlaneGravWave: flat before (u < −a) and after (0 < u < 1) the wave; inside it the Ricci
+/// residual of the truncated sine series (relative to the curvature) decreases with its degree; and a light ray crossing the wave keeps
+/// the Killing constants p² k^y, q² k^z and −k^t + k^x (g_ab ξ^a k^b for ξ = ∂_y, ∂_z, ∂_t + ∂_x).
+TEST(MetricsCatalogue, PlaneGravWaveIsFlatOutsideTheWaveAndKeepsItsKillingConstants) {
+  const auto m = make_metric("PlaneGravWave", {{"long_ext", 1.3}});
+  for (const Vec4& x : {Vec4{{0, 2.0, 0.3, -1}}, Vec4{{0.5, 0.2, 1, 2}}}) {  // u = −2 and u = 0.3
+    Riemann R;
+    m->riemann(x, R);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        for (int c = 0; c < 4; ++c)
+          for (int d = 0; d < 4; ++d) EXPECT_NEAR(R.R[a][b][c][d], 0.0, 1e-13) << a << b << c << d;
+  }
+  double residual_prev = 1e300;
+  for (double degree : {10.0, 30.0, 90.0}) {
+    const auto md = make_metric("PlaneGravWave", {{"long_ext", 1.3}, {"degree", degree}});
+    double residual = 0;
+    for (double u : {-1.1, -0.65, -0.2}) {
+      const Vec4 x{{u, 0.0, 0.4, 0.1}};
+      double scale = 0;
+      residual = std::max(residual, max_ricci(*md, x, &scale) / scale);
+      EXPECT_GT(scale, 0.1);
+    }
+    EXPECT_LT(residual, residual_prev) << "degree " << degree;
+    residual_prev = residual;
+    std::printf("PlaneGravWave degree %g: max |R_ab| / max |R^a_bcd| = %.3g\n", degree, residual);
+  }
+  EXPECT_LT(residual_prev, 0.05);
+  // A future-directed ray from before the wave, through it and beyond.
+  const Vec4 x{{0, 2.0, 0.0, 0.0}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{-0.6, 0.5, 0.3}, false);
+  auto constants = [&](const double* y) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{y[0], y[1], y[2], y[3]}}, g);
+    return std::array<double, 3>{g[2][2] * y[6], g[3][3] * y[7], -y[4] + y[5]};
+  };
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  const auto c0 = constants(y);
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 3000;
+  cfg.lambda_max = 3.0;
+  double worst = 0, u_max = -1e300;
+  auto cb = [&](const StepView& s) {
+    const auto c = constants(s.y1);
+    for (int i = 0; i < 3; ++i) worst = std::max(worst, std::fabs(c[i] - c0[i]));
+    u_max = std::max(u_max, s.y1[0] - s.y1[1]);
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_GT(u_max, 0.1);  // the ray has crossed the whole wave
+  EXPECT_LT(worst, 1e-9);
+}
+
+/// BesselGravWaveCart: vacuum away from the axis too (where J0, J1 come from the library instead of
+/// the series), and a light ray keeps the Killing constants of ∂_z and of the rotation
+/// x ∂_y − y ∂_x: e^(2U) k^z and g(x ∂_y − y ∂_x, k).
+TEST(MetricsCatalogue, BesselGravWaveCartIsVacuumAndKeepsItsKillingConstants) {
+  const auto m = make_metric("BesselGravWaveCart", {{"c", 0.8}});
+  for (const Vec4& x : {Vec4{{0.3, 3.0, -2.0, 1.0}}, Vec4{{1.9, -0.4, 5.5, 0.0}}, Vec4{{-0.7, 0.5, 0.2, 2.0}}}) {
+    double scale = 0;
+    const double ric = max_ricci(*m, x, &scale);
+    EXPECT_GT(scale, 1e-3);
+    EXPECT_LT(ric, 1e-10 * scale) << "at (" << x[1] << ", " << x[2] << ")";
+  }
+  const Vec4 x{{0.2, 1.0, 0.5, 0.0}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{0.8, 0.3, 0.4}, false);
+  auto constants = [&](const double* y) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{y[0], y[1], y[2], y[3]}}, g);
+    double L = 0;
+    for (int b = 0; b < 4; ++b) L += (y[1] * g[2][b] - y[2] * g[1][b]) * y[4 + b];
+    return std::array<double, 2>{g[3][3] * y[7], L};
+  };
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  const auto c0 = constants(y);
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 3000;
+  cfg.lambda_max = 8.0;
+  double worst = 0, rho_max = 0;
+  auto cb = [&](const StepView& s) {
+    const auto c = constants(s.y1);
+    for (int i = 0; i < 2; ++i) worst = std::max(worst, std::fabs(c[i] - c0[i]));
+    rho_max = std::max(rho_max, std::hypot(s.y1[1], s.y1[2]));
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_GT(rho_max, 2.5);  // into the library branch of J0, J1
+  EXPECT_LT(worst, 1e-9);
+}
+
+/// HalilsoyWave: α = 0 is the Bessel wave, so its metric equals BesselGravWaveCart's pulled back to
+/// cylindrical coordinates (x = ρ cos φ, y = ρ sin φ; two independent implementations); for α != 0
+/// it is vacuum and a light ray keeps the Killing constants g(∂_φ, k) and g(∂_z, k) (the
+/// cross-polarisation couples φ and z).
+TEST(MetricsCatalogue, HalilsoyWaveIsTheBesselWaveAtAlphaZeroAndKeepsItsKillingConstants) {
+  const auto h = make_metric("HalilsoyWave", {{"c", 0.9}});
+  const auto b = make_metric("BesselGravWaveCart", {{"c", 0.9}});
+  for (const Vec4& x : {Vec4{{0.3, 2.5, 0.7, 1.0}}, Vec4{{-1.2, 6.0, 2.5, -3.0}}}) {
+    const double rho = x[1], ph = x[2], c = std::cos(ph), s = std::sin(ph);
+    Mat4 gb, gh;
+    b->metric_tensor(Vec4{{x[0], rho * c, rho * s, x[3]}}, gb);
+    h->metric_tensor(x, gh);
+    // J^a_μ = ∂X^a/∂x^μ for X = (t, x, y, z), x = (t, ρ, φ, z).
+    double J[4][4] = {{1, 0, 0, 0}, {0, c, -rho * s, 0}, {0, s, rho * c, 0}, {0, 0, 0, 1}};
+    for (int m = 0; m < 4; ++m)
+      for (int n = 0; n < 4; ++n) {
+        double v = 0;
+        for (int a = 0; a < 4; ++a)
+          for (int bb = 0; bb < 4; ++bb) v += J[a][m] * J[bb][n] * gb[a][bb];
+        EXPECT_NEAR(gh[m][n], v, 1e-12 * std::max(1.0, std::fabs(v))) << m << n;
+      }
+  }
+  const auto m = make_metric("HalilsoyWave", {{"alpha", 0.5}, {"c", 0.9}});
+  const Vec4 x{{0.2, 3.0, 0.5, 0.0}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{0.5, 0.6, 0.4}, false);
+  auto constants = [&](const double* y) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{y[0], y[1], y[2], y[3]}}, g);
+    std::array<double, 2> c{};
+    for (int bb = 0; bb < 4; ++bb) {
+      c[0] += g[2][bb] * y[4 + bb];
+      c[1] += g[3][bb] * y[4 + bb];
+    }
+    return c;
+  };
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  const auto c0 = constants(y);
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 3000;
+  cfg.lambda_max = 6.0;
+  double worst = 0;
+  int steps = 0;
+  auto cb = [&](const StepView& s) {
+    const auto c = constants(s.y1);
+    for (int i = 0; i < 2; ++i) worst = std::max(worst, std::fabs(c[i] - c0[i]));
+    ++steps;
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_GT(steps, 20);
+  EXPECT_LT(worst, 1e-9);
+}
+
+namespace {
+
+/// Einstein–Maxwell (non-null field) test: R = 0 and Rainich's algebraic condition
+/// R^a_c R^c_b = ¼ δ^a_b (R_cd R^cd) (Rainich, Trans. Amer. Math. Soc. 27 (1925) 106; Misner & Wheeler, Ann. Phys. 2 (1957) 525), relative
+/// to the size of R_ab R^ab; also checks that the Ricci tensor does not vanish (not vacuum).
+void expect_electrovac_rainich(const Metric& m, const Vec4& x) {
+  Mat4 g;
+  m.metric_tensor(x, g);
+  const Mat4 gi = invert(g);
+  double scale = 0;
+  const Mat4 ric = mc::ricci(m, x, &scale);
+  Mat4 mixed{};  // R^a_b
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      for (int c = 0; c < 4; ++c) mixed[a][b] += gi[a][c] * ric[c][b];
+  double R = 0, rr = 0, rmax = 0;
+  for (int a = 0; a < 4; ++a) {
+    R += mixed[a][a];
+    for (int b = 0; b < 4; ++b) {
+      rr += mixed[a][b] * mixed[b][a];
+      rmax = std::max(rmax, std::fabs(mixed[a][b]));
+    }
+  }
+  EXPECT_GT(rmax, 1e-6 * scale) << "Ricci-flat here: the test would prove nothing";
+  EXPECT_LT(std::fabs(R), 1e-10 * scale);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      double sq = 0;
+      for (int c = 0; c < 4; ++c) sq += mixed[a][c] * mixed[c][b];
+      EXPECT_NEAR(sq, a == b ? 0.25 * rr : 0.0, 1e-9 * rr) << a << b;
+    }
+}
+
+}  // namespace
+
+/// Bonnor's dipole is an Einstein–Maxwell field (R = 0 and Rainich's condition hold, R_ab != 0);
+/// at b = 0 it is the Zipoy–Voorhees δ = 2 vacuum with g_tt = −(1 − 2m/r)².
+TEST(MetricsCatalogue, BonnorIsElectrovacAndZipoyVoorheesAtZeroDipole) {
+  const auto m = make_metric("Bonnor", {{"mass", 1.0}, {"b", 0.8}});
+  for (const Vec4& x : {Vec4{{0, 4.0, 0.7, 0.1}}, Vec4{{1, 9.0, 1.5, 2.0}}, Vec4{{0, 3.0, 2.6, 0.0}}}) {
+    SCOPED_TRACE(x[1]);
+    expect_electrovac_rainich(*m, x);
+  }
+  const auto zv = make_metric("Bonnor", {{"mass", 1.3}, {"b", 0.0}});
+  Mat4 g;
+  zv->metric_tensor(Vec4{{0, 5.0, 0.9, 0}}, g);
+  EXPECT_NEAR(g[0][0], -std::pow(1.0 - 2.0 * 1.3 / 5.0, 2), 1e-15);
+}
+
+/// AlcubierreWarp: light rays through the bubble wall keep g(k,k) = 0 to 1e-8 of the size of its
+/// terms without any rescaling or projection of k (Motion4D projects k onto the null cone for this
+/// metric; geovis integrates the geodesic equation as it is), for subluminal and superluminal
+/// bubbles, from inside and from outside the bubble.
+TEST(MetricsCatalogue, AlcubierreWarpRaysThroughTheWallKeepTheirConstraint) {
+  double overall = 0;
+  for (double vs : {0.5, 1.0, 2.0}) {
+    const auto m = make_metric("AlcubierreWarp", {{"vs", vs}});
+    for (const Vec4& x : {Vec4{{0, 0, 0.3, 0}}, Vec4{{0, -3, 0.2, 0.1}}, Vec4{{0, 0.5, 1.2, -0.3}}}) {
+      const Tetrad e = m->natural_tetrad(x, TetradKind::Comoving);
+      for (const Vec3& d : {Vec3{1, 0, 0}, Vec3{-1, 0.3, 0.2}, Vec3{0.2, 1, 0}, Vec3{0.1, -0.2, 1}, Vec3{1, 0.5, 0}}) {
+        for (bool past : {true, false}) {
+          const Vec4 k = local_null_direction(e, d, past);
+          double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+          SolverConfig cfg;
+          cfg.kind = SolverKind::DormandPrince853;
+          cfg.eps_abs = 1e-12;
+          cfg.max_steps = 1000;
+          cfg.lambda_max = 10.0;
+          cfg.constraint_tol = 1e300;
+          double worst = 0, fmax = 0;
+          auto cb = [&](const StepView& s) {
+            Mat4 g;
+            m->metric_tensor(Vec4{{s.y1[0], s.y1[1], s.y1[2], s.y1[3]}}, g);
+            double kk = 0, size = 0;
+            for (int a = 0; a < 4; ++a)
+              for (int b = 0; b < 4; ++b) {
+                kk += g[a][b] * s.y1[4 + a] * s.y1[4 + b];
+                size += std::fabs(g[a][b] * s.y1[4 + a] * s.y1[4 + b]);
+              }
+            worst = std::max(worst, std::fabs(kk) / size);
+            fmax = std::max(fmax, std::fabs(g[0][1]));
+            overall = std::max(overall, worst);
+            return StepAction::Continue;
+          };
+          const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+          EXPECT_LE(worst, 1e-8) << "vs " << vs << " from x = " << x[1] << ", " << x[2] << " direction " << d.x << ","
+                                 << d.y << "," << d.z << (past ? " past" : " future") << " over " << r.steps
+                                 << " steps, max |v f| " << fmax;
+        }
+      }
+    }
+  }
+  std::printf("AlcubierreWarp: worst relative null-constraint drift %.3g\n", overall);
+}
+
+/// AlcubierreWarp: with unit lapse the Eulerian observers u = ∂_t + v_s f ∂_x are geodesics
+/// (Alcubierre, CQG 11 (1994) L73): a timelike geodesic started with u inside the wall keeps
+/// u^t = 1, u^y = u^z = 0 and u^x = v_s f with f from Alcubierre's tanh definition, which
+/// the metric evaluates in a different, cancellation-free form.
+TEST(MetricsCatalogue, AlcubierreWarpEulerianObserversAreGeodesics) {
+  const double sigma = 4.0, R = 1.2, vs = 1.7;
+  const auto m = make_metric("AlcubierreWarp", {{"sigma", sigma}, {"r", R}, {"vs", vs}});
+  auto f = [&](const double* q) {
+    const double rs = std::sqrt((q[1] - vs * q[0]) * (q[1] - vs * q[0]) + q[2] * q[2] + q[3] * q[3]);
+    return (std::tanh(sigma * (rs + R)) - std::tanh(sigma * (rs - R))) / (2.0 * std::tanh(sigma * R));
+  };
+  const Vec4 x0{{0.0, 0.4, 1.0, 0.2}};  // r_s = 1.1, in the wall
+  const Tetrad e = m->natural_tetrad(x0, TetradKind::Comoving);
+  double y[8] = {x0[0], x0[1], x0[2], x0[3], e[0][0], e[0][1], e[0][2], e[0][3]};
+  SolverConfig cfg;
+  cfg.type = GeodesicType::Timelike;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 100000;
+  double dev = 0;
+  auto cb = [&](const StepView& s) {
+    const double* q = s.y1;
+    dev = std::max({dev, std::fabs(q[4] - 1.0), std::fabs(q[5] - vs * f(q)), std::fabs(q[6]), std::fabs(q[7]),
+                    std::fabs(q[0] - s.lambda1)});
+    return s.lambda1 > 3.0 ? StepAction::Stop : StepAction::Continue;
+  };
+  const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_EQ(r.reason, StopReason::Callback);
+  EXPECT_LT(dev, 1e-9);
+}
+
+/// ChazyCurzonRot: p = −1 is the static Curzon particle (compared with the Curzon metric, an
+/// independent implementation), and for |p| < 1 a light ray keeps the Killing constants g(∂_t, k)
+/// and g(∂_φ, k) of the stationary, axisymmetric vacuum.
+TEST(MetricsCatalogue, ChazyCurzonRotIsCurzonAtPMinusOneAndKeepsItsKillingConstants) {
+  const auto rot = make_metric("ChazyCurzonRot", {{"mass", 1.3}, {"p", -1.0}});
+  const auto cur = make_metric("Curzon", {{"mass", 1.3}});
+  for (const Vec4& x : {Vec4{{0.3, 2.5, 0.7, 1.0}}, Vec4{{-1.2, 6.0, 2.5, -3.0}}}) {
+    Mat4 a, b;
+    rot->metric_tensor(x, a);
+    cur->metric_tensor(x, b);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) EXPECT_NEAR(a[i][j], b[i][j], 1e-13 * std::max(1.0, std::fabs(b[i][j]))) << i << j;
+  }
+  const auto m = make_metric("ChazyCurzonRot", {{"mass", 1.0}, {"p", 0.5}});
+  const Vec4 x{{0.0, 4.0, 0.3, 1.0}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{-0.6, 0.5, 0.4}, false);
+  auto constants = [&](const double* y) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{y[0], y[1], y[2], y[3]}}, g);
+    std::array<double, 2> c{};
+    for (int bb = 0; bb < 4; ++bb) {
+      c[0] += g[0][bb] * y[4 + bb];
+      c[1] += g[2][bb] * y[4 + bb];
+    }
+    return c;
+  };
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  const auto c0 = constants(y);
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.max_steps = 3000;
+  cfg.lambda_max = 20.0;
+  double worst = 0;
+  int steps = 0;
+  auto cb = [&](const StepView& s) {
+    const auto c = constants(s.y1);
+    for (int i = 0; i < 2; ++i) worst = std::max(worst, std::fabs(c[i] - c0[i]));
+    ++steps;
+    return StepAction::Continue;
+  };
+  m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+  EXPECT_GT(steps, 20);
+  EXPECT_LT(worst, 1e-9);
+}
+
+/// TomimatsuSato: p = 1, q = 0 is the static Zipoy–Voorhees δ = 2 solution, g_tt = −((x − 1)/(x + 1))²;
+/// far out g_tt -> −(1 − 2M/R) with M = 2k/p and R = k x; the pseudo-Cartesian map inverts.
+TEST(MetricsCatalogue, TomimatsuSatoLimitsAndChart) {
+  const auto zv = make_metric("TomimatsuSato", {{"k", 0.8}, {"p", 1.0}, {"q", 0.0}});
+  for (const Vec4& x : {Vec4{{0, 1.7, 0.3, 0}}, Vec4{{0, 4.0, -0.8, 1}}}) {
+    Mat4 g;
+    zv->metric_tensor(x, g);
+    EXPECT_NEAR(g[0][0], -std::pow((x[1] - 1) / (x[1] + 1), 2), 1e-14);
+    EXPECT_EQ(g[0][3], 0.0);
+  }
+  const double k = 0.6, p = 0.8;
+  const auto m = make_metric("TomimatsuSato", {{"k", k}, {"p", p}, {"q", 0.6}});
+  const double x = 1e5;
+  Mat4 g;
+  m->metric_tensor(Vec4{{0, x, 0.2, 0}}, g);
+  const double M = 2 * k / p, R = k * x;
+  EXPECT_NEAR(-g[0][0], 1.0 - 2.0 * M / R, 10.0 * M * M / (R * R));
+  const Vec4 X{{0.5, 2.3, -0.4, 1.1}};
+  Vec3 c;
+  m->to_pseudo_cartesian(X, c);
+  const Vec4 back = m->from_pseudo_cartesian(0.5, c);
+  for (int i = 1; i < 4; ++i) EXPECT_NEAR(back[i], X[i], 1e-12) << i;
+}
+
+/// Glampedakis: epsilon = 0 is Kerr (compared with KerrBL, an independent implementation), and for
+/// a = 0 the quadrupole deviation solves the vacuum equations linearised about Schwarzschild:
+/// doubling epsilon quadruples the Ricci tensor.
+TEST(MetricsCatalogue, GlampedakisIsKerrPlusALinearisedVacuumQuadrupole) {
+  const auto gk = make_metric("Glampedakis", {{"mass", 1.1}, {"angmom", 0.6}, {"epsilon", 0.0}});
+  const auto kerr = make_metric("KerrBL", {{"mass", 1.1}, {"angmom", 0.6}});
+  for (const Vec4& x : {Vec4{{0, 4.0, 0.7, 0.1}}, Vec4{{1, 9.0, 2.0, 2.0}}}) {
+    Mat4 a, b;
+    gk->metric_tensor(x, a);
+    kerr->metric_tensor(x, b);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) EXPECT_NEAR(a[i][j], b[i][j], 1e-13 * std::max(1.0, std::fabs(b[i][j]))) << i << j;
+  }
+  for (const Vec4& x : {Vec4{{0, 4.5, 0.7, 0.1}}, Vec4{{1, 9.0, 1.2, 2.0}}}) {
+    const auto m1 = make_metric("Glampedakis", {{"mass", 1.0}, {"epsilon", 1e-3}});
+    const auto m2 = make_metric("Glampedakis", {{"mass", 1.0}, {"epsilon", 2e-3}});
+    double scale = 0;
+    const double r1 = max_ricci(*m1, x, &scale), r2 = max_ricci(*m2, x);
+    EXPECT_GT(r1, 1e-12 * scale);
+    EXPECT_NEAR(r2 / r1, 4.0, 0.05) << "at r = " << x[1];
+  }
+}
+
+/// HartleThorneGB is the quasi-Kerr metric with epsilon = eta a² (Motion4D writes its components
+/// out separately; here both share quasi_kerr.h, so the check is that the parameters map).
+TEST(MetricsCatalogue, HartleThorneGBIsQuasiKerrWithEpsilonEtaASquared) {
+  const auto ht = make_metric("HartleThorneGB", {{"mass", 1.3}, {"angmom", 0.4}, {"eta", 2.5}});
+  const auto gb = make_metric("Glampedakis", {{"mass", 1.3}, {"angmom", 0.4}, {"epsilon", 2.5 * 0.16}});
+  const Vec4 x{{0, 6.0, 0.8, 0.2}};
+  Mat4 a, b;
+  ht->metric_tensor(x, a);
+  gb->metric_tensor(x, b);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) EXPECT_NEAR(a[i][j], b[i][j], 1e-14 * std::max(1.0, std::fabs(b[i][j]))) << i << j;
+}
+
+/// ErezRosenVar: vacuum for large |q| and close in (where the q² part of γ matters), and far out
+/// g_tt = −e^(2ψ) with ψ -> ½ ln(1 − 2m/r) − (2/15) q (m/r)³ P2(cos θ) (the Newtonian quadrupole;
+/// the leading corrections are O((m/r)⁴)).
+TEST(MetricsCatalogue, ErezRosenVarIsVacuumWithANewtonianQuadrupoleFarOut) {
+  const auto m = make_metric("ErezRosenVar", {{"mass", 1.0}, {"q", 2.5}});
+  for (const Vec4& x : {Vec4{{0, 2.3, 0.4, 0}}, Vec4{{0, 3.5, 1.2, 1}}, Vec4{{0, 8.0, 2.5, 2}}}) {
+    double scale = 0;
+    const double ric = max_ricci(*m, x, &scale);
+    EXPECT_LT(ric, 1e-10 * scale) << "at r = " << x[1];
+  }
+  const double q = 0.6, r = 200.0, th = 0.7;
+  const auto w = make_metric("ErezRosenVar", {{"mass", 1.0}, {"q", q}});
+  Mat4 g;
+  w->metric_tensor(Vec4{{0, r, th, 0}}, g);
+  const double P2 = 0.5 * (3 * std::cos(th) * std::cos(th) - 1);
+  const double psi = 0.5 * std::log(-g[0][0]);
+  const double quad = psi - 0.5 * std::log(1 - 2 / r);
+  EXPECT_NEAR(quad, -2.0 / 15.0 * q * P2 / (r * r * r), 5.0 * q / std::pow(r, 4));
 }

@@ -239,6 +239,11 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
       // K = 4 (1 + 1 + 4) M²/r⁶ = 24 M²/r⁶.
       {"SchwarzschildWT",
        [](const Metric& m, const Vec4& x) { return 24.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
+      // Defaults a = epsilon = 0: Schwarzschild.
+      {"Glampedakis", [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
+      {"HartleThorneGB", [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
+      // With q = 0 (kretschmann_params): Schwarzschild in Weyl form.
+      {"ErezRosenVar", [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
       // Einstein static universe of unit radius: R_ijkl = g_ik g_jl − g_il g_jk on S³, K = 2·3·2 = 12.
       {"MinkowskiConformal", [](const Metric&, const Vec4&) { return 12.0; }},
       // Locally Schwarzschild: the conical deficit does not change the curvature.
@@ -302,6 +307,7 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& kretsc
   static const std::map<std::string, std::vector<std::pair<std::string, double>>> table = {
       {"Kasner", {{"u", 2.0}}},
       {"VaidyaIncRad", {{"vl", 2.0}}},  // m(v) > 0 around the sample position v = 0
+      {"ErezRosenVar", {{"q", 0.0}}},
   };
   return table;
 }
@@ -482,6 +488,13 @@ const std::map<std::string, std::vector<std::pair<std::string, double>>>& vacuum
       {"Pravda_C-Metric_Canonical_Coords", {{"a", 0.1}}},  // rod ends |Z_i| ~ 1/(2A²): better conditioned
       {"Kasner", {{"u", 2.0}}},
       {"Kruskal", {}},
+      {"BesselGravWaveCart", {}},
+      {"HalilsoyWave", {{"alpha", 0.4}}},
+      {"Bonnor", {{"b", 0.0}}},  // Zipoy-Voorhees delta = 2
+      {"ChazyCurzonRot", {}},
+      {"TomimatsuSato", {}},
+      {"Glampedakis", {{"angmom", 0.5}}},  // epsilon = 0: Kerr
+      {"ErezRosenVar", {{"q", 0.8}}},
   };
   return table;
 }

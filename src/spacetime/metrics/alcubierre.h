@@ -13,9 +13,11 @@
 //   comoving (Eulerian observer): e_(0) = ∂_t + v_s f ∂_x, e_(1) = ∂_x, e_(2) = ∂_y, e_(3) = ∂_z;
 //   default = static: e_(0) = ∂_t/w, e_(1) = −(v_s f/w) ∂_t + w ∂_x, w = √(1 − v_s² f²)
 //   (only where v_s |f| < 1).
-// After every accepted step of a light ray Motion4D rescales k to |k^t| = 1 (Metric::resize of
-// its Alcubierre metrics); rescale_direction reproduces it (the ray is the same curve, only its
-// affine parameter changes, so k^t stays of order one through the bubble wall).
+// After every accepted step of a light ray Motion4D's AlcubierreWarpSimple rescales k to |k^t| = 1
+// (its Metric::resize); rescale_direction reproduces it (the ray is the same curve, only its
+// affine parameter changes, so k^t stays of order one through the bubble wall). Motion4D's
+// AlcubierreWarp instead projects k onto the null cone, which geovis does not reproduce
+// (alcubierre_warp.cpp).
 #pragma once
 
 #include <cmath>
