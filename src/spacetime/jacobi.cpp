@@ -9,8 +9,7 @@ namespace geovis {
 namespace {
 
 /// T_ab = −g(s_a, W_b), W_b^α = R^α_{νρσ} k^ν s_b^ρ k^σ (see the header comment).
-void tidal_from_riemann(const Riemann& R, const Mat4& g, const Vec4& k, const Vec4& s1, const Vec4& s2,
-                        double T[4]) {
+void tidal_from_riemann(const Riemann& R, const Mat4& g, const Vec4& k, const Vec4& s1, const Vec4& s2, double T[4]) {
   const Vec4* s[2] = {&s1, &s2};
   for (int b = 0; b < 2; ++b) {
     Vec4 W{{0, 0, 0, 0}};
@@ -26,8 +25,7 @@ void tidal_from_riemann(const Riemann& R, const Mat4& g, const Vec4& k, const Ve
 
 }  // namespace
 
-void optical_tidal_matrix(const Metric& m, const Vec4& x, const Vec4& k, const Vec4& s1, const Vec4& s2,
-                          double T[4]) {
+void optical_tidal_matrix(const Metric& m, const Vec4& x, const Vec4& k, const Vec4& s1, const Vec4& s2, double T[4]) {
   Riemann R;
   m.riemann(x, R);
   Mat4 g;

@@ -34,8 +34,7 @@ namespace geovis {
 
 /// Optical tidal matrix T (2x2, row-major) at x for tangent k and screen vectors s1, s2, from the
 /// full Riemann tensor (Metric::riemann): T_ab = −g(s_a, W_b), W_b^α = R^α_{νρσ} k^ν s_b^ρ k^σ.
-void optical_tidal_matrix(const Metric& m, const Vec4& x, const Vec4& k, const Vec4& s1,
-                          const Vec4& s2, double T[4]);
+void optical_tidal_matrix(const Metric& m, const Vec4& x, const Vec4& k, const Vec4& s1, const Vec4& s2, double T[4]);
 
 namespace jacobi_detail {
 /// Gauss-Jordan inversion with partial pivoting for a first-order dual matrix; false if singular.
@@ -69,8 +68,9 @@ inline bool invert4(const Mat4T<DualD>& a, Mat4T<DualD>& inv) {
 
 /// A metric with closed-form Christoffel symbols on any number type (metric_crtp.h).
 template <class M>
-concept has_christoffel_tmpl =
-    requires(const M& m, const Vec4T<DualD>& x, ChristoffelT<DualD>& G) { m.template christoffel_tmpl<DualD>(x, G); };
+concept has_christoffel_tmpl = requires(const M& m, const Vec4T<DualD>& x, ChristoffelT<DualD>& G) {
+  m.template christoffel_tmpl<DualD>(x, G);
+};
 
 /// Γ^μ_{ab} at x with its first partial derivatives, G.G[μ][a][b].d[c] = ∂_c Γ^μ_{ab}, without
 /// virtual calls or heap allocation: the metric's closed-form symbols evaluated on first-order
