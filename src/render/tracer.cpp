@@ -159,13 +159,13 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
     screen_basis(n, s1, s2);
     const Vec4 c1 = local_to_coord(obs.e, Vec4{{0, s1.x, s1.y, s1.z}});
     const Vec4 c2 = local_to_coord(obs.e, Vec4{{0, s2.x, s2.y, s2.z}});
+    // Y_b(0) = 0, Y_b'(0) = s_b: a bundle with its vertex at the observer (jacobi.h).
     for (int i = 0; i < 4; ++i) {
-      y[8 + i] = c1[i];
-      y[12 + i] = c2[i];
+      y[kJacobiS1 + i] = c1[i];
+      y[kJacobiS2 + i] = c2[i];
+      y[kJacobiDY1 + i] = c1[i];
+      y[kJacobiDY2 + i] = c2[i];
     }
-    // J(0) = 0, dJ/dλ(0) = 1: a bundle with its vertex at the observer (jacobi.h).
-    y[20] = 1;
-    y[23] = 1;
   }
 
   RayState rs;
@@ -267,8 +267,10 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
   }
   if (system_ == GeodesicSystem::Jacobi) {
     // J and λ at the hit, linearly interpolated inside the step (as GeoViS).
-    double J[4];
-    for (int i = 0; i < 4; ++i) J[i] = rs.y0[16 + i] + rs.frac * (rs.y1[16 + i] - rs.y0[16 + i]);
+    double J[4], J0[4], J1[4];
+    jacobi_matrix(m, rs.y0, J0);
+    jacobi_matrix(m, rs.y1, J1);
+    for (int i = 0; i < 4; ++i) J[i] = J0[i] + rs.frac * (J1[i] - J0[i]);
     for (int i = 0; i < 4; ++i) res.jacobi_matrix[i] = J[i];
     const JacobiParams jp = jacobi_params(J, res.lambda);
     res.jacobi[0] = jp.d_plus;

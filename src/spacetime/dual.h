@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "spacetime/fast_math.h"
 #include "spacetime/vec.h"
 
 namespace geovis {
@@ -116,6 +117,17 @@ template <class T> inline Dual<T> atan2(const Dual<T>& y, const Dual<T>& x) {
   const T den = x.v * x.v + y.v * y.v;
   for (int i = 0; i < 4; ++i) r.d[i] = (x.v * y.d[i] - y.v * x.d[i]) / den;
   return r;
+}
+
+/// sin and cos of a first-order dual for the metric templates (found by argument-dependent lookup
+/// before the generic sincos_t of fast_math.h): one inline fast_sincos of the value instead of
+/// four libm calls, since the Jacobi right-hand side (spacetime/jacobi.h) evaluates the closed-form
+/// Christoffel symbols on these numbers at every stage. d sin = cos·dx, d cos = −sin·dx.
+inline void sincos_t(const Dual<double>& x, Dual<double>& s, Dual<double>& c) {
+  double sv, cv;
+  fast_sincos(x.v, sv, cv);
+  s = chain(x, sv, cv);
+  c = chain(x, cv, -sv);
 }
 
 /// Seeds x as the independent variables: x[μ] has ∂_μ = 1.

@@ -52,10 +52,12 @@ int solver_order(SolverKind k);  ///< order of the propagated solution
 enum class GeodesicSystem {
   Geodesic,   ///< y = (x^μ, k^μ): 8 components
   Transport,  ///< + 4 parallel-transported vectors e_(a)^μ: 24 components
-  Jacobi,     ///< + Sachs basis s1, s2 (8) + Jacobi matrix J (4) and dJ/dλ (4): 24 components
+  Jacobi,     ///< + Sachs basis s1, s2 (8) + two Jacobi fields Y and dY/dλ (16): 32 components (jacobi.h)
 };
-constexpr int system_dim(GeodesicSystem s) { return s == GeodesicSystem::Geodesic ? 8 : 24; }
-constexpr int kMaxSystemDim = 24;
+constexpr int system_dim(GeodesicSystem s) {
+  return s == GeodesicSystem::Geodesic ? 8 : (s == GeodesicSystem::Transport ? 24 : 32);
+}
+constexpr int kMaxSystemDim = 32;
 
 struct SolverConfig {
   SolverKind kind = SolverKind::CashKarp45;

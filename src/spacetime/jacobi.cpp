@@ -6,8 +6,26 @@
 
 namespace geovis {
 
-void optical_tidal_matrix(const Metric& m, const Vec4& x, const Vec4& k, const Vec4& s1, const Vec4& s2,
-                          double T[4]) {
+namespace {
+
+/// T_ab = −g(s_a, W_b), W_b^α = R^α_{νρσ} k^ν s_b^ρ k^σ (see the header comment).
+void tidal_from_riemann(const Riemann& R, const Mat4& g, const Vec4& k, const Vec4& s1, const Vec4& s2, double T[4]) {
+  const Vec4* s[2] = {&s1, &s2};
+  for (int b = 0; b < 2; ++b) {
+    Vec4 W{{0, 0, 0, 0}};
+    for (int al = 0; al < 4; ++al)
+      for (int nu = 0; nu < 4; ++nu) {
+        if (k[nu] == 0.0) continue;
+        for (int rho = 0; rho < 4; ++rho)
+          for (int sg = 0; sg < 4; ++sg) W[al] += R.R[al][nu][rho][sg] * k[nu] * (*s[b])[rho] * k[sg];
+      }
+    for (int a = 0; a < 2; ++a) T[2 * a + b] = -dot(g, *s[a], W);
+  }
+}
+
+}  // namespace
+
+void optical_tidal_matrix(const Metric& m, const Vec4& x, const Vec4& k, const Vec4& s1, const Vec4& s2, double T[4]) {
   Riemann R;
   m.riemann(x, R);
   Mat4 g;
@@ -58,7 +76,7 @@ void sachs_basis(const Tetrad& e, const Vec3& d, Vec4& s1, Vec4& s2) {
   s2 = local_to_coord(e, Vec4{{0, b2.x, b2.y, b2.z}});
 }
 
-void jacobi_initial_state(const Vec4& x, const Tetrad& e, const Vec3& d, double y[24]) {
+void jacobi_initial_state(const Vec4& x, const Tetrad& e, const Vec3& d, double y[kJacobiDim]) {
   const Vec4 k = local_null_direction(e, d, true);
   Vec4 s1, s2;
   sachs_basis(e, d, s1, s2);
@@ -68,12 +86,24 @@ void jacobi_initial_state(const Vec4& x, const Tetrad& e, const Vec3& d, double 
     y[kJacobiS1 + i] = s1[i];
     y[kJacobiS2 + i] = s2[i];
   }
-  // J = 0, dJ/dλ = identity.
-  const double J0[4] = {0, 0, 0, 0}, dJ0[4] = {1, 0, 0, 1};
+  // Y_b = 0, Y_b' = s_b (J = 0, dJ/dλ = 1).
   for (int i = 0; i < 4; ++i) {
-    y[kJacobiJ + i] = J0[i];
-    y[kJacobiDJ + i] = dJ0[i];
+    y[kJacobiY1 + i] = 0.0;
+    y[kJacobiDY1 + i] = s1[i];
+    y[kJacobiY2 + i] = 0.0;
+    y[kJacobiDY2 + i] = s2[i];
   }
+}
+
+void jacobi_matrix(const Metric& m, const double* y, double J[4]) {
+  Mat4 g;
+  m.metric_tensor(Vec4{{y[0], y[1], y[2], y[3]}}, g);
+  const Vec4 s[2] = {Vec4{{y[kJacobiS1], y[kJacobiS1 + 1], y[kJacobiS1 + 2], y[kJacobiS1 + 3]}},
+                     Vec4{{y[kJacobiS2], y[kJacobiS2 + 1], y[kJacobiS2 + 2], y[kJacobiS2 + 3]}}};
+  const Vec4 Y[2] = {Vec4{{y[kJacobiY1], y[kJacobiY1 + 1], y[kJacobiY1 + 2], y[kJacobiY1 + 3]}},
+                     Vec4{{y[kJacobiY2], y[kJacobiY2 + 1], y[kJacobiY2 + 2], y[kJacobiY2 + 3]}}};
+  for (int a = 0; a < 2; ++a)
+    for (int b = 0; b < 2; ++b) J[2 * a + b] = dot(g, s[a], Y[b]);
 }
 
 JacobiParams trace_jacobi(const Metric& m, const SolverConfig& cfg_in, const Vec4& x, const Tetrad& e, const Vec3& d,
@@ -82,13 +112,13 @@ JacobiParams trace_jacobi(const Metric& m, const SolverConfig& cfg_in, const Vec
   cfg.type = GeodesicType::Lightlike;
   cfg.direction = 1.0;
   cfg.lambda_max = lambda_end;
-  double y[24];
+  double y[kJacobiDim];
   jacobi_initial_state(x, e, d, y);
   const GeodesicResult r = m.integrate(cfg, GeodesicSystem::Jacobi, y, 0.0, {});
   if (y_out)
-    for (int i = 0; i < 24; ++i) y_out[i] = y[i];
+    for (int i = 0; i < kJacobiDim; ++i) y_out[i] = y[i];
   if (result) *result = r;
-  return jacobi_params_from_state(y, r.lambda);
+  return jacobi_params_from_state(m, y, r.lambda);
 }
 
 }  // namespace geovis

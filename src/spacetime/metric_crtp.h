@@ -2,7 +2,9 @@
 //
 //   template <class T> void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const;   // required: g_{μν}
 //   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override;  // required
-//   void christoffel_closed(const Vec4& x, Christoffel& G) const;          // closed form Γ
+//   void christoffel_closed(const Vec4& x, Christoffel& G) const;          // closed form Γ, or
+//   template <class T> void christoffel_tmpl(const Vec4T<T>& x, ChristoffelT<T>& G) const;
+//                                          // closed form Γ on doubles and duals (cheap Jacobi RHS)
 //   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const;       // optional fast −Γkk
 //   bool is_valid(const Vec4& x) const override;                          // optional
 //   int to_pseudo_cartesian(...) const override;                          // optional
@@ -34,8 +36,9 @@ class MetricCRTP : public Metric {
   void metric_tensor(const Vec4T<DualD>& x, Mat4T<DualD>& g) const override { self().g_tmpl(x, g); }
   void metric_tensor(const Vec4T<Dual2>& x, Mat4T<Dual2>& g) const override { self().g_tmpl(x, g); }
 
+  static constexpr bool kHasChristoffelTmpl = has_christoffel_tmpl<M>;
   static constexpr bool kHasClosedChristoffel =
-      requires(const M& m, const Vec4& x, Christoffel& G) { m.christoffel_closed(x, G); };
+      kHasChristoffelTmpl || requires(const M& m, const Vec4& x, Christoffel& G) { m.christoffel_closed(x, G); };
   static constexpr bool kHasClosedAccel =
       requires(const M& m, const Vec4& x, const Vec4& k, Vec4& a) { m.accel_closed(x, k, a); };
 
@@ -45,7 +48,9 @@ class MetricCRTP : public Metric {
   // ---- non-virtual, inlinable versions used inside the integrators ----
   void metric_tensor_inline(const Vec4& x, Mat4& g) const { self().g_tmpl(x, g); }
   void christoffel_inline(const Vec4& x, Christoffel& G) const {
-    if constexpr (kHasClosedChristoffel)
+    if constexpr (kHasChristoffelTmpl)
+      self().christoffel_tmpl(x, G);
+    else if constexpr (kHasClosedChristoffel)
       self().christoffel_closed(x, G);
     else
       christoffel_ad(x, G);

@@ -23,10 +23,13 @@ struct Mat4T {
 };
 using Mat4 = Mat4T<double>;
 
-/// Christoffel symbols of the second kind, G[mu][a][b] = Γ^μ_{ab} (symmetric in a, b).
-struct Christoffel {
-  double G[4][4][4];
+/// Christoffel symbols of the second kind, G[mu][a][b] = Γ^μ_{ab} (symmetric in a, b); with dual
+/// numbers (spacetime/dual.h) they carry their partial derivatives as well.
+template <class T>
+struct ChristoffelT {
+  T G[4][4][4];
 };
+using Christoffel = ChristoffelT<double>;
 
 /// A local tetrad: e[a] holds the coordinate components e_(a)^μ of base vector a
 /// (a = 0 timelike). Paper §2.1, eq. (2).

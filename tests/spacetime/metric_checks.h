@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "spacetime/jacobi.h"
 #include "spacetime/metric.h"
 
 namespace geovis::metric_checks {
@@ -97,6 +98,119 @@ inline double expect_accel_matches_ad(const Metric& m, const Vec4& x, const Vec4
 /// differences of O(1) terms leave rounding noise there).
 constexpr double kRuleRel = 1e-10;
 constexpr double kRuleFloorFrac = 1e-4;
+
+/// The right-hand side of the Jacobi system the integrator uses (first derivative handed to the
+/// step callback) against the full AD Riemann tensor (Metric::riemann), for the ray leaving x in
+/// local direction d of tetrad e. Jacobi fields Y1 = s1 and Y2 = e_(0) + 0.3 s2 (any vector
+/// will do) start with DY/dλ = Y' + Γ(k, Y) = 0 (AD Γ); then the coordinate right-hand side Y''
+/// must give the covariant acceleration
+///   D²Y^μ/dλ² = Y''^μ + ∂_ν Γ^μ_{ab} k^ν k^a Y^b + Γ^μ_{ab} k'^a Y^b + Γ^μ_{ab} k^a Y'^b
+///            = −R^μ_{βγδ} k^β Y^γ k^δ   (geodesic deviation, MTW eq. 11.10),
+/// with k' = −Γ(k, k) (AD). Also the transport of k, s1, s2 against −Γ^μ_{ab} k^a e^b (AD). Each
+/// comparison is relative to the sum of the absolute values of all terms that make up both sides
+/// (for R: the four terms of MTW eq. 11.12 of each component), the scale of their rounding errors,
+/// so components that vanish analytically are checked as strictly as the others. Returns the
+/// worst ratio |Δ| / scale.
+inline double expect_jacobi_rhs_matches_riemann(const Metric& m, const Vec4& x, const Tetrad& e, const Vec3& d,
+                                                double rel) {
+  double y[kJacobiDim];
+  jacobi_initial_state(x, e, d, y);
+  Christoffel G;
+  double dG[4][4][4][4];
+  m.christoffel_derivs_ad(x, G, dG);
+  const Vec4 k{{y[kJacobiK], y[kJacobiK + 1], y[kJacobiK + 2], y[kJacobiK + 3]}};
+  auto gamma = [&G](int mu, const Vec4& a, const Vec4& b, double* abs_sum) {
+    double t = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        t += G.G[mu][i][j] * a[i] * b[j];
+        if (abs_sum) *abs_sum += std::fabs(G.G[mu][i][j] * a[i] * b[j]);
+      }
+    return t;
+  };
+  Vec4 Y[2], dY[2];
+  for (int mu = 0; mu < 4; ++mu) {
+    Y[0][mu] = y[kJacobiS1 + mu];
+    Y[1][mu] = e[0][mu] + 0.3 * y[kJacobiS2 + mu];
+  }
+  for (int f = 0; f < 2; ++f)
+    for (int mu = 0; mu < 4; ++mu) {
+      dY[f][mu] = -gamma(mu, k, Y[f], nullptr);
+      y[kJacobiY1 + 8 * f + mu] = Y[f][mu];
+      y[kJacobiDY1 + 8 * f + mu] = dY[f][mu];
+    }
+  SolverConfig cfg;
+  cfg.kind = SolverKind::RK4;
+  cfg.step_ctrl = false;
+  cfg.step_size = 1e-9;
+  cfg.max_steps = 1;
+  cfg.constraint_tol = 1e300;
+  double dy[kJacobiDim];
+  for (double& v : dy) v = NAN;
+  auto cb = [&](const StepView& st) {
+    for (int i = 0; i < kJacobiDim; ++i) dy[i] = st.dy0[i];
+    return StepAction::Stop;
+  };
+  double y_end[kJacobiDim];
+  for (int i = 0; i < kJacobiDim; ++i) y_end[i] = y[i];
+  m.integrate(cfg, GeodesicSystem::Jacobi, y_end, 0.0, cb);
+
+  Riemann R;
+  m.riemann(x, R);
+  Vec4 kdot;
+  for (int mu = 0; mu < 4; ++mu) kdot[mu] = -gamma(mu, k, k, nullptr);
+  double worst = 0;
+  for (int f = 0; f < 2; ++f)
+    for (int mu = 0; mu < 4; ++mu) {
+      const double Ydd = dy[kJacobiDY1 + 8 * f + mu];
+      double scale = 0;
+      // Rounding scale of the right-hand side: |2 Γ k Y'| + |∂Γ k k Y| term by term.
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) {
+          scale += 2.0 * std::fabs(G.G[mu][a][b] * k[a] * dY[f][b]);
+          for (int n = 0; n < 4; ++n) scale += std::fabs(dG[n][mu][a][b] * k[a] * k[b] * Y[f][n]);
+        }
+      double acc = Ydd + gamma(mu, kdot, Y[f], &scale) + gamma(mu, k, dY[f], &scale);
+      for (int n = 0; n < 4; ++n)
+        for (int a = 0; a < 4; ++a)
+          for (int b = 0; b < 4; ++b) {
+            acc += dG[n][mu][a][b] * k[n] * k[a] * Y[f][b];
+            scale += std::fabs(dG[n][mu][a][b] * k[n] * k[a] * Y[f][b]);
+          }
+      double W = 0;
+      for (int be = 0; be < 4; ++be)
+        for (int ga = 0; ga < 4; ++ga)
+          for (int de = 0; de < 4; ++de) {
+            const double v = k[be] * Y[f][ga] * k[de];
+            W += R.R[mu][be][ga][de] * v;
+            double r_abs = std::fabs(dG[ga][mu][de][be]) + std::fabs(dG[de][mu][ga][be]);
+            for (int ep = 0; ep < 4; ++ep)
+              r_abs += std::fabs(G.G[mu][ga][ep] * G.G[ep][de][be]) + std::fabs(G.G[mu][de][ep] * G.G[ep][ga][be]);
+            scale += r_abs * std::fabs(v);
+          }
+      scale = std::max(scale, 1e-300);
+      const double diff = std::fabs(acc + W);
+      worst = std::max(worst, diff / scale);
+      EXPECT_LE(diff, rel * scale) << m.name() << " field " << f + 1 << ", D2Y^" << mu << " at (" << x[0] << ", "
+                                   << x[1] << ", " << x[2] << ", " << x[3] << "): from the Jacobi RHS " << acc
+                                   << ", -R(k,Y,k) " << -W << " (scale " << scale << ")";
+      EXPECT_EQ(dy[kJacobiY1 + 8 * f + mu], dY[f][mu]);
+    }
+  for (int v = 0; v < 3; ++v) {
+    const double* ev = y + kJacobiK + 4 * v;
+    const Vec4 ve{{ev[0], ev[1], ev[2], ev[3]}};
+    for (int mu = 0; mu < 4; ++mu) {
+      double t_abs = 0;
+      const double t = -gamma(mu, k, ve, &t_abs);
+      const double diff = std::fabs(dy[kJacobiK + 4 * v + mu] - t);
+      EXPECT_LE(diff, rel * std::max(t_abs, 1e-300))
+          << m.name() << " transport of vector " << v << ", component " << mu << ": " << dy[kJacobiK + 4 * v + mu]
+          << " vs " << t;
+    }
+  }
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(dy[i], k[i]);
+  return worst;
+}
 
 /// g(e_a, e_b) = η_ab = diag(−1, 1, 1, 1) to `tol`, and e_(0) future-directed (e_(0)^t > 0).
 inline void expect_orthonormal(const Metric& m, const Vec4& x, TetradKind kind, double tol = 1e-12) {

@@ -374,6 +374,25 @@ TEST_P(EveryMetric, ClosedFormChristoffelsMatchAutomaticDifferentiation) {
   }
 }
 
+TEST_P(EveryMetric, JacobiRightHandSideMatchesTheRiemannTensor) {
+  // The Jacobi system's right-hand side (Γ and ∂Γ contracted with k and the fields, no Riemann
+  // tensor) and its parallel transport against the full AD Riemann tensor and Christoffel symbols,
+  // for rays in several directions from the sample position and from points near it.
+  const auto m = make_metric(GetParam());
+  double worst = 0;
+  for (const Vec4& x : probe_points(*m, 3)) {
+    Tetrad e;
+    try {
+      e = m->natural_tetrad(x, TetradKind::Default);
+    } catch (const Error&) {
+      continue;  // no natural observer at this probe point
+    }
+    for (const Vec3& d : {Vec3{1, 0, 0}, Vec3{-1, 0.3, 0.2}, Vec3{0.2, 1, 0}, Vec3{0.1, -0.2, 1}})
+      worst = std::max(worst, mc::expect_jacobi_rhs_matches_riemann(*m, x, e, d, 1e-12));
+  }
+  RecordProperty("worst", std::to_string(worst));
+}
+
 TEST_P(EveryMetric, NullGeodesicKeepsItsConstraint) {
   const auto m = make_metric(GetParam());
   const Vec4 x = m->info().sample_pos;

@@ -25,28 +25,32 @@ namespace {
 
 /// The twenty independent non-zero Christoffel symbols of Kerr in BL coordinates, named
 /// <upper>_<lower><lower> (e.g. r_tt = Γ^r_{tt}). Formulas: Catalogue of Spacetimes, "Kerr"
-/// (the same expressions as Motion4D's hand-written MetricKerrBL::calcDerivs).
+/// (the same expressions as Motion4D's hand-written MetricKerrBL::calcDerivs). T is double, or a
+/// dual number when the Jacobi equation needs the symbols' derivatives (spacetime/jacobi.h).
+template <class T>
 struct KerrGamma {
-  double t_tr, t_tth, t_rph, t_thph;                  // Γ^t
-  double r_tt, r_tph, r_rr, r_rth, r_thth, r_phph;    // Γ^r
-  double th_tt, th_tph, th_rr, th_rth, th_thth, th_phph;  // Γ^θ
-  double ph_tr, ph_tth, ph_rph, ph_thph;              // Γ^φ
+  T t_tr, t_tth, t_rph, t_thph;                  // Γ^t
+  T r_tt, r_tph, r_rr, r_rth, r_thth, r_phph;    // Γ^r
+  T th_tt, th_tph, th_rr, th_rth, th_thth, th_phph;  // Γ^θ
+  T ph_tr, ph_tth, ph_rph, ph_thph;              // Γ^φ
 };
 
-inline KerrGamma kerr_gamma(double rs, double a, double r, double theta) {
-  double st, ct;
-  fast_sincos(theta, st, ct);
-  const double st2 = st * st, ct2 = ct * ct, stct = st * ct;
-  const double r2 = r * r, a2 = a * a;
-  const double sigma = r2 + a2 * ct2;         // Σ
-  const double delta = r2 - rs * r + a2;      // Δ
-  const double r2a2 = r2 + a2;
-  const double A = r2a2 * sigma + rs * r * a2 * st2;
-  const double w = r2 - a2 * ct2;             // r² − a² cos²θ, a recurring factor
-  const double is = 1.0 / sigma, is2 = is * is, is3 = is2 * is;
-  const double id = 1.0 / delta;
-  const double cot = ct / st;
-  KerrGamma g;
+template <class T>
+inline KerrGamma<T> kerr_gamma(double rs, double a, const T& r, const T& theta) {
+  T st, ct;
+  sincos_t(theta, st, ct);
+  const T st2 = st * st, ct2 = ct * ct, stct = st * ct;
+  const T r2 = r * r;
+  const double a2 = a * a;
+  const T sigma = r2 + a2 * ct2;         // Σ
+  const T delta = r2 - rs * r + a2;      // Δ
+  const T r2a2 = r2 + a2;
+  const T A = r2a2 * sigma + rs * r * a2 * st2;
+  const T w = r2 - a2 * ct2;             // r² − a² cos²θ, a recurring factor
+  const T is = 1.0 / sigma, is2 = is * is, is3 = is2 * is;
+  const T id = 1.0 / delta;
+  const T cot = ct / st;
+  KerrGamma<T> g;
   g.r_tt = 0.5 * rs * delta * w * is3;
   g.t_tr = 0.5 * rs * r2a2 * w * is2 * id;
   g.t_tth = -rs * r * a2 * stct * is2;
@@ -108,10 +112,15 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     g[3][3] = (r * r + a2_ + a2_ * st2 * u) * st2;
   }
 
-  void christoffel_closed(const Vec4& x, Christoffel& G) const {
-    G = Christoffel{};
-    const KerrGamma k = kerr_gamma(rs_, a_, x[1], x[2]);
-    auto set = [&G](int mu, int a, int b, double v) { G.G[mu][a][b] = G.G[mu][b][a] = v; };
+  /// Γ^μ_{ab} in closed form, on doubles or on dual numbers (MetricCRTP::christoffel_inline,
+  /// jacobi.h).
+  template <class T>
+  void christoffel_tmpl(const Vec4T<T>& x, ChristoffelT<T>& G) const {
+    for (auto& g1 : G.G)
+      for (auto& g2 : g1)
+        for (T& v : g2) v = T(0.0);
+    const KerrGamma<T> k = kerr_gamma(rs_, a_, x[1], x[2]);
+    auto set = [&G](int mu, int a, int b, const T& v) { G.G[mu][a][b] = G.G[mu][b][a] = v; };
     set(0, 0, 1, k.t_tr);
     set(0, 0, 2, k.t_tth);
     set(0, 1, 3, k.t_rph);

@@ -35,12 +35,17 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
     g[3][3] = r * r * st * st;
   }
 
-  void christoffel_closed(const Vec4& x, Christoffel& G) const {
-    G = Christoffel{};
-    const double r = x[1];
-    double st, ct;
-    fast_sincos(x[2], st, ct);
-    const double rmrs = r - rs_;
+  /// Γ^μ_{ab} in closed form, on doubles or on dual numbers (MetricCRTP::christoffel_inline,
+  /// jacobi.h).
+  template <class T>
+  void christoffel_tmpl(const Vec4T<T>& x, ChristoffelT<T>& G) const {
+    for (auto& g1 : G.G)
+      for (auto& g2 : g1)
+        for (T& v : g2) v = T(0.0);
+    const T& r = x[1];
+    T st, ct;
+    sincos_t(x[2], st, ct);
+    const T rmrs = r - rs_;
     G.G[0][0][1] = G.G[0][1][0] = rs_ / (2.0 * r * rmrs);
     G.G[1][0][0] = rs_ * rmrs / (2.0 * r * r * r);
     G.G[1][1][1] = -rs_ / (2.0 * r * rmrs);
