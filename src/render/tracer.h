@@ -53,6 +53,10 @@ class Tracer {
   /// Traces the ray leaving the observer in local direction `d` (need not be unit).
   TraceResult trace_direction(const Vec3& d, TraceStats& stats) const;
 
+  /// The same, and `on_step` sees every accepted step of the ray up to and including the step of
+  /// the hit, before the scene is tested on it (the viewer's ray, render/ray_path.h).
+  TraceResult trace_direction(const Vec3& d, TraceStats& stats, FunctionRef<void(const StepView&)> on_step) const;
+
   /// Hit refinement stops once the curved sub-step deviates from its chord by less than this
   /// fraction of the distance from the origin (plus an absolute floor of the same size).
   static constexpr double kRefineTolerance = 1e-9;
