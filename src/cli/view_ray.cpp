@@ -198,6 +198,7 @@ nlohmann::json PixelRayTracer::trace(const ChannelImage& data, const std::string
          num(s.eps_rel) + " --max-steps " + std::to_string(s.max_steps) + " --equations " +
          (s.separable ? "separable" : "coordinate");
   if (std::isfinite(s.lambda_max)) cmd += " --lambda-max " + num(s.lambda_max);
+  cmd += std::isfinite(path.escape_radius) ? " --escape-radius " + num(path.escape_radius) : " --no-escape";
   // What `geovis geodesic` cannot express: the same steps only up to where these act.
   std::vector<std::string> differs;
   const SolverConfig d;
@@ -211,8 +212,8 @@ nlohmann::json PixelRayTracer::trace(const ChannelImage& data, const std::string
                    {"dir", vec3(path.natural_dir)},
                    {"scale", path.natural_scale},
                    {"differences", differs},
-                   {"note", "the tracer also stops at the scene's bounding box, at a hit, and at the escape radius of "
-                            "the objects' bounding sphere; geovis geodesic runs on (its points start the same)"}};
+                   {"note", "the tracer also stops at a hit and at the scene's bounding box; geovis geodesic runs on "
+                            "(its points start the same)"}};
 
   // What the data file stored for this pixel, for comparison with the traced ray.
   nlohmann::json stored = nlohmann::json::object();

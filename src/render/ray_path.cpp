@@ -12,6 +12,7 @@ RayPath trace_ray_path(const RenderJob& job_in, double px, double py) {
   job.keep_data = false;
   const Tracer tracer(job);
   RayPath path;
+  path.escape_radius = tracer.escape_radius();
   Vec3 d;
   if (!job.camera->direction(px, py, d)) return path;
   path.traced = true;

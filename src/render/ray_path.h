@@ -29,6 +29,7 @@ struct RayPath {
   /// Start point, every accepted step; after a hit the last point is the refined hit event.
   std::vector<RayPoint> points;
   TraceResult result;
+  double escape_radius = 0;  ///< of the tracer (Tracer::escape_radius)
 };
 
 /// Traces the ray through continuous image position (px, py) of `job` (pixel centre of (i, j):

@@ -72,6 +72,8 @@ class Tracer {
   ///  - Escaped, BoundingBox, MaxSteps, LambdaMax (the ray escaped or ran out of budget): the
   ///    background.
   Color stop_color(StopReason reason) const;
+  /// The escape radius of the rays: the scene's bounding sphere (SolverConfig::escape_radius).
+  double escape_radius() const { return cfg_.escape_radius; }
   static constexpr int kMaxRefineLevels = 16;
 
  private:
