@@ -108,7 +108,15 @@ function defaultColormap(): string {
 function update(resetRange: boolean): void {
   const s = sourceKind();
   const log = ui.scale.value === 'log';
-  if (s.kind !== 'rgb') view.computeValues(valueSource());
+  // The rendered colour has no range or colour map.
+  for (const el of [ui.colormap, ui.scale, ui.lo, ui.hi, ui.auto]) el.disabled = s.kind === 'rgb';
+  if (s.kind === 'rgb') {
+    view.setDisplay({ mode: 'rgb', map: [], lo: 0, hi: 1, log: false });
+    drawColorbar(ui.colorbar, { map: [], lo: 0, hi: 1, log: false, label: label(), grey: false, categories: [] });
+    showReadout();
+    return;
+  }
+  view.computeValues(valueSource());
   if (resetRange || autoRange) {
     const [lo, hi] = dataRange(view.values, log);
     ui.lo.value = String(lo);
@@ -121,7 +129,7 @@ function update(resetRange: boolean): void {
   else if (log && !(lo > 0)) showError(`log scale: the range must be positive, found ${lo} to ${hi}`);
   const categorical = isCategorical();
   const cmap = ui.colormap.value;
-  const mode = s.kind === 'rgb' ? 'rgb' : categorical ? 'categories' : cmap === 'grey' ? 'grey' : 'colormap';
+  const mode = categorical ? 'categories' : cmap === 'grey' ? 'grey' : 'colormap';
   const map: RGB[] = categorical ? info.categories : info.colormaps[cmap] ?? [];
   view.setDisplay({ mode, map, lo, hi, log });
   drawColorbar(ui.colorbar, {
@@ -129,7 +137,7 @@ function update(resetRange: boolean): void {
     categories: categorical
       ? [...new Set(Array.from(view.values).filter(Number.isFinite))].sort((a, b) => a - b)
           .map((c) => ({ name: info.stop_names[c] ?? String(c), color: info.categories[c & 7] }))
-      : s.kind === 'rgb' ? [] : undefined,
+      : undefined,
   });
   showReadout();
 }
