@@ -26,10 +26,10 @@ RayStop ray_stop(const PixelData& d);
 struct DataFileInfo {
   std::string version;     ///< geovis version
   std::string scene_file;  ///< scene file name ("" for the built-in scene)
-  std::string scene_path;  ///< absolute path of the scene file ("" for the built-in scene; `geovis view`)
   std::string scene_hash;  ///< FNV-1a 64 of the scene text, hex
   std::string defines;     ///< the --define overrides, "NAME=VALUE ..." (they change what the scene renders)
   int frame = 0;
+  std::string scene_path;  ///< absolute path of the scene file ("" for the built-in scene; `geovis view`)
 };
 
 /// FNV-1a 64-bit hash of `text` as 16 hex digits (scene identity in the header; not a security hash).
