@@ -297,6 +297,11 @@ TEST(ViewCommand, CtrlCStopsTheServerCleanly) {
   auto r = c.Get("/api/info");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200);
+  // A GeoViS file names no scene: its rays cannot be traced again, and the reply says why.
+  auto ray = c.Get("/api/ray?frame=0&x=0&y=0");
+  ASSERT_TRUE(ray);
+  EXPECT_EQ(ray->status, 422);
+  EXPECT_NE(ray->body.find("names no scene"), std::string::npos) << ray->body;
   ::kill(pid, SIGINT);
   int st = 0;
   ASSERT_EQ(::waitpid(pid, &st, 0), pid);

@@ -205,6 +205,13 @@ try {
   });
   assert.ok(lit > 30, `the ray is drawn (${lit} ray-coloured pixels)`);
   step(`click ${disk.x},${disk.y}: ray of ${ray.points.length} points drawn, ends on the disk at r = ${ray.points.at(-1).x[1].toFixed(4)}`);
+  // For the gallery: the top of the disk's image, light that passed over the hole from the far side.
+  const arc = rows.filter((r) => r.stop === 0 && r.x === disk.x).sort((a, b) => a.y - b.y)[0];
+  [px, py] = await centre(arc.x, arc.y);
+  await page.mouse.click(px, py);
+  await page.waitForFunction(([x, y]) => window.geovisViewer.lastRay?.pixel[1] === y && window.geovisViewer.lastRay?.pixel[0] === x,
+                             [arc.x, arc.y], { timeout: 30000 });
+  await page.waitForTimeout(200);
   await page.screenshot({ path: path.join(shots, 'viewer-ray.png') });
 
   // ---- frames: slider and play ----
