@@ -21,8 +21,11 @@ namespace geovis::cli {
 namespace fs = std::filesystem;
 
 struct PixelRayTracer::Loaded {
-  SceneBuilder builder;
+  std::unique_ptr<Diagnostics> diag;  ///< the builder reports warnings here while it builds frames
+  std::unique_ptr<SceneBuilder> builder;
   std::string scene_label;
+  /// SceneBuilder::build caches what it built (motions): one request builds at a time.
+  mutable std::mutex build_mutex;
 };
 
 namespace {
@@ -65,8 +68,10 @@ std::vector<std::string> split_defines(const std::string& defines) {
   std::stringstream ss(defines);
   std::string word;
   while (ss >> word) {
-    if (word.find('=') == std::string::npos && !out.empty()) out.back() += " " + word;
-    else out.push_back(word);
+    if (word.find('=') == std::string::npos && !out.empty())
+      out.back() += " " + word;
+    else
+      out.push_back(word);
   }
   return out;
 }
@@ -74,10 +79,11 @@ std::vector<std::string> split_defines(const std::string& defines) {
 PixelRayTracer::PixelRayTracer(std::string scene_override) : scene_override_(std::move(scene_override)) {}
 
 std::shared_ptr<const PixelRayTracer::Loaded> PixelRayTracer::load(const ChannelImage& data,
-                                                                  const std::string& data_path) {
+                                                                   const std::string& data_path) {
   const std::string hash = data.meta("geovis:scene.hash");
   if (hash.empty())
-    throw Error("\"" + data_path + "\" names no scene (a GeoViS data file has no header): its rays cannot be traced "
+    throw Error("\"" + data_path +
+                "\" names no scene (a GeoViS data file has no header): its rays cannot be traced "
                 "again; use the OpenEXR data file of geovis render --data");
   const std::string file = data.meta("geovis:scene.file"), path = data.meta("geovis:scene.path");
   const std::string defines = data.meta("geovis:scene.defines"), res = data.meta("geovis:camera.resolution");
@@ -117,21 +123,21 @@ std::shared_ptr<const PixelRayTracer::Loaded> PixelRayTracer::load(const Channel
 
   SceneArgs args;
   args.defines = split_defines(defines);
-  Diagnostics diag;
-  const SchemeOptions sopts = scheme_options(args, &diag, true);
-  SceneDescription scene = scene_path.empty()
-                               ? evaluate_scene_string(text, default_scene_name() + ".scm", sopts)
-                               : evaluate_scene_file(scene_path, sopts);
+  auto loaded = std::make_shared<Loaded>();
+  loaded->diag = std::make_unique<Diagnostics>();
+  loaded->scene_label = label;
+  const SchemeOptions sopts = scheme_options(args, loaded->diag.get(), true);
+  SceneDescription scene = scene_path.empty() ? evaluate_scene_string(text, default_scene_name() + ".scm", sopts)
+                                              : evaluate_scene_file(scene_path, sopts);
   BuildOptions bopts;
   const std::string dir = scene_path.empty() ? std::string() : fs::path(scene_path).parent_path().string();
   bopts.search_paths.push_back(dir.empty() ? "." : dir);
   bopts.search_paths.push_back(".");
-  bopts.diag = &diag;
+  bopts.diag = loaded->diag.get();
   bopts.write_action_files = false;  // the viewer writes no file of the scene's actions
   int w = 0, h = 0;
   if (std::sscanf(res.c_str(), "%d %d", &w, &h) == 2 && w > 0 && h > 0) bopts.resolution = std::pair{w, h};
-  auto loaded = std::make_shared<Loaded>(Loaded{SceneBuilder(std::move(scene), bopts), label});
-  bopts.diag = nullptr;
+  loaded->builder = std::make_unique<SceneBuilder>(std::move(scene), bopts);
   cache_[key] = loaded;
   return loaded;
 }
@@ -143,10 +149,14 @@ nlohmann::json PixelRayTracer::trace(const ChannelImage& data, const std::string
   const std::shared_ptr<const Loaded> loaded = load(data, data_path);
   const std::string frame_text = data.meta("geovis:frame");
   const int frame = frame_text.empty() ? 0 : std::stoi(frame_text);
-  if (frame < 0 || frame >= loaded->builder.device_count())
+  if (frame < 0 || frame >= loaded->builder->device_count())
     throw Error("frame " + std::to_string(frame) + " of \"" + data_path + "\" is not in the scene (it has " +
-                std::to_string(loaded->builder.device_count()) + " frames)");
-  const std::vector<FrameJob> jobs = loaded->builder.build(frame);
+                std::to_string(loaded->builder->device_count()) + " frames)");
+  std::vector<FrameJob> jobs;
+  {
+    std::lock_guard<std::mutex> lock(loaded->build_mutex);
+    jobs = loaded->builder->build(frame);
+  }
   const RenderJob& job = jobs.front().job;  // a stereo pair: the left eye
   if (job.camera->width() != data.width || job.camera->height() != data.height)
     throw Error("the scene's camera has " + std::to_string(job.camera->width()) + "x" +
@@ -168,8 +178,10 @@ nlohmann::json PixelRayTracer::trace(const ChannelImage& data, const std::string
   Vec3 obs_p;
   m.to_pseudo_cartesian(job.observer.pos, obs_p);
   j["observer"] = {{"x", vec4(job.observer.pos)}, {"p", vec3(obs_p)}};
-  if (const auto s = central_surface(m)) j["surface"] = {{"kind", s->kind}, {"radius", s->radius}, {"formula", s->formula}};
-  else j["surface"] = nullptr;
+  if (const auto s = central_surface(m))
+    j["surface"] = {{"kind", s->kind}, {"radius", s->radius}, {"formula", s->formula}};
+  else
+    j["surface"] = nullptr;
   nlohmann::json outlines = nlohmann::json::array();
   if (job.scene) collect_outlines(*job.scene, outlines);
   j["objects"] = outlines;
@@ -212,8 +224,9 @@ nlohmann::json PixelRayTracer::trace(const ChannelImage& data, const std::string
                    {"dir", vec3(path.natural_dir)},
                    {"scale", path.natural_scale},
                    {"differences", differs},
-                   {"note", "the tracer also stops at a hit and at the scene's bounding box; geovis geodesic runs on "
-                            "(its points start the same)"}};
+                   {"note",
+                    "the tracer also stops at a hit and at the scene's bounding box; geovis geodesic runs on "
+                    "(its points start the same)"}};
 
   // What the data file stored for this pixel, for comparison with the traced ray.
   nlohmann::json stored = nlohmann::json::object();

@@ -80,7 +80,9 @@ std::vector<ViewFrame> find_view_frames(const std::string& data) {
 }
 
 ViewServer::ViewServer(std::vector<ViewFrame> frames, std::span<const ViewAsset> assets, std::string scene_override)
-    : frames_(std::move(frames)), assets_(assets), rays_(std::move(scene_override)),
+    : frames_(std::move(frames)),
+      assets_(assets),
+      rays_(std::move(scene_override)),
       server_(std::make_unique<httplib::Server>()) {
   add_routes();
 }
@@ -126,10 +128,13 @@ void ViewServer::add_routes() {
   // server through a name of its own that resolves to 127.0.0.1).
   s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
     const std::string host = req.get_header_value("Host");
-    const std::string port = ":" + std::to_string(port_);
+    const std::string port = std::string(":").append(std::to_string(port_));
     if (host == "127.0.0.1" + port || host == "localhost" + port || host == "127.0.0.1" || host == "localhost")
       return httplib::Server::HandlerResponse::Unhandled;
-    send_error(res, 403, "host \"" + host + "\" is not served");
+    // Appended piecewise: GCC 12 reports a false -Wrestrict on `"..." + std::string`.
+    std::string why = "host \"";
+    why.append(host).append("\" is not served");
+    send_error(res, 403, why);
     return httplib::Server::HandlerResponse::Handled;
   });
 

@@ -18,7 +18,7 @@ struct RayPoint {
 };
 
 struct RayPath {
-  bool traced = false;  ///< false: the camera has no ray through this image position
+  bool traced = false;      ///< false: the camera has no ray through this image position
   Vec3 local_dir{0, 0, 0};  ///< unit viewing direction in the observer's frame (camera)
   /// The same light ray started in the metric's natural (default) tetrad at the observer, as
   /// `geovis geodesic --dir` takes it: k = scale·(−E_(0) + natural_dir) with natural_dir a unit

@@ -16,7 +16,8 @@ std::optional<CentralSurface> central_surface(const Metric& m) {
     if (!(M > 0)) return std::nullopt;
     return CentralSurface{"horizon", 2 * M, "r = 2M"};
   }
-  // Isotropic coordinates: r = ρ (1 + M/(2ρ))², so r = 2M is ρ = M/2 (Catalogue of Spacetimes, "Schwarzschild", isotropic coordinates).
+  // Isotropic coordinates: r = ρ (1 + M/(2ρ))², so r = 2M is ρ = M/2 (Catalogue of Spacetimes, "Schwarzschild",
+  // isotropic coordinates).
   if (name == "SchwarzschildIsotropic") {
     const double M = m.param("mass");
     if (!(M > 0)) return std::nullopt;

@@ -12,7 +12,7 @@
 namespace geovis {
 
 struct CentralSurface {
-  std::string kind;  ///< "horizon" or "throat"
+  std::string kind;   ///< "horizon" or "throat"
   double radius = 0;  ///< pseudo-Cartesian radius |p|
   /// The coordinate statement, e.g. "r+ = M + sqrt(M^2 - a^2)".
   std::string formula;

@@ -100,11 +100,26 @@ TEST_F(ViewServerTest, ServesOnlyThePageAndTheNamedFrames) {
   EXPECT_EQ(j["frames"][0]["name"], "a.exr");
 
   // Traversal in every spelling: never a file of the system, the folder or the link.
-  for (const std::string& t : std::vector<std::string>{"/../../etc/passwd", "/%2e%2e/%2e%2e/etc/passwd", "/%2E%2E%2F%2E%2E%2Fetc%2Fpasswd", "/..%2f..%2fetc%2fpasswd",
-        "/etc/passwd", "//etc/passwd", "/a.exr", "/served/a.exr", "/b.exr", "/secret.exr",
-        "/api/frame/1", "/api/frame/1/data", "/api/frame/-1", "/api/frame/99999999", "/api/frame/0/../../secret.exr",
-        "/api/frame/..%2f..%2fsecret.exr", "/index.html/../../etc/passwd", "/assets/../../../etc/passwd",
-        "/" + (dir_ / "secret.exr").string(), "/%2F" + (dir_ / "secret.exr").string().substr(1)}) {
+  for (const std::string& t : std::vector<std::string>{"/../../etc/passwd",
+                                                       "/%2e%2e/%2e%2e/etc/passwd",
+                                                       "/%2E%2E%2F%2E%2E%2Fetc%2Fpasswd",
+                                                       "/..%2f..%2fetc%2fpasswd",
+                                                       "/etc/passwd",
+                                                       "//etc/passwd",
+                                                       "/a.exr",
+                                                       "/served/a.exr",
+                                                       "/b.exr",
+                                                       "/secret.exr",
+                                                       "/api/frame/1",
+                                                       "/api/frame/1/data",
+                                                       "/api/frame/-1",
+                                                       "/api/frame/99999999",
+                                                       "/api/frame/0/../../secret.exr",
+                                                       "/api/frame/..%2f..%2fsecret.exr",
+                                                       "/index.html/../../etc/passwd",
+                                                       "/assets/../../../etc/passwd",
+                                                       "/" + (dir_ / "secret.exr").string(),
+                                                       "/%2F" + (dir_ / "secret.exr").string().substr(1)}) {
     SCOPED_TRACE(t);
     auto r = c.Get(t);
     if (!r) continue;  // refused by the client or server as malformed: also nothing served
@@ -261,7 +276,8 @@ TEST_F(ViewServerTest, PostValuesAndFrameDescription) {
 
 TEST(ViewCommand, CtrlCStopsTheServerCleanly) {
   const std::string exe = std::string(GEOVIS_BINARY_DIR) + "/geovis";
-  const std::string data = (fs::temp_directory_path() / ("geovis_view_cc_" + std::to_string(::getpid()) + ".pdz")).string();
+  const std::string data =
+      (fs::temp_directory_path() / ("geovis_view_cc_" + std::to_string(::getpid()) + ".pdz")).string();
   {
     // A 1x1 GeoViS .pdz file (docs/data-format.md): int32 W, H, nc = 10, then 10 float64.
     std::ofstream f(data, std::ios::binary);

@@ -78,8 +78,9 @@ export async function fetchFrame(index: number): Promise<Frame> {
 }
 
 /** The values of `geovis post --shader NAME` computed by the server (for comparison with the GPU). */
-export async function fetchPostValues(frame: number, shader: string): Promise<Float32Array> {
-  const r = await fetch(`/api/post?frame=${frame}&shader=${encodeURIComponent(shader)}`);
+export async function fetchPostValues(frame: number, shader: string, mass?: number): Promise<Float32Array> {
+  const m = mass !== undefined ? `&mass=${mass}` : '';
+  const r = await fetch(`/api/post?frame=${frame}&shader=${encodeURIComponent(shader)}${m}`);
   if (!r.ok) throw new Error((await r.json()).error ?? `post: HTTP ${r.status}`);
   return new Float32Array(await r.arrayBuffer());
 }

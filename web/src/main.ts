@@ -13,6 +13,8 @@ const $ = <T extends HTMLElement>(id: string) => document.getElementById(id) as 
 const ui = {
   source: $<HTMLSelectElement>('source'),
   colormap: $<HTMLSelectElement>('colormap'),
+  mass: $<HTMLInputElement>('mass'),
+  massLabel: $<HTMLLabelElement>('mass-label'),
   scale: $<HTMLSelectElement>('scale'),
   lo: $<HTMLInputElement>('range-lo'),
   hi: $<HTMLInputElement>('range-hi'),
@@ -54,7 +56,8 @@ function sourceKind(): { kind: 'rgb' | 'channel' | 'post'; name: string } {
 
 function valueSource(): ValueSource {
   const s = sourceKind();
-  const mass = Number(frame.metadata['geovis:metric.mass'] ?? '1') || 1;
+  // disk-flux: M from the field (geovis post --mass), else the header's metric.mass, else 1 (render/post.h).
+  const mass = Number(ui.mass.value || frame.metadata['geovis:metric.mass'] || '1');
   if (s.kind === 'post') {
     const ch = shaderChannels[s.name];
     return s.name === 'disk-flux' ? { mode: 1, a: ch[0], b: ch[1], mass } : { mode: 0, a: ch[0], mass };
@@ -108,6 +111,8 @@ function defaultColormap(): string {
 function update(resetRange: boolean): void {
   const s = sourceKind();
   const log = ui.scale.value === 'log';
+  ui.massLabel.style.display = s.name === 'disk-flux' ? '' : 'none';
+  ui.status.textContent = '';
   // The rendered colour has no range or colour map.
   for (const el of [ui.colormap, ui.scale, ui.lo, ui.hi, ui.auto]) el.disabled = s.kind === 'rgb';
   if (s.kind === 'rgb') {
@@ -116,7 +121,12 @@ function update(resetRange: boolean): void {
     showReadout();
     return;
   }
-  view.computeValues(valueSource());
+  const src = valueSource();
+  if (!(src.mass > 0)) {
+    showError(`disk-flux: the mass must be positive, found ${ui.mass.value}`);
+    return;
+  }
+  view.computeValues(src);
   if (resetRange || autoRange) {
     const [lo, hi] = dataRange(view.values, log);
     ui.lo.value = String(lo);
@@ -241,6 +251,7 @@ function setupInteraction(): void {
     update(true);
   };
   ui.colormap.onchange = () => update(false);
+  ui.mass.onchange = () => update(true);
   ui.scale.onchange = () => update(true);
   ui.lo.onchange = ui.hi.onchange = () => { autoRange = false; update(false); };
   ui.auto.onclick = () => update(true);
@@ -277,7 +288,7 @@ const testApi = {
     return [r.left + cx, r.top + cy];
   },
   zoomTo(scale: number) { view.zoom(scale / view.scale, 0, 0); },
-  serverPostValues: async (shader: string) => Array.from(await fetchPostValues(frame.index, shader)),
+  serverPostValues: async (shader: string, mass?: number) => Array.from(await fetchPostValues(frame.index, shader, mass)),
 };
 (window as unknown as { geovisViewer: typeof testApi }).geovisViewer = testApi;
 

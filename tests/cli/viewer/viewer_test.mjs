@@ -134,11 +134,12 @@ try {
   await page.screenshot({ path: path.join(shots, 'viewer-channel-z.png') });
 
   // ---- the post shaders on the GPU = geovis post's values (render/post.cpp) ----
-  for (const shader of ['redshift', 'stop', 'disk-flux']) {
+  for (const [shader, mass] of [['redshift'], ['stop'], ['disk-flux'], ['disk-flux', 1.5]]) {
     await select('source', `post:${shader}`);
-    const r = await page.evaluate(async (shader) => {
+    if (mass) await page.fill('#mass', String(mass)).then(() => page.$eval('#mass', (el) => el.dispatchEvent(new Event('change'))));
+    const r = await page.evaluate(async ([shader, mass]) => {
       const gpu = window.geovisViewer.values();
-      const cpu = await window.geovisViewer.serverPostValues(shader);
+      const cpu = await window.geovisViewer.serverPostValues(shader, mass ?? undefined);
       const f = window.geovisViewer.frame, nc = f.channels.length, cx1 = f.channels.indexOf('x1'), cz = f.channels.indexOf('z');
       const eps = 2 ** -23;
       let values = 0, nanMismatch = 0, worst = 0;
@@ -150,7 +151,7 @@ try {
           // Float32 evaluation of paper eq. 16: the numerator sqrt R - sqrt 3 + sqrt(3/2)/2 log(...)
           // cancels near R = 3, so its error is a few ulp of its terms' magnitudes; then the
           // quotient and (1+z)^4 add a few ulp relative.
-          const R = f.data[i * nc + cx1] / 2, opz = f.data[i * nc + cz];
+          const R = f.data[i * nc + cx1] / (2 * (mass ?? 1)), opz = f.data[i * nc + cz];
           const s32 = Math.sqrt(1.5), s3 = Math.sqrt(3), sR = Math.sqrt(R);
           const lg = Math.log((sR + s32) / (sR - s32) * (s3 - s32) / (s3 + s32));
           const terms = sR + s3 + Math.abs(0.5 * s32 * lg) + Math.abs(0.5 * s32 * (sR + s32) / (sR - s32));
@@ -160,12 +161,14 @@ try {
         worst = Math.max(worst, bound > 0 ? d / bound : d === 0 ? 0 : Infinity);
       }
       return { values, nanMismatch, worst, n: cpu.length };
-    }, shader);
+    }, [shader, mass ?? null]);
     assert.equal(r.nanMismatch, 0, `${shader}: pixels without a value agree`);
     assert.ok(r.values > 0, `${shader}: values to compare`);
     assert.ok(r.worst <= 1, `${shader}: GPU and geovis post differ beyond float precision (worst ${r.worst} of the bound)`);
-    step(`shader ${shader} on the GPU: ${r.values} values as geovis post (worst ${r.worst.toFixed(3)} of the float bound)`);
+    step(`shader ${shader}${mass ? ` (M = ${mass})` : ''} on the GPU: ${r.values} values as geovis post (worst ${r.worst.toFixed(3)} of the float bound)`);
   }
+  await page.fill('#mass', '');
+  await page.$eval('#mass', (el) => el.dispatchEvent(new Event('change')));
   await select('scale', 'log');
   await page.screenshot({ path: path.join(shots, 'viewer-disk-flux.png') });
   await select('scale', 'linear');
