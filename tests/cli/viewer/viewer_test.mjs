@@ -27,7 +27,8 @@ const pw = path.join(source, 'web/node_modules/playwright-core/index.mjs');
 if (!fs.existsSync(pw)) skip(`no ${pw} (npm ci in web/ runs when geovis is built with npm present)`);
 const { chromium } = await import(pathToFileURL(pw).href);
 
-const step = (what) => console.log(`- ${what}`);
+const t0 = Date.now();
+const step = (what) => console.log(`- ${what} [${((Date.now() - t0) / 1000).toFixed(1)} s]`);
 
 // ---- data: two frames of the paper's Fig. 9 disk (inclination 80 and 60 degrees) ----
 fs.rmSync(out, { recursive: true, force: true });
@@ -180,8 +181,17 @@ try {
   assert.equal(await page.textContent('#pixel-xy'), `${disk.x}, ${disk.y}`);
   await page.mouse.move(px + 4.5, py);         // the next column
   assert.equal(await page.textContent('#pixel-xy'), `${disk.x + 1}, ${disk.y}`);
+  // Pan: drag the image 16 screen pixels (2 image pixels) to the right.
+  await page.mouse.move(px, py);
+  await page.mouse.down();
+  await page.mouse.move(px + 8, py, { steps: 2 });
+  await page.mouse.move(px + 16, py, { steps: 2 });
+  await page.mouse.up();
+  await page.mouse.move(px, py);
+  assert.equal(await page.textContent('#pixel-xy'), `${disk.x - 2}, ${disk.y}`);
+  assert.equal(await page.evaluate(() => window.geovisViewer.lastRay), null, 'a drag is no click');
   await page.click('#zoom-fit');
-  step('zoom 8x: the read-out follows exact pixel boundaries');
+  step('zoom 8x and pan: the read-out follows exact pixel boundaries');
 
   // ---- click a pixel: its light ray in 3D ----
   await select('source', 'rgb');
