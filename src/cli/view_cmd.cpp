@@ -29,6 +29,7 @@ int run_view(const ViewArgs& a, const GlobalOptions& g) {
     throw Error(std::string("the viewer's page is not part of this build: ") + view_page_missing_reason() +
                 "; install Node.js and npm (scripts/setup.sh) and configure and build geovis again");
   ViewServer server(find_view_frames(a.data), view_assets(), a.scene);
+  server.load_first_frame();
   const int port = server.bind(a.port);
   InterruptHandler interrupt;
   bool ok = true;

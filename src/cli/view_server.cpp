@@ -54,7 +54,12 @@ long index_param(const httplib::Request& req, const char* name) {
 std::vector<ViewFrame> find_view_frames(const std::string& data) {
   std::error_code ec;
   if (!fs::exists(data, ec)) throw Error("\"" + data + "\" does not exist");
-  if (!fs::is_directory(data, ec)) return {ViewFrame{fs::path(data).filename().string(), data}};
+  if (!fs::is_directory(data, ec)) {
+    if (!is_data_extension(fs::path(data).extension().string()))
+      throw Error("\"" + data + "\" is not a data file: expected an OpenEXR data file (.exr of geovis render --data or a "
+                  "data filter), a GeoViS .pdz, .jac, .pt or .dat file, or a folder of them");
+    return {ViewFrame{fs::path(data).filename().string(), data}};
+  }
   const fs::path root = fs::canonical(data, ec);
   if (ec) throw Error("cannot read the folder \"" + data + "\": " + ec.message());
   std::vector<ViewFrame> frames;
@@ -84,6 +89,12 @@ ViewServer::ViewServer(std::vector<ViewFrame> frames, std::span<const ViewAsset>
       assets_(assets),
       rays_(std::move(scene_override)),
       server_(std::make_unique<httplib::Server>()) {
+  // SO_REUSEADDR only: cpp-httplib's default also sets SO_REUSEPORT, with which a second server
+  // (of this user) could bind the same port and receive part of the requests.
+  server_->set_socket_options([](socket_t sock) {
+    const int yes = 1;
+    setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   add_routes();
 }
 
@@ -104,6 +115,8 @@ int ViewServer::bind(int port) {
 }
 
 bool ViewServer::run() { return server_->listen_after_bind(); }
+
+void ViewServer::load_first_frame() { frame(0); }
 
 void ViewServer::stop() {
   if (server_) server_->stop();

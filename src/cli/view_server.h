@@ -45,6 +45,9 @@ class ViewServer {
   ViewServer(const ViewServer&) = delete;
   ViewServer& operator=(const ViewServer&) = delete;
 
+  /// Reads the first frame (so that a file that is no data file is refused before serving);
+  /// throws Error naming the file.
+  void load_first_frame();
   /// Binds 127.0.0.1:port (0 = a free port); returns the port. Throws Error when it cannot.
   int bind(int port);
   /// Serves until stop() (call from another thread). Returns false when listening failed.

@@ -127,6 +127,9 @@ TEST_F(ViewServerTest, ServesOnlyThePageAndTheNamedFrames) {
     EXPECT_EQ(r->body.find("outside"), std::string::npos);
     EXPECT_EQ(r->body.find("root:"), std::string::npos);
   }
+  // The port is this server's alone.
+  ViewServer second(frames, std::span<const ViewAsset>(kTestAssets));
+  EXPECT_THROW(second.bind(port_), Error);
   // A page from elsewhere reaching 127.0.0.1 through its own host name (DNS rebinding).
   auto evil = c.Get("/api/info", httplib::Headers{{"Host", "attacker.example:" + std::to_string(port_)}});
   ASSERT_TRUE(evil);
@@ -141,6 +144,7 @@ TEST_F(ViewServerTest, FolderOfFramesSortedWithoutTheImageOfAnExrRender) {
   for (const auto& f : frames) names.push_back(f.name);
   EXPECT_EQ(names, (std::vector<std::string>{"f_0001.exr", "f_0002.exr", "g.pdz", "img.data.exr"}));
   EXPECT_THROW(find_view_frames(path("missing")), Error);
+  EXPECT_THROW(find_view_frames(path("served/notes.txt")), Error);  // a single file must be a data file
   fs::create_directories(dir_ / "empty");
   EXPECT_THROW(find_view_frames(path("empty")), Error);
 }
