@@ -177,6 +177,7 @@ function showReadout(): void {
 async function loadFrame(index: number): Promise<void> {
   frame = await fetchFrame(index);
   view.setFrame(frame);
+  ui.mass.placeholder = frame.metadata['geovis:metric.mass'] || '1';  // what an empty field means
   ui.frame.value = String(index);
   ui.frameName.textContent = `${info.frames[index].name} (${index + 1}/${info.frames.length})`;
   fillSources();
