@@ -18,12 +18,18 @@ PACKAGES=(
   libopenmpi-dev openmpi-bin  # rendering on several MPI ranks (mpirun; optional)
   fonts-dejavu-core        # labels of geovis post --colorbar
   libtinyexr-dev           # tests: an OpenEXR reader independent of OpenImageIO for the data files
+  libcpp-httplib-dev       # geovis view: the local HTTP server
+  chromium                 # the viewer's browser tests (headless, driven by Playwright)
 )
 
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# geovis view builds its page (web/: TypeScript, vite, three.js) with npm at build time. Debian's
+# nodejs (18) and npm (9) do; a machine that already has Node.js with its own npm (e.g. from
+# NodeSource) keeps it: Debian's npm package would conflict with it.
+command -v npm > /dev/null || missing+=(nodejs npm)
 if ((${#missing[@]})); then
   SUDO=""
   [ "$(id -u)" -ne 0 ] && SUDO="sudo"

@@ -461,6 +461,7 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
     ss << text.rdbuf();
     scene_text = ss.str();
     data_info.scene_file = fs::path(a.scene).filename().string();
+    data_info.scene_path = fs::absolute(a.scene).lexically_normal().string();
   }
   data_info.scene_hash = fnv1a_hex(scene_text);
   print_warnings(diag, quiet, printed);

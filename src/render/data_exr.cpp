@@ -52,6 +52,7 @@ std::vector<std::pair<std::string, std::string>> header(const RenderJob& job, co
   add("format", "geovis data 1");
   add("version", info.version);
   add("scene.file", info.scene_file);
+  add("scene.path", info.scene_path);
   add("scene.hash", info.scene_hash);
   add("scene.defines", info.defines);
   add("frame", std::to_string(info.frame));

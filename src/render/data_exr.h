@@ -29,6 +29,7 @@ struct DataFileInfo {
   std::string scene_hash;  ///< FNV-1a 64 of the scene text, hex
   std::string defines;     ///< the --define overrides, "NAME=VALUE ..." (they change what the scene renders)
   int frame = 0;
+  std::string scene_path;  ///< absolute path of the scene file ("" for the built-in scene; `geovis view`)
 };
 
 /// FNV-1a 64-bit hash of `text` as 16 hex digits (scene identity in the header; not a security hash).

@@ -140,7 +140,12 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   point_lights_ = job.metric->name() == "Minkowski" && job.lights.shadows && !job.lights.lights.empty();
 }
 
-TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
+TraceResult Tracer::trace_direction(const Vec3& d, TraceStats& stats) const {
+  return trace_direction(d, stats, {});
+}
+
+TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats,
+                                    FunctionRef<void(const StepView&)> observe_step) const {
   TraceResult res;
   res.traced = true;
   ++stats.rays;
@@ -172,7 +177,8 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats) const {
   rs.job = &job_;
   rs.metric = &m;
   rs.scene = job_.scene.get();
-  auto on_step = [&rs](const StepView& st) -> StepAction {
+  auto on_step = [&rs, observe_step](const StepView& st) -> StepAction {
+    if (observe_step) observe_step(st);
     if (!rs.scene) return StepAction::Continue;
     const Metric& mm = *rs.metric;
     Segment seg;

@@ -53,6 +53,10 @@ class Tracer {
   /// Traces the ray leaving the observer in local direction `d` (need not be unit).
   TraceResult trace_direction(const Vec3& d, TraceStats& stats) const;
 
+  /// The same, and `on_step` sees every accepted step of the ray up to and including the step of
+  /// the hit, before the scene is tested on it (the viewer's ray, render/ray_path.h).
+  TraceResult trace_direction(const Vec3& d, TraceStats& stats, FunctionRef<void(const StepView&)> on_step) const;
+
   /// Hit refinement stops once the curved sub-step deviates from its chord by less than this
   /// fraction of the distance from the origin (plus an absolute floor of the same size).
   static constexpr double kRefineTolerance = 1e-9;
@@ -68,6 +72,8 @@ class Tracer {
   ///  - Escaped, BoundingBox, MaxSteps, LambdaMax (the ray escaped or ran out of budget): the
   ///    background.
   Color stop_color(StopReason reason) const;
+  /// The escape radius of the rays: the scene's bounding sphere (SolverConfig::escape_radius).
+  double escape_radius() const { return cfg_.escape_radius; }
   static constexpr int kMaxRefineLevels = 16;
 
  private:

@@ -68,6 +68,7 @@ TEST_F(PostCmd, DataFlagWritesTheExrAndPostMakesEveryPicture) {
   EXPECT_FALSE(fs::exists(path("disk.pdz")));  // no GeoViS file without a data filter
   const ChannelImage d = read_data_file(path("disk.exr"));
   EXPECT_EQ(d.meta("geovis:scene.file"), "disk.scm");
+  EXPECT_EQ(d.meta("geovis:scene.path"), fs::absolute(path("disk.scm")).lexically_normal().string());
   EXPECT_EQ(d.meta("geovis:scene.hash").size(), 16u);
   EXPECT_EQ(d.meta("geovis:version"), kVersion);
   EXPECT_EQ(d.meta("geovis:scene.defines"), "unused=1");
