@@ -94,9 +94,9 @@ NOTES = {
     "Minkowski": "flat: undistorted grid, ring as an ellipse (tilted 27 degrees)",
     "Schwarzschild": "black disk: the shadow (rays end at the horizon), radius asin(3 sqrt(3) M sqrt(1-2M/r)/r) = 14 degrees at r = 20 M; secondary ring images at its rim",
     "KerrBL": "shadow slightly flattened and shifted by the spin a = 0.5",
-    "MorrisThorne": "no horizon: through the throat the other universe's sky; the escaped rays (5%) are those that pass the throat and leave outward there",
-    "TeoSimpleWH": "like Morris-Thorne, dragged by the rotation; black: rays winding close to the throat exhaust the 3000-point budget (max-steps)",
-    "TeoWHl": "like TeoSimpleWH; black: rays winding close to the throat exhaust the 3000-point budget (max-steps)",
+    "MorrisThorne": "no horizon: the ring and, inside it, our sky seen around the throat; black centre: rays through the throat into the other universe (l < 0), which is empty (the objects are in chart 0, l > 0), where they escape",
+    "TeoSimpleWH": "like Morris-Thorne, twisted by the rotation; black centre: rays through the throat into the empty other universe (l < 0), which run out of the 3000-point budget there (max-steps; no escape test for this metric)",
+    "TeoWHl": "as TeoSimpleWH: black centre = rays through the throat into the empty other universe (max-steps)",
     "KastorTraschen": "two extreme RN holes (h = 0: static Majumdar-Papapetrou); black: rays falling towards the holes, whose horizons are points at infinite proper distance in these coordinates, exhaust the 3000-point budget (max-steps)",
     "AlcubierreWarpSimple": "the bubble (R = 1) is small at this distance: nearly flat view",
     "EinsteinRosenWaveWWB": "the cylindrical wave pulse (amplitude c = 1) strongly distorts the ring and sky; no black (no horizon)",
@@ -137,10 +137,13 @@ NOTES = {
     "Petrov_Type_D_BI_ES": "mostly black: rays run into the Killing horizons sin(theta) = 0 (g_tt = 0), where is_valid has no margin, so they end in step underflow (error, 38%) or creep along them (max-steps, 41%); the visible arches are sky and ring between them. The error stops are a code issue (a break margin is missing), the blackness is physical",
     "Petrov_Type_D_BII_ES": "all black: every ray runs into the Killing horizon r = 0 (g_tt = -z^2 sinh^2 r = 0) and ends in step underflow (error): is_valid has no margin at r = 0 (code issue; the ray's end there is physical)",
     "Petrov_Type_D_BIII_ES": "all black: every ray runs into the Rindler horizon r = 0 (g_tt = -z^2 r^2 = 0) and ends in step underflow (error, 93%): is_valid has no margin at r = 0 (code issue; the ray's end there is physical)",
-    "Petrov_Type_D_C_ES": "see image -- not yet looked at in detail",
+    "Petrov_Type_D_C_ES": "all black (max-steps): this chart's pseudo-Cartesian coordinates are (x, y, phi) and its e(1) is d/dphi, which the script's custom-chart rule (treat as spherical) does not know, so the camera looks along -phi at nothing -- OPEN: needs a viewing rule for this chart",
     "Pravda_C-Metric": "all black (horizon stops): the chart is x < -4.8 (G > 0, beyond the axis) and y < -0.9 (F > 0, outside the horizon), so the origin the camera looks at lies beyond the axis and the horizon; every ray ends there",
     "Pravda_C-Metric_Canonical_Coords": "A = 0.01: the holes are ~100 away along z; the ring appears cut into arches: the black region is where rays stop at the chart's edge -- not yet understood in detail",
 }
+
+
+KNOWN_TYPES = ("cartesian", "spherical", "cylinder", "custom")
 
 
 def pseudo_cartesian(pos, coord_type):
@@ -149,7 +152,7 @@ def pseudo_cartesian(pos, coord_type):
     _, a, b, c = pos
     if coord_type == "cylinder":
         return (a * math.cos(b), a * math.sin(b), c)
-    if coord_type in ("spherical", "custom"):
+    if coord_type in ("spherical", "custom") or coord_type not in KNOWN_TYPES:
         return (a * math.sin(b) * math.cos(c), a * math.sin(b) * math.sin(c), a * math.cos(b))
     return (a, b, c)
 
@@ -160,6 +163,8 @@ def view_position(m):
     if name in VIEW:
         p, sky, why = VIEW[name]
         return (list(p) if p is not None else pos), sky, why
+    if ctype not in KNOWN_TYPES:
+        return pos, None, "sample position (coordinate type %s unknown to this script)" % ctype
     # Default: move the sample point out along the same direction to distance GENERIC_DISTANCE
     # (never inwards), the metric's asymptotic region for the asymptotically flat ones.
     R = GENERIC_DISTANCE
@@ -199,6 +204,9 @@ def frame(pos, ctype):
     """Camera axes e1 (line of sight), e2, e3 (up) in the natural tetrad of the chart, and the
     observer's outward direction n and up direction u in pseudo-Cartesian coordinates."""
     p = pseudo_cartesian(pos, ctype)
+    if ctype not in KNOWN_TYPES:
+        # A chart this script does not know (e.g. prolate spheroidal): look along -e(1), up e(3).
+        return [-1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]
     if ctype in ("spherical", "custom"):
         # natural tetrad (e_r, e_theta, e_phi): n = e_r, up = -e_theta (north)
         n_loc, up_loc = [1.0, 0.0, 0.0], [0.0, -1.0, 0.0]
@@ -339,6 +347,7 @@ def main():
             if err is not None and pos != list(m["sample_position"]):
                 # e.g. a new metric whose chart does not reach the default viewing position
                 why = "sample position (default viewing position failed: %s)" % err
+                print(f"{name}: {fmt_pos(pos)} failed ({err}); rendering from the sample position")
                 pos, sky = list(m["sample_position"]), None
                 png, exr, err = render(geovis, m, pos, sky, tmp)
             if err is not None:
