@@ -139,7 +139,7 @@ NOTES = {
     "Petrov_Type_D_BIII_ES": "all black: every ray runs into the Rindler horizon r = 0 (g_tt = -z^2 r^2 = 0) and ends in step underflow (error, 93%): is_valid has no margin at r = 0 (code issue; the ray's end there is physical)",
     "Petrov_Type_D_C_ES": "all black (max-steps): this chart's pseudo-Cartesian coordinates are (x, y, phi) and its e(1) is d/dphi, which the script's custom-chart rule (treat as spherical) does not know, so the camera looks along -phi at nothing -- OPEN: needs a viewing rule for this chart",
     "Pravda_C-Metric": "all black (horizon stops): the chart is x < -4.8 (G > 0, beyond the axis) and y < -0.9 (F > 0, outside the horizon), so the origin the camera looks at lies beyond the axis and the horizon; every ray ends there",
-    "Pravda_C-Metric_Canonical_Coords": "A = 0.01: the holes are ~100 away along z; the ring appears cut into arches: the black region is where rays stop at the chart's edge -- not yet understood in detail",
+    "Pravda_C-Metric_Canonical_Coords": "A = 0.01: the two holes are about 1/A = 100 away along +-z, outside the view, so the view is nearly flat; the thin vertical seam through the centre lies on the z axis, presumably the conical singularity (strut/string) that accelerates the holes -- not checked in detail",
 }
 
 
