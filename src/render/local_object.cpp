@@ -157,7 +157,7 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
       }
       // Rotations turn the axes about the origin and boosts move it uniformly: the origin's
       // worldline is a straight line in the Cartesian Minkowski coordinates (= pseudo-Cartesian).
-      if (m.name() == "Minkowski") {
+      if (m.info().inertial_cartesian) {
         const Vec4 a = cv->at_coordinate_time(0.0).x, b = cv->at_coordinate_time(1.0).x;
         inertial_origin_ = true;
         origin_at_t0_ = {a[1], a[2], a[3]};

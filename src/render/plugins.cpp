@@ -223,7 +223,7 @@ SceneObjectPtr finish_primitive(const ParamSet& ps, BuildContext& ctx, std::shar
     auto metric = require_metric(ps, ctx, "motion");
     try {
       const bool pseudo_cartesian = std::string_view(motion->type_name()) == "ConstVelocity" &&
-                                    metric->name() != "Minkowski";
+                                    !metric->info().inertial_cartesian;
       if (pseudo_cartesian) {
         diag_of(ctx).warn(ps.loc(), ps.command(), "motion",
                           "the ConstVelocity motion \"" + ps.get_string("motion") + "\" is special-relativistic; in the " +

@@ -137,7 +137,7 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
       cfg_.escape_radius = std::sqrt(r2);  // +inf for unbounded objects
     }
   }
-  point_lights_ = job.metric->name() == "Minkowski" && job.lights.shadows && !job.lights.lights.empty();
+  point_lights_ = job.metric->info().inertial_cartesian && job.lights.shadows && !job.lights.lights.empty();
 }
 
 TraceResult Tracer::trace_direction(const Vec3& d, TraceStats& stats) const {

@@ -53,6 +53,10 @@ struct MetricInfo {
   Vec4 sample_pos{{0.0, 0.0, 0.0, 0.0}};
   /// Parameter values for which the spacetime is flat (e.g. mass = 0); empty where there are none.
   std::vector<std::pair<std::string, double>> flat_limit;
+  /// Capability: flat spacetime in inertial Cartesian coordinates, so light travels on the
+  /// straight lines x(t) = x0 + (t − t0) n̂ and special-relativistic motions (ConstVelocity) are
+  /// exact there (used for shadow rays and for inertial world tubes).
+  bool inertial_cartesian = false;
 };
 
 /// A function of one coordinate that Motion4D offers for some metrics (effective potential,
