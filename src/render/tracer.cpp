@@ -26,7 +26,6 @@ void screen_basis(const Vec3& n, Vec3& s1, Vec3& s2) {
 
 /// State of the hit search inside one accepted step.
 struct RayState {
-  const RenderJob* job;
   const Metric* metric;
   const SceneObject* scene;
   bool hit = false;
@@ -110,6 +109,171 @@ bool refine_hit(const StepView& st, const Segment& chord, const SceneObject& sce
   return true;
 }
 
+// ---- the steps of one ray (Tracer::trace_direction) ---------------------------------------------
+
+/// Start state: the observer's event and the past-directed null tangent k = −e_(0) + n^i e_(i)
+/// (paper eq. 7); for the Jacobi filter also the Sachs basis s_a ⟂ k, u_obs and the Jacobi fields
+/// Y_a(0) = 0, Y_a'(0) = s_a (a bundle with its vertex at the observer, jacobi.h). Returns k.
+Vec4 start_state(const Observer& obs, const Vec3& n, GeodesicSystem system, double* y) {
+  const Vec4 k0 = local_null_direction(obs.e, n, true);
+  for (int i = 0; i < 4; ++i) {
+    y[i] = obs.pos[i];
+    y[4 + i] = k0[i];
+  }
+  if (system == GeodesicSystem::Jacobi) {
+    Vec3 s1, s2;
+    screen_basis(n, s1, s2);
+    const Vec4 c1 = local_to_coord(obs.e, Vec4{{0, s1.x, s1.y, s1.z}});
+    const Vec4 c2 = local_to_coord(obs.e, Vec4{{0, s2.x, s2.y, s2.z}});
+    for (int i = 0; i < 4; ++i) {
+      y[kJacobiS1 + i] = c1[i];
+      y[kJacobiS2 + i] = c2[i];
+      y[kJacobiDY1 + i] = c1[i];
+      y[kJacobiDY2 + i] = c2[i];
+    }
+  }
+  return k0;
+}
+
+/// Hit search: integrates the ray and tests every accepted step's chord against the scene
+/// (pseudo-Cartesian segment, paper §2.3); a chord hit is refined on the curved step
+/// (refine_hit) and ends the integration. `observe_step` (may be empty) sees every step first.
+GeodesicResult search_hit(const Metric& m, const SolverConfig& cfg, GeodesicSystem system, double* y, RayState& rs,
+                          FunctionRef<void(const StepView&)> observe_step) {
+  auto on_step = [&rs, observe_step](const StepView& st) -> StepAction {
+    if (observe_step) observe_step(st);
+    if (!rs.scene) return StepAction::Continue;
+    const Metric& mm = *rs.metric;
+    Segment seg;
+    seg.x0 = vec4_at(st.y0);
+    seg.x1 = vec4_at(st.y1);
+    if (rs.have_prev) {
+      seg.p0 = rs.prev_p;
+      seg.chart0 = rs.prev_chart;
+    } else {
+      seg.chart0 = mm.to_pseudo_cartesian(seg.x0, seg.p0);
+    }
+    seg.chart1 = mm.to_pseudo_cartesian(seg.x1, seg.p1);
+    seg.step = &st;
+    seg.metric = &mm;
+    rs.prev_p = seg.p1;
+    rs.prev_chart = seg.chart1;
+    rs.have_prev = true;
+    Hit h;
+    if (!rs.scene->intersect(seg, h)) return StepAction::Continue;
+    rs.best = h;
+    if (!refine_hit(st, seg, *rs.scene, mm, rs.best, rs.frac)) return StepAction::Continue;
+    rs.hit = true;
+    rs.lambda0 = st.lambda0;
+    rs.lambda1 = st.lambda1;
+    rs.dim = st.dim;
+    for (int i = 0; i < st.dim; ++i) {
+      rs.y0[i] = st.y0[i];
+      rs.y1[i] = st.y1[i];
+      rs.dy0[i] = st.dy0[i];
+      rs.dy1[i] = st.dy1[i];
+    }
+    return StepAction::Stop;
+  };
+  return m.integrate(cfg, system, y, 0.0, on_step);
+}
+
+/// A ray without a hit ends where the integration stopped. With the Jacobi filter, the Jacobi
+/// fields ride along without acting on the ray, but they diverge at a horizon and can stop the
+/// step control before the ray reaches the metric's break radius; the ray's fate must not depend
+/// on the filter (GeoViS gives a ray that runs into the hole its constraint colour in every
+/// filter), so the geodesic alone, integrated again from `y_start`, decides how it ends.
+void end_without_hit(const Metric& m, const SolverConfig& cfg, GeodesicSystem system, const double* y,
+                     const double* y_start, const GeodesicResult& gr, TraceStats& stats, TraceResult& res) {
+  res.pos = vec4_at(y);
+  res.k = vec4_at(y + 4);
+  res.lambda = gr.lambda;
+  res.reason = gr.reason;
+  if (system == GeodesicSystem::Jacobi && (gr.reason == StopReason::StepUnderflow ||
+                                           gr.reason == StopReason::NotFinite || gr.reason == StopReason::MaxSteps)) {
+    double yg[kMaxSystemDim] = {};
+    for (int i = 0; i < 8; ++i) yg[i] = y_start[i];
+    const GeodesicResult g2 = m.integrate(cfg, GeodesicSystem::Geodesic, yg, 0.0, {});
+    stats.steps += g2.steps;
+    stats.rhs_evals += g2.rhs_evals;
+    res.reason = g2.reason;
+  }
+}
+
+/// Frequency ratio ω_src/ω_obs with ω = −g(p, u) for the future-directed photon momentum p = −k
+/// (e.g. Misner-Thorne-Wheeler eq. 2.34 / Catalogue of Spacetimes §1.3). The source moves with
+/// the object's emitter velocity, else on a Keplerian orbit where the object asks for it, else
+/// with the static observer; 0 where none exists (e.g. inside an ergoregion).
+double frequency_shift(const Metric& m, const Observer& obs, const Vec4& k0, const Hit& hit, const Vec4& pos,
+                       const Vec4& k) {
+  Mat4 g;
+  m.metric_tensor(obs.pos, g);
+  const double w_obs = dot(g, k0, obs.e[0]);  // = 1 for the normalised k of eq. 7
+  Vec4 u_src = hit.emitter_u;
+  bool have_u = !is_zero(u_src);
+  if (!have_u && hit.keplerian) {
+    have_u = circular_orbit_velocity(m, pos, u_src);  // false inside the photon orbit
+  } else if (!have_u) {
+    try {
+      u_src = m.natural_tetrad(pos, TetradKind::Default)[0];
+      have_u = true;
+    } catch (const Error&) {
+      have_u = false;  // no static observer there: no shift known
+    }
+  }
+  if (!have_u || w_obs == 0) return 0.0;
+  m.metric_tensor(pos, g);
+  return dot(g, k, u_src) / w_obs;
+}
+
+/// The Jacobi matrix J_ab = g(s_a, Y_b) at the hit, linearly interpolated inside the step (as
+/// GeoViS), and its lensing parameters (jacobi.h).
+void jacobi_at_hit(const Metric& m, const RayState& rs, TraceResult& res) {
+  double J[4], J0[4], J1[4];
+  jacobi_matrix(m, rs.y0, J0);
+  jacobi_matrix(m, rs.y1, J1);
+  for (int i = 0; i < 4; ++i) J[i] = J0[i] + rs.frac * (J1[i] - J0[i]);
+  for (int i = 0; i < 4; ++i) res.jacobi_matrix[i] = J[i];
+  const JacobiParams jp = jacobi_params(J, res.lambda);
+  res.jacobi[0] = jp.d_plus;
+  res.jacobi[1] = jp.d_minus;
+  res.jacobi[2] = jp.mu;
+  res.jacobi[3] = jp.angle;
+  res.jacobi[4] = jp.ellipticity;
+}
+
+/// Shading (paper §2.4) of the hit, with shadow rays to the point lights where light travels on
+/// straight lines (MetricInfo::inertial_cartesian) and the object is at rest.
+Color shade_hit(const RenderJob& job, bool point_lights, const Hit& hit, const Vec4& pos) {
+  if (!hit.shader) return Color{1, 1, 1};
+  const Metric& m = *job.metric;
+  if (point_lights && is_zero(hit.emitter_u)) {
+    // Flat inertial coordinates and an object at rest: the shadow ray is the straight light ray
+    // from the light to the hit point, arriving there at the hit's time t, traced backwards
+    // (GeoViS GvsSurfaceShader::reflLightColor: direction (−1, l̂)): it left the light at
+    // t − |l − p|, so moving objects cast their shadow from where they were when the light
+    // passed them.
+    const SceneObject* scene = job.scene.get();
+    const double t = pos[0];
+    auto visible = [scene, &m, t](const Vec3& p, const PointLight& light) -> bool {
+      const Vec3 lp{light.pos[1], light.pos[2], light.pos[3]};
+      const Vec3 dl = lp - p;
+      const double len = norm(dl);
+      if (!(len > 0)) return true;
+      // Start just off the surface so that the surface itself does not shadow the point.
+      const double eps = 1e-9 * (1.0 + norm(p)) + 1e-9 * len;
+      const Vec3 p0 = p + (eps / len) * dl;
+      Segment seg{Vec4{{t - eps, p0.x, p0.y, p0.z}}, Vec4{{t - len, lp.x, lp.y, lp.z}}, p0, lp, 0, 0, nullptr, &m};
+      Hit h;
+      return !(scene->intersect(seg, h) && h.s <= 1.0);
+    };
+    ShadeContext ctx{&job.lights, visible};
+    return hit.shader->shade(hit, ctx);
+  }
+  ShadeContext ctx{&job.lights, {}};
+  return hit.shader->shade(hit, ctx);
+}
+
 }  // namespace
 
 Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
@@ -150,93 +314,20 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats,
   res.traced = true;
   ++stats.rays;
   const Metric& m = *job_.metric;
-  const Observer& obs = job_.observer;
-  const Vec3 n = normalize(d_in);
-
   double y[kMaxSystemDim] = {};
-  const Vec4 k0 = local_null_direction(obs.e, n, true);
-  for (int i = 0; i < 4; ++i) {
-    y[i] = obs.pos[i];
-    y[4 + i] = k0[i];
-  }
-  if (system_ == GeodesicSystem::Jacobi) {
-    Vec3 s1, s2;
-    screen_basis(n, s1, s2);
-    const Vec4 c1 = local_to_coord(obs.e, Vec4{{0, s1.x, s1.y, s1.z}});
-    const Vec4 c2 = local_to_coord(obs.e, Vec4{{0, s2.x, s2.y, s2.z}});
-    // Y_b(0) = 0, Y_b'(0) = s_b: a bundle with its vertex at the observer (jacobi.h).
-    for (int i = 0; i < 4; ++i) {
-      y[kJacobiS1 + i] = c1[i];
-      y[kJacobiS2 + i] = c2[i];
-      y[kJacobiDY1 + i] = c1[i];
-      y[kJacobiDY2 + i] = c2[i];
-    }
-  }
+  const Vec4 k0 = start_state(job_.observer, normalize(d_in), system_, y);
+  double y_start[8];
+  for (int i = 0; i < 8; ++i) y_start[i] = y[i];
 
   RayState rs;
-  rs.job = &job_;
   rs.metric = &m;
   rs.scene = job_.scene.get();
-  auto on_step = [&rs, observe_step](const StepView& st) -> StepAction {
-    if (observe_step) observe_step(st);
-    if (!rs.scene) return StepAction::Continue;
-    const Metric& mm = *rs.metric;
-    Segment seg;
-    seg.x0 = vec4_at(st.y0);
-    seg.x1 = vec4_at(st.y1);
-    if (rs.have_prev) {
-      seg.p0 = rs.prev_p;
-      seg.chart0 = rs.prev_chart;
-    } else {
-      seg.chart0 = mm.to_pseudo_cartesian(seg.x0, seg.p0);
-    }
-    seg.chart1 = mm.to_pseudo_cartesian(seg.x1, seg.p1);
-    seg.step = &st;
-    seg.metric = &mm;
-    rs.prev_p = seg.p1;
-    rs.prev_chart = seg.chart1;
-    rs.have_prev = true;
-    Hit h;
-    if (!rs.scene->intersect(seg, h)) return StepAction::Continue;
-    rs.best = h;
-    if (!refine_hit(st, seg, *rs.scene, mm, rs.best, rs.frac)) return StepAction::Continue;
-    rs.hit = true;
-    rs.lambda0 = st.lambda0;
-    rs.lambda1 = st.lambda1;
-    rs.dim = st.dim;
-    for (int i = 0; i < st.dim; ++i) {
-      rs.y0[i] = st.y0[i];
-      rs.y1[i] = st.y1[i];
-      rs.dy0[i] = st.dy0[i];
-      rs.dy1[i] = st.dy1[i];
-    }
-    return StepAction::Stop;
-  };
-  double y0_ray[8];
-  for (int i = 0; i < 8; ++i) y0_ray[i] = y[i];
-  const GeodesicResult gr = m.integrate(cfg_, system_, y, 0.0, on_step);
+  const GeodesicResult gr = search_hit(m, cfg_, system_, y, rs, observe_step);
   stats.steps += gr.steps;
   stats.rhs_evals += gr.rhs_evals;
   res.reason = gr.reason;
-
   if (!rs.hit) {
-    res.pos = vec4_at(y);
-    res.k = vec4_at(y + 4);
-    res.lambda = gr.lambda;
-    res.reason = gr.reason;
-    if (system_ == GeodesicSystem::Jacobi && (gr.reason == StopReason::StepUnderflow ||
-                                              gr.reason == StopReason::NotFinite || gr.reason == StopReason::MaxSteps)) {
-      // The Jacobi fields ride along without acting on the ray, but they diverge at a horizon
-      // and can stop the step control before the ray reaches the metric's break radius. The
-      // ray's fate must not depend on the filter (GeoViS gives a ray that runs into the hole its
-      // constraint colour in every filter): the geodesic alone decides how it ends.
-      double yg[kMaxSystemDim] = {};
-      for (int i = 0; i < 8; ++i) yg[i] = y0_ray[i];
-      const GeodesicResult g2 = m.integrate(cfg_, GeodesicSystem::Geodesic, yg, 0.0, {});
-      stats.steps += g2.steps;
-      stats.rhs_evals += g2.rhs_evals;
-      res.reason = g2.reason;
-    }
+    end_without_hit(m, cfg_, system_, y, y_start, gr, stats, res);
     res.color = stop_color(res.reason);
     return res;
   }
@@ -247,77 +338,9 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats,
   const StepView st{rs.lambda0, rs.lambda1, rs.y0, rs.y1, rs.dy0, rs.dy1, rs.dim, 0};
   hermite_interpolate(st, rs.frac, res.pos, res.k);
   res.lambda = rs.lambda0 + rs.frac * (rs.lambda1 - rs.lambda0);
-
-  // Frequency ratio ω_src/ω_obs with ω = −g(p, u) for the future-directed photon momentum
-  // p = −k (e.g. Misner-Thorne-Wheeler eq. 2.34 / Catalogue of Spacetimes §1.3).
-  {
-    Mat4 g;
-    m.metric_tensor(obs.pos, g);
-    const double w_obs = dot(g, k0, obs.e[0]);  // = 1 for the normalised k of eq. 7
-    Vec4 u_src = rs.best.emitter_u;
-    bool have_u = !is_zero(u_src);
-    if (!have_u && rs.best.keplerian) {
-      have_u = circular_orbit_velocity(m, res.pos, u_src);  // false inside the photon orbit
-    } else if (!have_u) {
-      try {
-        u_src = m.natural_tetrad(res.pos, TetradKind::Default)[0];
-        have_u = true;
-      } catch (const Error&) {
-        have_u = false;  // no static observer there (e.g. inside an ergoregion): no shift known
-      }
-    }
-    if (have_u && w_obs != 0) {
-      m.metric_tensor(res.pos, g);
-      res.freqshift = dot(g, res.k, u_src) / w_obs;
-    }
-  }
-  if (system_ == GeodesicSystem::Jacobi) {
-    // J and λ at the hit, linearly interpolated inside the step (as GeoViS).
-    double J[4], J0[4], J1[4];
-    jacobi_matrix(m, rs.y0, J0);
-    jacobi_matrix(m, rs.y1, J1);
-    for (int i = 0; i < 4; ++i) J[i] = J0[i] + rs.frac * (J1[i] - J0[i]);
-    for (int i = 0; i < 4; ++i) res.jacobi_matrix[i] = J[i];
-    const JacobiParams jp = jacobi_params(J, res.lambda);
-    res.jacobi[0] = jp.d_plus;
-    res.jacobi[1] = jp.d_minus;
-    res.jacobi[2] = jp.mu;
-    res.jacobi[3] = jp.angle;
-    res.jacobi[4] = jp.ellipticity;
-  }
-
-  // Shading (paper §2.4).
-  const Hit& hit = rs.best;
-  if (!hit.shader) {
-    res.color = Color{1, 1, 1};
-    return res;
-  }
-  const bool at_rest = is_zero(hit.emitter_u);
-  if (point_lights_ && at_rest) {
-    // Minkowski and an object at rest: the shadow ray is the straight light ray from the light to
-    // the hit point, arriving there at the hit's time t, traced backwards (GeoViS
-    // GvsSurfaceShader::reflLightColor: direction (−1, l̂)): it left the light at t − |l − p|,
-    // so moving objects cast their shadow from where they were when the light passed them.
-    const SceneObject* scene = job_.scene.get();
-    const double t = res.pos[0];
-    auto visible = [scene, &m, t](const Vec3& p, const PointLight& light) -> bool {
-      const Vec3 lp{light.pos[1], light.pos[2], light.pos[3]};
-      const Vec3 dl = lp - p;
-      const double len = norm(dl);
-      if (!(len > 0)) return true;
-      // Start just off the surface so that the surface itself does not shadow the point.
-      const double eps = 1e-9 * (1.0 + norm(p)) + 1e-9 * len;
-      const Vec3 p0 = p + (eps / len) * dl;
-      Segment seg{Vec4{{t - eps, p0.x, p0.y, p0.z}}, Vec4{{t - len, lp.x, lp.y, lp.z}}, p0, lp, 0, 0, nullptr, &m};
-      Hit h;
-      return !(scene->intersect(seg, h) && h.s <= 1.0);
-    };
-    ShadeContext ctx{&job_.lights, visible};
-    res.color = hit.shader->shade(hit, ctx);
-  } else {
-    ShadeContext ctx{&job_.lights, {}};
-    res.color = hit.shader->shade(hit, ctx);
-  }
+  res.freqshift = frequency_shift(m, job_.observer, k0, rs.best, res.pos, res.k);
+  if (system_ == GeodesicSystem::Jacobi) jacobi_at_hit(m, rs, res);
+  res.color = shade_hit(job_, point_lights_, rs.best, res.pos);
   return res;
 }
 
