@@ -614,6 +614,23 @@ void* dispatch_catching(void* data) {
   return nullptr;
 }
 
+// Runs the C++ work of a primitive so that no C++ exception crosses Guile frames: an exception is
+// stored and re-raised in Scheme as 'geovis-error once `body`'s frames are gone (this frame holds
+// nothing with a destructor).
+template <class Body>
+SCM guarded(Body&& body) {
+  SCM result = SCM_UNSPECIFIED;
+  bool failed = false;
+  try {
+    result = body();
+  } catch (...) {
+    context().pending = std::current_exception();
+    failed = true;
+  }
+  if (failed) raise_pending_in_scheme();
+  return result;
+}
+
 // (%gv-call name locs args). The command runs with asyncs blocked, so that the time limit
 // (an async, scheme.cpp) never unwinds through its C++ frames.
 SCM gv_call(SCM name, SCM locs, SCM args) {
@@ -694,9 +711,7 @@ fs::path find_load_file(const EvalContext& ctx, const std::string& name, const S
 
 // (%gv-enter-file file) -> resolved path; relative paths are relative to the loading file.
 SCM gv_enter_file(SCM file) {
-  bool failed = false;
-  SCM result = SCM_BOOL_F;
-  try {
+  return guarded([&]() -> SCM {
     EvalContext& ctx = context();
     const SourceLoc loc = current_form_loc();
     if (!scm_is_string(file))
@@ -709,13 +724,8 @@ SCM gv_enter_file(SCM file) {
     std::string dir = p.parent_path().string();
     if (dir.empty()) dir = ".";
     ctx.files.push_back(FileFrame{resolved, dir, 0});
-    result = scm_from_utf8_stringn(resolved.data(), resolved.size());
-  } catch (...) {
-    context().pending = std::current_exception();
-    failed = true;
-  }
-  if (failed) raise_pending_in_scheme();
-  return result;
+    return scm_from_utf8_stringn(resolved.data(), resolved.size());
+  });
 }
 
 SCM gv_leave_file() {
@@ -725,45 +735,29 @@ SCM gv_leave_file() {
 
 SCM gv_note_define(SCM name) {
   if (!scm_is_string(name)) return SCM_UNSPECIFIED;
-  bool failed = false;
-  try {
+  return guarded([&] {
     auto& defs = context().defines;
     std::string n = to_std(name);
     if (std::find(defs.begin(), defs.end(), n) == defs.end()) defs.push_back(std::move(n));
-  } catch (...) {
-    context().pending = std::current_exception();
-    failed = true;
-  }
-  if (failed) raise_pending_in_scheme();
-  return SCM_UNSPECIFIED;
+    return SCM_UNSPECIFIED;
+  });
 }
 
 SCM gv_note_override_used(SCM name) {
   if (!scm_is_string(name)) return SCM_UNSPECIFIED;
-  bool failed = false;
-  try {
+  return guarded([&] {
     context().used_overrides.insert(to_lower(to_std(name)));
-  } catch (...) {
-    context().pending = std::current_exception();
-    failed = true;
-  }
-  if (failed) raise_pending_in_scheme();
-  return SCM_UNSPECIFIED;
+    return SCM_UNSPECIFIED;
+  });
 }
 
 // (%gv-define-error name text message): a --define VALUE that is not one Scheme datum.
 SCM gv_define_error(SCM name, SCM text, SCM message) {
-  bool failed = false;
-  try {
+  return guarded([&]() -> SCM {
     throw Error("--define " + (scm_is_string(name) ? to_std(name) : std::string("?")) + "=" +
                 (scm_is_string(text) ? to_std(text) : std::string("?")) + ": " +
                 (scm_is_string(message) ? to_std(message) : std::string("invalid value")));
-  } catch (...) {
-    context().pending = std::current_exception();
-    failed = true;
-  }
-  if (failed) raise_pending_in_scheme();
-  return SCM_UNSPECIFIED;
+  });
 }
 
 }  // namespace
