@@ -617,6 +617,7 @@ TEST(MetricsCatalogue, PravdaCanonicalConservesBoostAndRotationCharges) {
     EXPECT_GT(steps, 20);
     EXPECT_LT(worst, 1e-8);
   }
+}
 
 namespace {
 
