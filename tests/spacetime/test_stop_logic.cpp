@@ -80,6 +80,12 @@ TEST(StopLogic, EveryHorizonMetricStopsAFallingRayPromptly) {
       {"Kottler", {}, Vec4{{0, 4, 1.1, 0.3}}, Vec3{-1, 0, 0.1}},
       {"TaubNUT", {}, Vec4{{0, 10, 1.1, 0.3}}, Vec3{-1, 0, 0}},
       {"Ernst", {}, Vec4{{0, 6, 1.1, 0.3}}, Vec3{-1, 0, 0}},
+      // Killing horizons of the Ehlers–Kundt B metrics (g_tt = 0 at sin θ = 0, r = 0, r = 0) and the
+      // C-metric's horizon G(y) = 0: without a break margin these rays ended in step underflow.
+      {"Petrov_Type_D_BI_ES", {}, Vec4{{0, 6, 1.1, 0}}, Vec3{0, -1, 0}},
+      {"Petrov_Type_D_BII_ES", {}, Vec4{{0, 2, 0, 0.9}}, Vec3{-1, 0, 0}},
+      {"Petrov_Type_D_BIII_ES", {}, Vec4{{0, 2, 0, 0.9}}, Vec3{-1, 0, 0}},
+      {"Petrov_Type_D_C_ES", {}, Vec4{{0, 0, 1, 1.5}}, Vec3{0, 0, -1}},
   };
   for (const Case& c : cases) {
     auto m = make_metric(c.name, c.params);
