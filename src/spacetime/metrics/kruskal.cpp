@@ -196,6 +196,21 @@ class Kruskal final : public MetricCRTP<Kruskal> {
     return x[1] >= 0.0 ? 0 : 1;
   }
 
+  /// ∂p/∂(X, θ, φ) at fixed T: p = r(T, X) (sinθ cosφ, sinθ sinφ, cosθ) with the areal radius, so
+  /// the X column is ∂_X r = 2X q, q = r_s² e^(−r/r_s)/r (file comment), times the radial unit
+  /// vector (the default spherical Jacobian would take X for r).
+  bool pseudo_cartesian_jacobian(const Vec4& x, double J[3][3]) const override {
+    const double r = areal_radius(x[0], x[1]);
+    const double drdX = 2.0 * x[1] * rs_ * rs_ * std::exp(-r / rs_) / r;
+    const double st = std::sin(x[2]), ct = std::cos(x[2]), sp = std::sin(x[3]), cp = std::cos(x[3]);
+    const double j[3][3] = {{drdX * st * cp, r * ct * cp, -r * st * sp},
+                            {drdX * st * sp, r * ct * sp, r * st * cp},
+                            {drdX * ct, -r * st, 0.0}};
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) J[i][k] = j[i][k];
+    return true;
+  }
+
   /// T is kept; X = ±√(T² + u(r)), u = (r/r_s − 1) e^(r/r_s), on the side of the chart.
   Vec4 from_pseudo_cartesian(double T, const Vec3& p, int chart) const override {
     const double r = norm(p);
