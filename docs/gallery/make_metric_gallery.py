@@ -2,10 +2,12 @@
 """Renders one thumbnail per registered metric into docs/gallery/metrics/ and writes the contact sheet
 docs/gallery/metrics/README.md (issue #15, item 5).
 
-    nice -n 10 docs/gallery/make_metric_gallery.py [GEOVIS] [--only NAME,NAME,...]
+    nice -n 10 docs/gallery/make_metric_gallery.py [GEOVIS] [--only NAME,NAME,... [--update-sheet]]
 
 GEOVIS is the geovis binary (default $GEOVIS, else build/geovis). `--only` re-renders some metrics
-(for looking at a set-up); the contact sheet is then not rewritten.
+(for looking at a set-up); the contact sheet is then not rewritten, unless --update-sheet is given:
+then the rows of the re-rendered metrics are replaced (new metrics added in registry order) and the
+other rows are kept as they are, with their notes refreshed from NOTES.
 
 The same set-up for every metric (names, coordinate types, parameters and sample positions come from
 `geovis metrics --json`, so metrics added later are rendered too):
@@ -66,10 +68,10 @@ VIEW = {
     "FriedmanNonEmptyNull": ((200.0, 20.0, math.pi / 2, 0.0), None, "chi = 200: particle horizon beyond the sky"),
     "SultanaDyerBlackhole": ((200.0, 20.0, math.pi / 2, 0.0), None, "t = 200: particle horizon beyond the sky"),
     # Kruskal X = 100 is Schwarzschild r = 14.6 M at T = 0 ((r/2M - 1) e^(r/2M) = X^2 - T^2).
-    # Kruskal: X = 20 at T = 0 is r = 8.6 M ((r/2M - 1) e^(r/2M) = X^2 - T^2); the objects are
+    # Kruskal: X = 20 at T = 0 is r = 9.37 M ((r/2M - 1) e^(r/2M) = X^2 - T^2); the objects are
     # placed by areal radius (Kruskal::to_pseudo_cartesian), and the sky at r = 12 M (X = 45), since
     # X grows like e^(r/4M) and rays to a farther sky exhaust the 3000-point budget.
-    "Kruskal": ((0.0, 20.0, math.pi / 2, 0.0), 12.0, "X = 20 (r = 8.6 M), sky at r = 12 M"),
+    "Kruskal": ((0.0, 20.0, math.pi / 2, 0.0), 12.0, "X = 20 (r = 9.37 M), sky at r = 12 M"),
     # Goedel: light from an observer never gets farther than the Goedel radius r_G = 2a (rg in the
     # scaled charts) from him; observer at r_G / 2.
     "Goedel": ((0.0, 1.0, 0.0, 0.0), None, "r = r_G / 2"),
@@ -86,6 +88,12 @@ VIEW = {
     "Petrov_Type_D_BIII_ES": (None, None, "sample position"),
     "Petrov_Type_D_C_ES": (None, None, "sample position"),
     "Pravda_C-Metric": (None, None, "sample position"),
+    # SchwarzschildGravWave (epsilon = 0.1, sigma = 1): g_tt = -f (1 + epsilon X cos(sigma t)) with
+    # epsilon X ~ -0.1 r far out, so the line element keeps its signature at every t only for
+    # epsilon |X| < 1, r < 8.8 M (schwarzschild_grav_wave.cpp is_valid); the rays run back through
+    # all phases of the wave, so observer and sky must lie inside.
+    "SchwarzschildGravWave": ((0.0, 8.0, math.pi / 2, 0.0), 8.5, "r = 8 (epsilon |X| < 1 needs r < 8.8 M), sky at r = 8.5"),
+    "Petrov_Type_D_C_ES": (None, None, "sample position, looking along +y (CUSTOM_FRAMES)"),
 }
 
 # One line per metric, written after looking at its thumbnail: what the image shows and, for black
@@ -129,27 +137,62 @@ NOTES = {
     "Petrov_Type_D_AII_ES": "all black (horizon stops): the static region is the slab 0 < z < b = 1 between the singularity z = 0 and the horizon z = b; the sky sphere (radius 20) and most of the ring lie outside it, and every ray leaves the slab first",
     "ExtremeReissnerNordstromDihole": "two extreme RN holes at z = +-1 merge into one double shadow",
     "SchwarzschildWT": "spatial Schwarzschild times flat time: much weaker bending than Schwarzschild (no g_tt), a small black region = rays reaching the throat r = 2M",
-    "Kruskal": "black: 90% of the rays stop at the 3000-point budget (max-steps) although `geovis geodesic` shows the same rays crossing r = 12 M (the sky) within 150 steps: a missed sky hit, suspected in the hit refinement (r from X^2 - T^2 at Hermite-interpolated points cancels catastrophically near X = -T) -- OPEN, a bug report for the lead",
+    "Kruskal": "black: the shadow, 29.5 degrees in radius from r = 9.37 M, fills most of the view; its rays, traced back, cross the past horizon X = -T into the white hole and stop at the singularity break u + 1 < horizon_eps (horizon); sky and ring only in the corners; 4% of the rays still run out of points (max-steps; not analysed)",
     "VaidyaIncRad": "all black: every inward ray traced back meets the apparent horizon r = 2 m(v), and m(v) = k s^(1/3) tanh^2(sigma s) grows without bound into the past (s = -v), so the mass always fills the field of view",
     "SultanaDyerBlackhole": "at t = 200 like Schwarzschild (conformally related, null geodesics coincide)",
     "FriedmanNonEmptyNull": "k = 0, conformal time chi = 200: flat-space view (conformally flat)",
     "Petrov_Type_D_AIII_ES": "sample position: no ring in view; the grid converges towards the singular axis -- not yet understood in detail",
-    "Petrov_Type_D_BI_ES": "mostly black: rays run into the Killing horizons sin(theta) = 0 (g_tt = 0), where is_valid has no margin, so they end in step underflow (error, 38%) or creep along them (max-steps, 41%); the visible arches are sky and ring between them. The error stops are a code issue (a break margin is missing), the blackness is physical",
-    "Petrov_Type_D_BII_ES": "all black: every ray runs into the Killing horizon r = 0 (g_tt = -z^2 sinh^2 r = 0) and ends in step underflow (error): is_valid has no margin at r = 0 (code issue; the ray's end there is physical)",
-    "Petrov_Type_D_BIII_ES": "all black: every ray runs into the Rindler horizon r = 0 (g_tt = -z^2 r^2 = 0) and ends in step underflow (error, 93%): is_valid has no margin at r = 0 (code issue; the ray's end there is physical)",
-    "Petrov_Type_D_C_ES": "all black (max-steps): this chart's pseudo-Cartesian coordinates are (x, y, phi) and its e(1) is d/dphi, which the script's custom-chart rule (treat as spherical) does not know, so the camera looks along -phi at nothing -- OPEN: needs a viewing rule for this chart",
+    "Petrov_Type_D_BI_ES": "mostly black: the rays run into the Killing horizons sin(theta) = 0 (g_tt = 0) and stop at the break margin sin^2(theta) < horizon_eps (horizon); the visible arches are sky and ring between them. The blackness is physical",
+    "Petrov_Type_D_BII_ES": "all black: every ray runs into the Killing horizon r = 0 (g_tt = -z^2 sinh^2 r = 0) and stops at the break margin sinh^2 r < horizon_eps (horizon); the ray's end there is physical",
+    "Petrov_Type_D_BIII_ES": "all black: every ray runs into the Rindler horizon r = 0 (g_tt = -z^2 r^2 = 0) and stops at the break margin r^2 < horizon_eps (horizon); the ray's end there is physical",
+    "Petrov_Type_D_C_ES": "own viewing rule (CUSTOM_FRAMES: camera along +y, away from the horizon G = 0 at y = 1.32, scene centred at y = 4.5): only the ring's centre is seen, small, in the middle; every other ray ends at an edge of the static region (f, G < horizon_eps or x + y = 0: horizon) before the sky -- which edge was not analysed",
     "Pravda_C-Metric": "all black (horizon stops): the chart is x < -4.8 (G > 0, beyond the axis) and y < -0.9 (F > 0, outside the horizon), so the origin the camera looks at lies beyond the axis and the horizon; every ray ends there",
     "Pravda_C-Metric_Canonical_Coords": "A = 0.01: the two holes are about 1/A = 100 away along +-z, outside the view, so the view is nearly flat; the thin vertical seam through the centre lies on the z axis, presumably the conical singularity (strut/string) that accelerates the holes -- not checked in detail",
+    "SchwarzschildGravWave": "from r = 8 (the wave keeps the signature at all times only for r < 8.8 M): the black disk is the Schwarzschild shadow (horizon stops), of the ring (r = 1.6 .. 2.8) only the outer part shows around it; the l = 0 wave is a gauge ripple (Birkhoff), and the picture looks like Schwarzschild's",
+    "PlaneGravWave": "nearly flat view from x = 20: undistorted sky grid, the ring seen as a flat band -- not analysed in detail",
+    "BesselGravWaveCart": "Einstein-Rosen cylindrical Bessel wave (C = 1) from x = 20: the sky is strongly sheared into bands around the horizon line, and the ring is squeezed into a thin line; no black (no horizon). Identical to HalilsoyWave with alpha = 0",
+    "HalilsoyWave": "alpha = 0 is the Einstein-Rosen Bessel wave: the same picture as BesselGravWaveCart (cylindrical chart, same event)",
+    "Bonnor": "Bonnor's massive magnetic dipole (m = 1, b = 0.1): a round black region (44% of the rays stop at its break condition, horizon) inside the lensed ring, larger than Schwarzschild's 14-degree shadow at this distance -- not analysed further",
+    "AlcubierreWarp": "the bubble (R = 1, sigma = 8, v_s = 1) at the origin, seen from y = -20: ring and grid as in flat space at this resolution",
+    "ChazyCurzonRot": "rotating Chazy-Curzon (p = 0.5) from rho = 20 on the equator: the sky and ring are swirled by the rotation around a small black core (2% max-steps: rays approaching the singular source)",
+    "TomimatsuSato": "delta = 2 (p = 0.5, q = 0.87, M = 1.73), first render of the prolate spheroidal chart (x = 46.2, y = 0.5: distance 20, 60 degrees from the axis): a black region shifted sideways by the rotation (39% stop at the break, horizon), the ring lensed around it",
+    "Glampedakis": "default a = 0, epsilon = 0 is Schwarzschild: the same 14-degree shadow",
+    "HartleThorneGB": "default a = 0, eta = 0 is Schwarzschild: the same 14-degree shadow",
+    "ErezRosenVar": "quadrupole q = 0.1: indistinguishable from Schwarzschild at this resolution (20% of the rays end at the break, as there)",
 }
 
 
-KNOWN_TYPES = ("cartesian", "spherical", "cylinder", "custom")
+KNOWN_TYPES = ("cartesian", "spherical", "cylinder", "prolatespheroidal", "custom")
+
+# Charts whose natural tetrad and pseudo-Cartesian coordinates need their own camera (the generic
+# rules below treat a custom chart as spherical). Each entry gives, in the metric's default natural
+# tetrad, the camera axes e1 (line of sight), e2, e3 (up), and in pseudo-Cartesian coordinates the
+# point the camera looks at (the centre of sky and ring), the observer's direction n from it and the
+# up direction u.
+#  * Petrov_Type_D_C_ES: coordinates (t, phi, x, y), pseudo-Cartesian (x, y, phi)
+#    (petrov_type_d_c_es.cpp), tetrad e(1) = d/dphi, e(2) = d/dx, e(3) = d/dy. The static region is
+#    x + y > 0, f(x) = x^3 - x + 1 > 0 (x > -1.32), G(y) = y^3 - y - 1 > 0 (y > 1.32): the origin
+#    (y = 0) lies outside it. From the sample position (x, y) = (1, 1.5) the camera looks along +y
+#    (away from the horizon G = 0 at y = 1.32, e(3)), up +x (e(2)), at the point y = 4.5 ahead.
+CUSTOM_FRAMES = {
+    "Petrov_Type_D_C_ES": dict(e1=[0.0, 0.0, 1.0], e2=[-1.0, 0.0, 0.0], e3=[0.0, 1.0, 0.0],
+                               center=[1.0, 4.5, 0.0], n=[0.0, -1.0, 0.0], u=[1.0, 0.0, 0.0]),
+}
 
 
-def pseudo_cartesian(pos, coord_type):
+def param_default(metric, name):
+    return next(p["default"] for p in metric["params"] if p["name"] == name)
+
+
+def pseudo_cartesian(pos, coord_type, metric=None):
     """The observer's spatial point in pseudo-Cartesian coordinates (as Metric::to_pseudo_cartesian
     for the standard coordinate types; custom charts are treated as spherical)."""
     _, a, b, c = pos
+    if coord_type == "prolatespheroidal":
+        # (x, y, phi) with foci z = +-k (tomimatsu_sato.cpp): rho = k sqrt((x^2 - 1)(1 - y^2)), z = k x y
+        k = param_default(metric, "k")
+        rho = k * math.sqrt(max(0.0, (a * a - 1.0) * (1.0 - b * b)))
+        return (rho * math.cos(c), rho * math.sin(c), k * a * b)
     if coord_type == "cylinder":
         return (a * math.cos(b), a * math.sin(b), c)
     if coord_type in ("spherical", "custom") or coord_type not in KNOWN_TYPES:
@@ -168,6 +211,14 @@ def view_position(m):
     # Default: move the sample point out along the same direction to distance GENERIC_DISTANCE
     # (never inwards), the metric's asymptotic region for the asymptotically flat ones.
     R = GENERIC_DISTANCE
+    if ctype == "prolatespheroidal":
+        # keep y (the polar angle's cosine far out) and phi, move x out to distance R:
+        # |p|^2 = k^2 (x^2 - 1 + y^2)
+        k = param_default(m, "k")
+        x = math.sqrt((R / k) ** 2 + 1.0 - pos[2] ** 2)
+        if pos[1] < x:
+            pos[1] = x
+        return pos, None, "default: x moved out to %.4g (distance %g)" % (pos[1], R)
     if ctype in ("spherical", "custom"):
         if pos[1] < R:
             pos[1] = R
@@ -200,14 +251,24 @@ def dot(a, b):
     return sum(x * y for x, y in zip(a, b))
 
 
-def frame(pos, ctype):
+def frame(pos, ctype, metric=None):
     """Camera axes e1 (line of sight), e2, e3 (up) in the natural tetrad of the chart, and the
     observer's outward direction n and up direction u in pseudo-Cartesian coordinates."""
-    p = pseudo_cartesian(pos, ctype)
+    p = pseudo_cartesian(pos, ctype, metric)
     if ctype not in KNOWN_TYPES:
         # A chart this script does not know (e.g. prolate spheroidal): look along -e(1), up e(3).
         return [-1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]
-    if ctype in ("spherical", "custom"):
+    if ctype == "prolatespheroidal":
+        # natural tetrad (e_x, e_y, e_phi) (tomimatsu_sato.cpp): x grows outwards and y towards +z
+        # (y is cos(theta) far out), so n = e_x, up = +e_y
+        k = param_default(metric, "k")
+        x, y, ph = pos[1], pos[2], pos[3]
+        rho = math.sqrt(max(1e-300, (x * x - 1.0) * (1.0 - y * y)))
+        n_loc, up_loc = [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]
+        n = unit(p)
+        drho_dy = -k * y * (x * x - 1.0) / rho
+        u = unit([drho_dy * math.cos(ph), drho_dy * math.sin(ph), k * x])
+    elif ctype in ("spherical", "custom"):
         # natural tetrad (e_r, e_theta, e_phi): n = e_r, up = -e_theta (north)
         n_loc, up_loc = [1.0, 0.0, 0.0], [0.0, -1.0, 0.0]
         th, ph = pos[2], pos[3]
@@ -238,15 +299,19 @@ def vec(v):
 
 def scene(metric, pos, sky_override):
     ctype = metric["coordinate_type"]
-    p = pseudo_cartesian(pos, ctype)
-    d = math.sqrt(sum(v * v for v in p))
+    p = pseudo_cartesian(pos, ctype, metric)
+    custom = CUSTOM_FRAMES.get(metric["name"])
+    center = tuple(custom["center"]) if custom else (0.0, 0.0, 0.0)
+    d = math.sqrt(sum((v - c) ** 2 for v, c in zip(p, center)))
     sky = sky_override if sky_override else max(20.0, 4.0 * d)
     if d == 0:  # a chart whose sample point this helper maps to the origin (custom chart)
         d = 5.0
-    e1, e2, e3, n, u = frame(pos, ctype)
+    if custom:
+        e1, e2, e3, n, u = custom["e1"], custom["e2"], custom["e3"], custom["n"], custom["u"]
+    else:
+        e1, e2, e3, n, u = frame(pos, ctype, metric)
     # ring normal: the line of sight tilted by atan(0.5) = 27 degrees towards "up"
     normal = unit([a + 0.5 * b for a, b in zip(n, u)])
-    center = (0.0, 0.0, 0.0)
     return f"""
 (init-metric '(type "{metric['name']}") '(id "metric"))
 (init-solver '(type "GSL_RK_Cash-Karp") '(geodType "lightlike") '(eps_abs 1.0e-6) '(step_size 0.01)
@@ -267,7 +332,7 @@ def scene(metric, pos, sky_override):
              `(objcolor ,(init-texture '(type "CheckerT2D") '(texture "skyDark") '(texture "skyLight")
                                        `(transform ,(scale-obj #(36.0 18.0)))))
              '(ambient 1.0) '(id "skyShader"))
-(solid-ellipsoid `(objtype ,gpObjTypeInCoords) '(center #(0.0 0.0 0.0)) '(axlen #({sky} {sky} {sky}))
+(solid-ellipsoid `(objtype ,gpObjTypeInCoords) '(center #({vec(center)})) '(axlen #({sky} {sky} {sky}))
                  '(shader "skyShader") '(id "sky"))
 (init-texture '(type "UniTex") '(color #(0.9 0.55 0.1)) '(id "ringA"))
 (init-texture '(type "UniTex") '(color #(0.95 0.9 0.7)) '(id "ringB"))
@@ -325,6 +390,9 @@ def fmt_pos(pos):
 def main():
     args = sys.argv[1:]
     only = None
+    update_sheet = "--update-sheet" in args
+    if update_sheet:
+        args.remove("--update-sheet")
     if "--only" in args:
         i = args.index("--only")
         only = set(args[i + 1].split(","))
@@ -371,11 +439,41 @@ def main():
             if os.path.basename(f)[:-4] not in names:
                 os.remove(f)
         write_sheet(rows)
+    elif update_sheet:
+        write_sheet(rows, metrics)
     if bad:
         sys.exit("make_metric_gallery.py: NaN pixels or failed renders: " + ", ".join(bad))
 
 
-def write_sheet(rows):
+def read_sheet_rows():
+    """{metric name: table cells} of the current contact sheet."""
+    cells = {}
+    path = os.path.join(OUT, "README.md")
+    if not os.path.exists(path):
+        return cells
+    with open(path) as f:
+        for line in f:
+            if not line.startswith("| ") or line.startswith("| image"):
+                continue
+            c = line.rstrip("\n").strip().strip("|").split(" | ")
+            if len(c) == 6 and c[1].startswith("`"):
+                cells[c[1].strip("` ")] = [x.strip() for x in c]
+    return cells
+
+
+def write_sheet(rows, metrics=None):
+    """The contact sheet from `rows`; with `metrics` (a partial run) the rows of the other metrics
+    are taken from the current sheet, in the registry's order."""
+    old = read_sheet_rows() if metrics is not None else {}
+    if metrics is not None:
+        new = {r[0]["name"]: r for r in rows}
+        merged = []
+        for m in metrics:
+            if m["name"] in new:
+                merged.append(new[m["name"]])
+            elif m["name"] in old:
+                merged.append((m, None, None, None, old[m["name"]]))
+        rows = merged
     with open(os.path.join(OUT, "README.md"), "w") as f:
         f.write("# Metric gallery (contact sheet)\n\n")
         f.write(
@@ -391,6 +489,11 @@ def write_sheet(rows):
         f.write("| image | metric | description | observer position | note | rays |\n|---|---|---|---|---|---|\n")
         for m, pos, why, rays, err in rows:
             name = m["name"]
+            if pos is None:  # kept from the current sheet (partial run), with the note refreshed
+                c = err
+                c[4] = NOTES.get(name, "*not yet looked at*")
+                f.write("| " + " | ".join(c) + " |\n")
+                continue
             img = f"![{name}]({name}.png)" if err is None else err
             note = NOTES.get(name, "*not yet looked at*")
             doc = m["doc"].replace("|", "/")

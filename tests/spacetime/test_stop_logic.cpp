@@ -80,6 +80,12 @@ TEST(StopLogic, EveryHorizonMetricStopsAFallingRayPromptly) {
       {"Kottler", {}, Vec4{{0, 4, 1.1, 0.3}}, Vec3{-1, 0, 0.1}},
       {"TaubNUT", {}, Vec4{{0, 10, 1.1, 0.3}}, Vec3{-1, 0, 0}},
       {"Ernst", {}, Vec4{{0, 6, 1.1, 0.3}}, Vec3{-1, 0, 0}},
+      // Killing horizons of the Ehlers–Kundt B metrics (g_tt = 0 at sin θ = 0, r = 0, r = 0) and the
+      // C-metric's horizon G(y) = 0: without a break margin these rays ended in step underflow.
+      {"Petrov_Type_D_BI_ES", {}, Vec4{{0, 6, 1.1, 0}}, Vec3{0, -1, 0}},
+      {"Petrov_Type_D_BII_ES", {}, Vec4{{0, 2, 0, 0.9}}, Vec3{-1, 0, 0}},
+      {"Petrov_Type_D_BIII_ES", {}, Vec4{{0, 2, 0, 0.9}}, Vec3{-1, 0, 0}},
+      {"Petrov_Type_D_C_ES", {}, Vec4{{0, 0, 1, 1.5}}, Vec3{0, 0, -1}},
   };
   for (const Case& c : cases) {
     auto m = make_metric(c.name, c.params);
@@ -91,6 +97,37 @@ TEST(StopLogic, EveryHorizonMetricStopsAFallingRayPromptly) {
         EXPECT_LT(r.steps, 500) << what;
       }
   }
+}
+
+/// Kruskal: a backward-traced ray inside the shadow crosses the past horizon X = −T into the white
+/// hole and ends at the past singularity X² − T² = −1 (MTW §31.5). It must stop there as horizon
+/// (Invalid): with the margin taken in r (r < r_s·horizon_eps) the rounding noise of r(X² − T²)
+/// made it creep (3000 points: max-steps; 66000 steps: step underflow), and the metric gallery's
+/// Kruskal view (observer at X = 20, T = 0, eps_abs 1e-6, 3000 points) was almost all max-steps.
+/// A ray that first winds near the photon sphere reaches X ≈ −T ≈ 170 before it falls in, where
+/// the rounding of X ± T is larger still: at eps_abs 1e-8 it needs more steps (up to ~40000 with
+/// DOP853), but still ends at the break, so only the gallery tolerance gets a step bound.
+TEST(StopLogic, KruskalShadowRayStopsAtTheSingularity) {
+  auto m = make_metric("Kruskal");
+  const Vec4 x{{0, 20, kPi / 2, 0}};
+  const double eps_h = m->horizon_eps();
+  for (const Vec3& d : {Vec3{-1, 0, 0}, Vec3{-1, 0.1, 0}, Vec3{-1, 0.3, 0.2}, Vec3{-1, 0, 0.5}})
+    for (SolverKind kind : {SolverKind::CashKarp45, SolverKind::DormandPrince853})
+      for (double eps : {1e-6, 1e-8}) {
+        double y[8];
+        const GeodesicResult r = trace_back(*m, x, d, kind, eps, y);
+        const std::string what = std::string(solver_kind_name(kind)) + " eps_abs " + std::to_string(eps * 1e8) +
+                                 "e-8 d (-1, " + std::to_string(d.y) + ", " + std::to_string(d.z) + ")";
+        EXPECT_EQ(r.reason, StopReason::Invalid) << what << ": " << stop_reason_name(r.reason);
+        if (eps == 1e-6) EXPECT_LT(r.steps, 1000) << what;
+        // The last valid point: in the white hole (T < 0, |T| > |X|), just before the break
+        // u + 1 = horizon_eps (the integrator homes in on the edge of the valid region).
+        const double u = (y[1] + y[0]) * (y[1] - y[0]);
+        EXPECT_LT(y[0], 0.0) << what;
+        EXPECT_LT(y[1], -y[0]) << what;
+        EXPECT_GE(u + 1.0, eps_h) << what;
+        EXPECT_LT(u + 1.0, 1.01 * eps_h) << what;
+      }
 }
 
 TEST(StopLogic, HorizonEpsIsAMetricSetting) {

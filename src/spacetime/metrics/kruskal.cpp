@@ -18,9 +18,17 @@
 // default frame; here it is the observer along the Killing vector ∂_t = (X ∂_T + T ∂_X)/(2 r_s)
 // (MTW 31.14 with t = 2 r_s artanh(T/X)), e_(0) = ±(X ∂_T + T ∂_X)/√(F u),
 // e_(1) = ±(T ∂_T + X ∂_X)/√(F u) (sign of X, future pointing), only outside the horizon |X| > |T|.
-// The ray stops before the singularity, at r < r_s·horizon_eps, i.e. u < (horizon_eps − 1)
-// e^horizon_eps (Motion4D breaks at u < −1, which a ray only approaches in ever smaller steps as
-// g_TT ∝ 1/r diverges), and on the polar axis.
+// The ray stops before the singularity u = −1 where u + 1 < horizon_eps (the break margin taken on
+// the function that vanishes there, as 1 − r_s/r at a Schwarzschild horizon; metric.h), i.e. at
+// r ≈ r_s √(2 horizon_eps) (u + 1 = ρ²/2 + O(ρ³) for ρ = r/r_s → 0), and on the polar axis.
+// Motion4D breaks at u < −1, which a ray never reaches. A margin in r itself (r < r_s·horizon_eps,
+// u + 1 ≈ horizon_eps²/2, used before) is not reachable either: r comes from u = (X + T)(X − T),
+// whose rounding error is ~DBL_EPSILON (X² + T²) (X² + T² ≈ 280 for a shadow ray of the gallery's
+// observer at X = 20), so r carries a relative error ~DBL_EPSILON (X² + T²)/ρ², the Christoffel
+// symbols (∝ T/ρ², X/ρ²) carry it into k, and the step control shrinks the steps geometrically:
+// a non-radial ray from X = 20 crept from r = 2.3e-3 M to 5.4e-4 M in 66000 steps before the
+// step size underflowed, and inside the gallery's shadow every ray used up its 3000 points
+// (max-steps) instead of stopping at the singularity (with this margin: ~100-200 steps).
 // Pseudo-Cartesian coordinates: the areal radius r with θ, φ (Motion4D transToPseudoCart); chart
 // 0 for X >= 0, chart 1 for the other exterior X < 0.
 #include <algorithm>
@@ -136,7 +144,7 @@ class Kruskal final : public MetricCRTP<Kruskal> {
     diagonal_accel(d, k, a);
   }
 
-  /// Before the singularity, r > r_s·horizon_eps (file comment), and off the polar axis.
+  /// Before the singularity, u + 1 > horizon_eps (file comment), and off the polar axis.
   bool is_valid(const Vec4& x) const override {
     return (x[1] + x[0]) * (x[1] - x[0]) > u_break_ && std::isfinite(x[0]) && std::isfinite(x[1]) &&
            std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;
@@ -188,6 +196,21 @@ class Kruskal final : public MetricCRTP<Kruskal> {
     return x[1] >= 0.0 ? 0 : 1;
   }
 
+  /// ∂p/∂(X, θ, φ) at fixed T: p = r(T, X) (sinθ cosφ, sinθ sinφ, cosθ) with the areal radius, so
+  /// the X column is ∂_X r = 2X q, q = r_s² e^(−r/r_s)/r (file comment), times the radial unit
+  /// vector (the default spherical Jacobian would take X for r).
+  bool pseudo_cartesian_jacobian(const Vec4& x, double J[3][3]) const override {
+    const double r = areal_radius(x[0], x[1]);
+    const double drdX = 2.0 * x[1] * rs_ * rs_ * std::exp(-r / rs_) / r;
+    const double st = std::sin(x[2]), ct = std::cos(x[2]), sp = std::sin(x[3]), cp = std::cos(x[3]);
+    const double j[3][3] = {{drdX * st * cp, r * ct * cp, -r * st * sp},
+                            {drdX * st * sp, r * ct * sp, r * st * cp},
+                            {drdX * ct, -r * st, 0.0}};
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) J[i][k] = j[i][k];
+    return true;
+  }
+
   /// T is kept; X = ±√(T² + u(r)), u = (r/r_s − 1) e^(r/r_s), on the side of the chart.
   Vec4 from_pseudo_cartesian(double T, const Vec3& p, int chart) const override {
     const double r = norm(p);
@@ -201,7 +224,7 @@ class Kruskal final : public MetricCRTP<Kruskal> {
  protected:
   void on_params_changed() override {
     rs_ = 2.0 * p(0);
-    u_break_ = (horizon_eps_ - 1.0) * std::exp(horizon_eps_);
+    u_break_ = horizon_eps_ - 1.0;
   }
 
  private:

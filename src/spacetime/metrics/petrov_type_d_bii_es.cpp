@@ -8,7 +8,11 @@
 // ∂_z h = (−2z sinh²r, 2z, −b/z², b/(b − z)²).
 // Natural tetrad (Motion4D localToCoord): e_(0) = ∂_t/(z sinh r), e_(1) = ∂_r/z, e_(2) = ∂_φ/w,
 // e_(3) = w ∂_z, w = √(b/z − 1). The ray stops at z <= 0, where b/z − 1 < horizon_eps (Motion4D:
-// z² >= (1 − eps) b²) and at r = 0 (g_tt = 0).
+// z² >= (1 − eps) b²) and before the Killing horizon r = 0, where ∂_t becomes null
+// (g_tt = −z² sinh²r = 0): k^t ∝ 1/sinh²r diverges there as at a Schwarzschild horizon, and a ray
+// running into it ended in step underflow (gallery: every ray, as "error"); it stops with the break
+// margin of the horizon metrics (metric.h, Metric::horizon_eps) on the vanishing factor,
+// sinh²r < horizon_eps. Motion4D has no break condition at r = 0.
 #include <cmath>
 
 #include "spacetime/metric_crtp.h"
@@ -73,8 +77,9 @@ class PetrovTypeD_BII final : public MetricCRTP<PetrovTypeD_BII> {
 
   bool is_valid(const Vec4& x) const override {
     const double z = x[3];
-    return z > 0.0 && b_ / z - 1.0 > horizon_eps_ && x[1] != 0.0 && std::isfinite(x[0]) && std::isfinite(x[1]) &&
-           std::isfinite(x[2]) && std::isfinite(z);
+    const double sr = std::sinh(x[1]);
+    return z > 0.0 && b_ / z - 1.0 > horizon_eps_ && sr * sr > horizon_eps_ && std::isfinite(x[0]) &&
+           std::isfinite(x[1]) && std::isfinite(x[2]) && std::isfinite(z);
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {

@@ -14,9 +14,12 @@
 // h = (−G q, f q, q/f, q/G), ∂_x h = (−G q_x, f' q + f q_x, q_x/f − q f'/f², q_x/G),
 // ∂_y h = (−G' q − G q_y, f q_y, q_y/f, q_y/G − q G'/G²), f' = 3x² + a, G' = 3y² + a.
 // Natural tetrad (Motion4D localToCoord, with G → −G): e_(0) = (x + y) ∂_t/√G,
-// e_(1) = (x + y) ∂_φ/√f, e_(2) = (x + y) √f ∂_x, e_(3) = (x + y) √G ∂_y. The ray stops outside the
-// static region (x + y <= 0, f <= 0 or G <= 0; Motion4D has no break condition). Pseudo-Cartesian
-// coordinates (x, y, φ) as Motion4D's transToPseudoCart.
+// e_(1) = (x + y) ∂_φ/√f, e_(2) = (x + y) √f ∂_x, e_(3) = (x + y) √G ∂_y. The ray stops at conformal
+// infinity x + y = 0 and before the horizon G = 0 (g_tt = 0) and the axis f = 0 (g_φφ = 0, where
+// Γ^x_xx = −f'/(2f) diverges), where f or G falls below horizon_eps: the break margin of the horizon
+// metrics (metric.h, Metric::horizon_eps), as for Pravda_C-Metric (pravda_c_metric.cpp), since
+// k^t ∝ 1/G diverges at the horizon as at a Schwarzschild horizon. Motion4D has no break condition.
+// Pseudo-Cartesian coordinates (x, y, φ) as Motion4D's transToPseudoCart.
 #include <cmath>
 
 #include "spacetime/metric_crtp.h"
@@ -87,11 +90,11 @@ class PetrovTypeD_C final : public MetricCRTP<PetrovTypeD_C> {
     diagonal_accel(d, k, a);
   }
 
-  /// The static region x + y > 0, f(x) > 0, G(y) > 0 (file comment).
+  /// The static region x + y > 0, f(x), G(y) > horizon_eps (file comment).
   bool is_valid(const Vec4& x) const override {
     const double X = x[2], Y = x[3];
-    return X + Y > 0.0 && X * X * X + a_ * X + b_ > 0.0 && Y * Y * Y + a_ * Y - b_ > 0.0 && std::isfinite(x[0]) &&
-           std::isfinite(x[1]) && std::isfinite(X) && std::isfinite(Y);
+    return X + Y > 0.0 && X * X * X + a_ * X + b_ > horizon_eps_ && Y * Y * Y + a_ * Y - b_ > horizon_eps_ &&
+           std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(X) && std::isfinite(Y);
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
