@@ -15,25 +15,14 @@
 
 #include "cli/command.h"
 #include "core/error.h"
+#include "spacetime/metric_param_text.h"
 #include "spacetime/metric_registry.h"
 
 namespace geovis::cli {
 
 namespace {
 
-std::string number(double v) {
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  std::ostringstream os;
-  os << std::setprecision(10) << v;
-  return os.str();
-}
-
-std::string range_text(const MetricParam& p) {
-  const bool lo = std::isfinite(p.min), hi = std::isfinite(p.max);
-  if (!lo && !hi) return "any";
-  return std::string(p.min_open || !lo ? "(" : "[") + number(p.min) + ", " + number(p.max) +
-         (p.max_open || !hi ? ")" : "]");
-}
+std::string number(double v) { return metric_number_text(v); }
 
 /// JSON null for an unbounded side of a range (JSON has no infinity).
 nlohmann::json bound(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
@@ -87,7 +76,7 @@ void print_text(const Metric& m, std::ostream& os) {
   for (const auto& p : info.params) w = std::max(w, p.name.size());
   for (const auto& p : info.params)
     os << "    " << std::left << std::setw(static_cast<int>(w)) << p.name << " = " << std::setw(10) << number(p.def)
-       << " " << std::setw(18) << range_text(p) << " " << p.doc << "\n";
+       << " " << std::setw(18) << metric_param_range_text(p) << " " << p.doc << "\n";
 }
 
 /// `--info NAME`: the metric, its extras tabulated at 11 points, and the tidal matrix.

@@ -7,6 +7,7 @@
 #include "scene/command_table.h"
 #include "spacetime/geodesic.h"
 #include "spacetime/metric.h"
+#include "spacetime/metric_param_text.h"
 #include "spacetime/metric_registry.h"
 
 namespace geovis {
@@ -36,21 +37,6 @@ std::string cell(std::string s) {
   return out;
 }
 
-std::string number(double v) {
-  if (std::isinf(v)) return v > 0 ? "∞" : "−∞";
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
-
-std::string range_text(const MetricParam& p) {
-  const bool lo = std::isfinite(p.min), hi = std::isfinite(p.max);
-  if (!lo && !hi) return "any";
-  return std::string(p.min_open || !lo ? "(" : "[") + number(p.min) + ", " + number(p.max) +
-         (p.max_open || !hi ? ")" : "]");
-}
-
 void key_table(std::ostream& os, const std::vector<ParamSpec>& keys) {
   os << "| key | type | doc |\n|---|---|---|\n";
   for (const ParamSpec& k : keys) {
@@ -69,7 +55,7 @@ void metric_section(std::ostream& os) {
        << info.coords[1] << ", " << info.coords[2] << ", " << info.coords[3] << ").\n\n";
     os << "| parameter | default | range | doc |\n|---|---|---|---|\n";
     for (const MetricParam& p : info.params)
-      os << "| `" << p.name << "` | " << number(p.def) << " | " << range_text(p) << " | " << cell(p.doc) << " |\n";
+      os << "| `" << p.name << "` | " << metric_number_text(p.def) << " | " << metric_param_range_text(p) << " | " << cell(p.doc) << " |\n";
     os << "\n";
   }
 }
