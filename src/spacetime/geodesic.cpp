@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "spacetime/integrators.h"
+#include "spacetime/metric_kernel.h"
 
 namespace geovis {
 
@@ -157,6 +158,24 @@ void hermite_interpolate(const StepView& st, double s, Vec4& x, Vec4& k) {
     // k = dx/dλ from the same cubic; accurate to O(h^3).
     k[i] = (d00 * st.y0[i] + d01 * st.y1[i]) / h + d10 * st.dy0[i] + d11 * st.dy1[i];
   }
+}
+
+// The integrators instantiated once for all metrics (metric_kernel.h): the geodesic system with the
+// steppers MetricCRTP does not compile per metric; the other systems in transport.cpp and jacobi.cpp.
+GeodesicResult integrate_geodesic_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
+                                            double lambda0, StepCallback cb) {
+  GeodesicRHS<MetricKernel> f{k};
+  return integrate_system(k, f, cfg, y, lambda0, cb);
+}
+
+GeodesicResult integrate_on_kernel(const MetricKernel& k, const SolverConfig& cfg, GeodesicSystem sys, double* y,
+                                   double lambda0, StepCallback cb) {
+  switch (sys) {
+    case GeodesicSystem::Transport: return integrate_transport_on_kernel(k, cfg, y, lambda0, cb);
+    case GeodesicSystem::Jacobi: return integrate_jacobi_on_kernel(k, cfg, y, lambda0, cb);
+    case GeodesicSystem::Geodesic: break;
+  }
+  return integrate_geodesic_on_kernel(k, cfg, y, lambda0, cb);
 }
 
 }  // namespace geovis

@@ -847,8 +847,12 @@ struct MetricSystem {
   bool rescale(double* y, GeodesicType type) const {
     if constexpr (std::is_same_v<F, GeodesicRHS<M>> && requires(double* k) { m.rescale_null_direction(k); }) {
       if (type == GeodesicType::Lightlike) {
-        m.rescale_null_direction(y + 4);
-        return true;
+        if constexpr (std::is_same_v<decltype(m.rescale_null_direction(y)), bool>) {
+          return m.rescale_null_direction(y + 4);  // MetricKernel: only when the metric has the rule
+        } else {
+          m.rescale_null_direction(y + 4);
+          return true;
+        }
       }
     }
     return false;

@@ -2,7 +2,9 @@
 
 #include <limits>
 
+#include "spacetime/integrators.h"
 #include "spacetime/metric.h"
+#include "spacetime/metric_kernel.h"
 
 namespace geovis {
 
@@ -119,6 +121,12 @@ JacobiParams trace_jacobi(const Metric& m, const SolverConfig& cfg_in, const Vec
     for (int i = 0; i < kJacobiDim; ++i) y_out[i] = y[i];
   if (result) *result = r;
   return jacobi_params_from_state(m, y, r.lambda);
+}
+
+GeodesicResult integrate_jacobi_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
+                                          double lambda0, StepCallback cb) {
+  JacobiRHS<MetricKernel> f{k};
+  return integrate_system(k, f, cfg, y, lambda0, cb);
 }
 
 }  // namespace geovis

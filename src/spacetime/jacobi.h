@@ -28,6 +28,7 @@
 #include "spacetime/dual.h"
 #include "spacetime/geodesic.h"
 #include "spacetime/metric.h"
+#include "spacetime/metric_kernel.h"
 #include "spacetime/vec.h"
 
 namespace geovis {
@@ -66,18 +67,12 @@ inline bool invert4(const Mat4T<DualD>& a, Mat4T<DualD>& inv) {
 }
 }  // namespace jacobi_detail
 
-/// A metric with closed-form Christoffel symbols on any number type (metric_crtp.h).
-template <class M>
-concept has_christoffel_tmpl = requires(const M& m, const Vec4T<DualD>& x, ChristoffelT<DualD>& G) {
-  m.template christoffel_tmpl<DualD>(x, G);
-};
-
 /// Γ^μ_{ab} at x with its first partial derivatives, G.G[μ][a][b].d[c] = ∂_c Γ^μ_{ab}, without
 /// virtual calls or heap allocation: the metric's closed-form symbols evaluated on first-order
-/// dual numbers where it has them (has_christoffel_tmpl), otherwise from the templated g_{μν} by
-/// second-order forward differentiation, Γ^μ_{ab} = ½ g^{μν}(∂_a g_{νb} + ∂_b g_{νa} − ∂_ν g_{ab})
-/// carried as first-order duals (as Metric::christoffel_derivs_ad). A singular metric yields NaN
-/// (the integrator then stops with NotFinite).
+/// dual numbers where it has them (has_christoffel_tmpl, metric_kernel.h), otherwise from the
+/// templated g_{μν} by second-order forward differentiation, Γ^μ_{ab} = ½ g^{μν}(∂_a g_{νb} +
+/// ∂_b g_{νa} − ∂_ν g_{ab}) carried as first-order duals (as Metric::christoffel_derivs_ad). A
+/// singular metric yields NaN (the integrator then stops with NotFinite).
 template <class M>
 inline void christoffel_with_derivs(const M& m, const Vec4& x, ChristoffelT<DualD>& G) {
   if constexpr (has_christoffel_tmpl<M>) {
@@ -111,6 +106,11 @@ inline void christoffel_with_derivs(const M& m, const Vec4& x, ChristoffelT<Dual
 }
 
 /// Indices into the 32-component Jacobi state (header comment).
+/// The same through a metric's function table (the Jacobi system compiled once, jacobi.cpp).
+inline void christoffel_with_derivs(const MetricKernel& m, const Vec4& x, ChristoffelT<DualD>& G) {
+  m.christoffel_with_derivs(x, G);
+}
+
 constexpr int kJacobiX = 0, kJacobiK = 4, kJacobiS1 = 8, kJacobiS2 = 12, kJacobiY1 = 16, kJacobiDY1 = 20,
               kJacobiY2 = 24, kJacobiDY2 = 28, kJacobiDim = 32;
 

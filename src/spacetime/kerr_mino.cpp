@@ -102,4 +102,67 @@ void kerr_mino_to_bl(const KerrMinoConstants& c, const PolarOffset& polar, const
               (ddph * sigma - dy[I::PHI] * dsig) * i3}};
 }
 
+GeodesicResult integrate_kerr_mino(double M, double a, double r_break, const SolverConfig& cfg, double* y_io,
+                                   double lambda0, StepCallback cb) {
+  const Vec4 x0{{y_io[0], y_io[1], y_io[2], y_io[3]}};
+  const Vec4 k0{{y_io[4], y_io[5], y_io[6], y_io[7]}};
+  const double mu2 = -constraint_target(cfg.type);
+  const KerrMinoConstants c = kerr_mino_constants(M, a, x0, k0, mu2);
+  double y[KerrMinoRHS::N];
+  const PolarOffset polar0 = kerr_mino_from_bl(c, x0, k0, lambda0, y);
+  KerrMinoSystem sys{c, KerrMinoRHS{c, polar0}, 1.0 / r_break};
+  ThetaBranch branch = ThetaBranch::through(x0[2]);
+  sys.set_box(cfg, branch);
+  // A turning point of z at the axis (L = 0) inside step s: the ray went through the pole.
+  auto track_axis = [&](const StepView& s) {
+    using I = KerrMinoRHS;
+    const double z1 = sys.f.polar.z(s.y1[I::Z]);
+    if (c.axis && s.y0[I::DZ] * s.y1[I::DZ] < 0.0 && z1 * s.y1[I::DZ] < 0.0) branch.cross_axis(z1);
+  };
+
+  // BL view of the previous step end (the start of the next step).
+  double bl0[8], bl1[8], dbl0[8], dbl1[8];
+  bool have0 = false;
+  auto to_bl = [&](const double* ym, const double* dym, double* bl, double* dbl) {
+    Vec4 x, kk, acc;
+    kerr_mino_to_bl(c, sys.f.polar, ym, dym, branch, x, kk, &acc);
+    for (int i = 0; i < 4; ++i) {
+      bl[i] = x[i];
+      bl[4 + i] = kk[i];
+      dbl[i] = kk[i];
+      dbl[4 + i] = acc[i];
+    }
+  };
+  auto on_step = [&](const StepView& s) -> StepAction {
+    if (!have0) to_bl(s.y0, s.dy0, bl0, dbl0);
+    track_axis(s);
+    to_bl(s.y1, s.dy1, bl1, dbl1);
+    StepAction act = StepAction::Continue;
+    if (cb) act = cb(StepView{s.lambda0, s.lambda1, bl0, bl1, dbl0, dbl1, 8, s.step_index});
+    for (int i = 0; i < 8; ++i) {
+      bl0[i] = bl1[i];
+      dbl0[i] = dbl1[i];
+    }
+    have0 = true;
+    return act;
+  };
+  auto axis_only = [&](const StepView& s) {
+    track_axis(s);
+    return StepAction::Continue;
+  };
+  // Without a caller's callback only the axis passages need watching (the BL view is not built).
+  const GeodesicResult res = cb   ? integrate_dispatch(sys, cfg, y, lambda0, on_step)
+                             : c.axis ? integrate_dispatch(sys, cfg, y, lambda0, axis_only)
+                                      : integrate_dispatch(sys, cfg, y, lambda0, StepCallback{});
+  double dy[KerrMinoRHS::N];
+  sys(y, dy);
+  Vec4 x, kk;
+  kerr_mino_to_bl(c, sys.f.polar, y, dy, branch, x, kk);
+  for (int i = 0; i < 4; ++i) {
+    y_io[i] = x[i];
+    y_io[4 + i] = kk[i];
+  }
+  return res;
+}
+
 }  // namespace geovis

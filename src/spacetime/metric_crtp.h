@@ -9,8 +9,9 @@
 //   bool is_valid(const Vec4& x) const override;                          // optional
 //   int to_pseudo_cartesian(...) const override;                          // optional
 //
-// and gets the double/dual g_{μν}, christoffel(), and integrate() with the integrators
-// instantiated for M, so the hot loop calls M's inline functions directly.
+// and gets the double/dual g_{μν}, christoffel(), and integrate(): the geodesic system with the
+// default steppers instantiated for M, so the hot loop calls M's inline functions directly, and
+// the other systems and steppers through M's function table (metric_kernel.h).
 #pragma once
 
 #include <memory>
@@ -22,6 +23,7 @@
 #include "spacetime/jacobi.h"
 #include "spacetime/kerr_mino.h"
 #include "spacetime/metric.h"
+#include "spacetime/metric_kernel.h"
 
 namespace geovis {
 
@@ -88,6 +90,15 @@ class MetricCRTP : public Metric {
   static constexpr bool kEscapes = requires(const M& m, const Vec4& x, double& r) { m.escapes(x, x, 0.0, r); };
   bool asymptotically_flat() const override { return kEscapes; }
 
+  /// The geodesic system with the default stepper (CashKarp45, GeoViS's GSL_RK_Cash-Karp) is
+  /// compiled here, per metric, with M's functions inlined into every stage: the rendering hot path
+  /// has no indirect call. Every other system and stepper runs on the metric's function table
+  /// (metric_kernel.h), compiled once for all metrics; one indirect call per stage there measured
+  /// no slower (docs/PERFORMANCE.md, "Build time").
+  static constexpr bool compiled_per_metric(GeodesicSystem sys, SolverKind kind) {
+    return sys == GeodesicSystem::Geodesic && kind == SolverKind::CashKarp45;
+  }
+
   GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y, double lambda0,
                            StepCallback cb) const override {
     if constexpr (kSeparable) {
@@ -96,25 +107,58 @@ class MetricCRTP : public Metric {
         return integrate_kerr_mino(p.mass, p.a, p.r_break, cfg, y, lambda0, cb);
       }
     }
-    switch (sys) {
-      case GeodesicSystem::Transport: {
-        TransportRHS<M> f{self()};
-        return integrate_system(self(), f, cfg, y, lambda0, cb);
-      }
-      case GeodesicSystem::Jacobi: {
-        JacobiRHS<M> f{self()};
-        return integrate_system(self(), f, cfg, y, lambda0, cb);
-      }
-      case GeodesicSystem::Geodesic:
-      default: {
-        GeodesicRHS<M> f{self()};
-        return integrate_system(self(), f, cfg, y, lambda0, cb);
-      }
+    if (compiled_per_metric(sys, cfg.kind)) {
+      validate_solver_config(cfg);
+      GeodesicRHS<M> f{self()};
+      MetricSystem<M, GeodesicRHS<M>> s{self(), f};
+      return integrate_with<ExplicitRK<CashKarpTableau>>(s, cfg, y, lambda0, cb);
     }
+    return integrate_on_kernel(MetricKernel::of(self()), cfg, sys, y, lambda0, cb);
   }
 
  protected:
   const M& self() const { return static_cast<const M&>(*this); }
 };
+
+template <class M>
+MetricKernel MetricKernel::of(const M& m) {
+  using V = const void*;
+  static constexpr MetricKernelOps ops = {
+      [](V p, const Vec4& x, Mat4& g) { static_cast<const M*>(p)->metric_tensor_inline(x, g); },
+      [](V p, const Vec4& x, Christoffel& G) { static_cast<const M*>(p)->christoffel_inline(x, G); },
+      [](V p, const Vec4& x, ChristoffelT<DualD>& G) { geovis::christoffel_with_derivs(*static_cast<const M*>(p), x, G); },
+      [](V p, const Vec4& x, const Vec4& k, Vec4& a) { static_cast<const M*>(p)->geodesic_acceleration(x, k, a); },
+      [](V p, const Vec4& x) { return static_cast<const M*>(p)->is_valid_inline(x); },
+      [] {
+        if constexpr (requires(const M& mm, const Vec4& v) { mm.leaves_chart(v, v); })
+          return +[](V p, const Vec4& x, const Vec4& k) { return static_cast<const M*>(p)->leaves_chart(x, k); };
+        else
+          return static_cast<bool (*)(V, const Vec4&, const Vec4&)>(nullptr);
+      }(),
+      [] {
+        if constexpr (requires(const M& mm, const Vec4& v, double& r) { mm.escapes(v, v, 0.0, r); })
+          return +[](V p, const Vec4& x, const Vec4& k, double r_min, double& radius) {
+            return static_cast<const M*>(p)->escapes(x, k, r_min, radius);
+          };
+        else
+          return static_cast<bool (*)(V, const Vec4&, const Vec4&, double, double&)>(nullptr);
+      }(),
+      [] {
+        if constexpr (requires(const M& mm, const Vec4& v, const Mat4& g) { mm.constraint_norm(v, g, v); })
+          return +[](V p, const Vec4& x, const Mat4& g, const Vec4& k) {
+            return static_cast<const M*>(p)->constraint_norm(x, g, k);
+          };
+        else
+          return static_cast<double (*)(V, const Vec4&, const Mat4&, const Vec4&)>(nullptr);
+      }(),
+      [] {
+        if constexpr (requires(const M& mm, double* k) { mm.rescale_null_direction(k); })
+          return +[](V p, double* k) { static_cast<const M*>(p)->rescale_null_direction(k); };
+        else
+          return static_cast<void (*)(V, double*)>(nullptr);
+      }(),
+  };
+  return MetricKernel(&m, ops);
+}
 
 }  // namespace geovis

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "spacetime/integrators.h"
+#include "spacetime/metric_kernel.h"
 
 namespace geovis {
 
@@ -152,6 +153,12 @@ Tetrad fermi_walker_transport(const Metric& m, WorldlineFn worldline, double tau
     after_reject = false;
   }
   return unpack(y);
+}
+
+GeodesicResult integrate_transport_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
+                                             double lambda0, StepCallback cb) {
+  TransportRHS<MetricKernel> f{k};
+  return integrate_system(k, f, cfg, y, lambda0, cb);
 }
 
 }  // namespace geovis

@@ -1,0 +1,101 @@
+// A concrete metric seen through a table of plain function pointers: what the ODE systems of
+// integrators.h ask of a metric (g_{μν}, Γ, Γ with its derivatives, −Γkk, the validity domain and
+// the optional break, escape, constraint-norm and rescaling rules of metric_crtp.h), without its type.
+//
+// Why: the integrators are templates over the metric. Instantiated for every metric, system and
+// stepper, they made each metric file take 15–27 s to compile. Instead, the systems and steppers
+// are compiled once, for MetricKernel (geodesic.cpp, transport.cpp, jacobi.cpp); their right-hand
+// side then makes one indirect call per stage into the metric's own inlined code (measured: no
+// slower than the inlined version, docs/PERFORMANCE.md). The geodesic system with the default
+// stepper stays compiled per metric with the metric inlined (MetricCRTP::compiled_per_metric): no
+// indirect call per stage on the rendering hot path.
+#pragma once
+
+#include <cmath>
+
+#include "spacetime/dual.h"
+#include "spacetime/geodesic.h"
+#include "spacetime/vec.h"
+
+namespace geovis {
+
+using DualD = Dual<double>;
+
+/// Closed form Γ on any number type (double, dual numbers for the Jacobi system).
+template <class M>
+concept has_christoffel_tmpl = requires(const M& m, const Vec4T<DualD>& x, ChristoffelT<DualD>& G) {
+  m.template christoffel_tmpl<DualD>(x, G);
+};
+
+struct MetricKernelOps {
+  void (*metric_tensor)(const void* m, const Vec4& x, Mat4& g);
+  void (*christoffel)(const void* m, const Vec4& x, Christoffel& G);
+  /// Γ with its partial derivatives as dual numbers: G.G[μ][a][b].d[c] = ∂_c Γ^μ_{ab} (jacobi.h).
+  void (*christoffel_with_derivs)(const void* m, const Vec4& x, ChristoffelT<DualD>& G);
+  void (*geodesic_acceleration)(const void* m, const Vec4& x, const Vec4& k, Vec4& a);
+  bool (*is_valid)(const void* m, const Vec4& x);
+  /// Optional rules (null when the metric has none; see MetricSystem in integrators.h).
+  bool (*leaves_chart)(const void* m, const Vec4& x, const Vec4& k);
+  bool (*escapes)(const void* m, const Vec4& x, const Vec4& k, double r_min, double& radius);
+  double (*constraint_norm)(const void* m, const Vec4& x, const Mat4& g, const Vec4& k);
+  void (*rescale_null_direction)(const void* m, double* k);
+};
+
+/// The view integrators.h instantiates once: it offers the member functions the ODE systems call
+/// on a concrete metric (MetricCRTP), each one indirect call.
+class MetricKernel {
+ public:
+  MetricKernel(const void* m, const MetricKernelOps& ops) : m_(m), ops_(&ops) {}
+
+  void metric_tensor_inline(const Vec4& x, Mat4& g) const { ops_->metric_tensor(m_, x, g); }
+  void christoffel_inline(const Vec4& x, Christoffel& G) const { ops_->christoffel(m_, x, G); }
+  void christoffel_with_derivs(const Vec4& x, ChristoffelT<DualD>& G) const {
+    ops_->christoffel_with_derivs(m_, x, G);
+  }
+  void geodesic_acceleration(const Vec4& x, const Vec4& k, Vec4& a) const {
+    ops_->geodesic_acceleration(m_, x, k, a);
+  }
+  bool is_valid_inline(const Vec4& x) const { return ops_->is_valid(m_, x); }
+  bool leaves_chart(const Vec4& x, const Vec4& k) const {
+    return ops_->leaves_chart != nullptr && ops_->leaves_chart(m_, x, k);
+  }
+  bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
+    return ops_->escapes != nullptr && ops_->escapes(m_, x, k, r_min, radius);
+  }
+  /// The metric's own size of k, or MetricSystem's generic one Σ_{μν} |g_μν k^μ k^ν|.
+  double constraint_norm(const Vec4& x, const Mat4& g, const Vec4& k) const {
+    if (ops_->constraint_norm != nullptr) return ops_->constraint_norm(m_, x, g, k);
+    double h = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) h += std::fabs(g[i][j] * k[i] * k[j]);
+    return h;
+  }
+  /// Rescales a light ray's direction when the metric asks for it; true when k changed.
+  bool rescale_null_direction(double* k) const {
+    if (ops_->rescale_null_direction == nullptr) return false;
+    ops_->rescale_null_direction(m_, k);
+    return true;
+  }
+
+  /// The table for metric type M (its members called through MetricCRTP's inline versions).
+  template <class M>
+  static MetricKernel of(const M& m);
+
+ private:
+  const void* m_;
+  const MetricKernelOps* ops_;
+};
+
+/// Integrates system `sys` on the metric behind `k` (GeodesicSystem::Geodesic in geodesic.cpp,
+/// Transport in transport.cpp, Jacobi in jacobi.cpp): Metric::integrate for everything that is not
+/// compiled per metric.
+GeodesicResult integrate_on_kernel(const MetricKernel& k, const SolverConfig& cfg, GeodesicSystem sys, double* y,
+                                   double lambda0, StepCallback cb);
+GeodesicResult integrate_geodesic_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
+                                            double lambda0, StepCallback cb);
+GeodesicResult integrate_transport_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
+                                             double lambda0, StepCallback cb);
+GeodesicResult integrate_jacobi_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
+                                          double lambda0, StepCallback cb);
+
+}  // namespace geovis
