@@ -8,6 +8,8 @@
 #include <set>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/command.h"
 #include "cli/scene_options.h"
 #include "core/error.h"

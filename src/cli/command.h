@@ -1,7 +1,11 @@
 // Subcommands of the `geovis` program register themselves (one file per subcommand in src/cli/).
 #pragma once
 
-#include <CLI/CLI.hpp>
+// CLI11 is a large header (about 10 s of compile time per file that includes it): only the
+// subcommand files include it, not the tests and main.cpp, which only call run().
+namespace CLI {
+class App;
+}
 
 namespace geovis::cli {
 

@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/command.h"
 #include "core/error.h"
 #include "spacetime/metric_param_text.h"

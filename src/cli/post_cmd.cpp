@@ -7,6 +7,8 @@
 #include <iostream>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/command.h"
 #include "core/error.h"
 #include "io/image.h"

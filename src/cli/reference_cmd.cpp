@@ -2,6 +2,8 @@
 // docs/scene-reference.md) from the command table, on standard output or written atomically.
 #include <iostream>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/command.h"
 #include "io/atomic_file.h"
 #include "scene/scene_reference.h"

@@ -27,6 +27,8 @@
 #include <set>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/command.h"
 #include "cli/interrupt.h"
 #include "cli/render_outputs.h"

@@ -8,6 +8,8 @@
 #include <iostream>
 #include <thread>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/command.h"
 #include "cli/interrupt.h"
 #include "cli/view_server.h"
