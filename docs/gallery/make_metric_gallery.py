@@ -86,14 +86,21 @@ VIEW = {
     "Petrov_Type_D_AIII_ES": (None, None, "sample position"),
     "Petrov_Type_D_BII_ES": (None, None, "sample position (0 < z < b)"),
     "Petrov_Type_D_BIII_ES": (None, None, "sample position"),
-    "Petrov_Type_D_C_ES": (None, None, "sample position"),
     "Pravda_C-Metric": (None, None, "sample position"),
     # SchwarzschildGravWave (epsilon = 0.1, sigma = 1): g_tt = -f (1 + epsilon X cos(sigma t)) with
     # epsilon X ~ -0.1 r far out, so the line element keeps its signature at every t only for
     # epsilon |X| < 1, r < 8.8 M (schwarzschild_grav_wave.cpp is_valid); the rays run back through
     # all phases of the wave, so observer and sky must lie inside.
     "SchwarzschildGravWave": ((0.0, 8.0, math.pi / 2, 0.0), 8.5, "r = 8 (epsilon |X| < 1 needs r < 8.8 M), sky at r = 8.5"),
-    "Petrov_Type_D_C_ES": (None, None, "sample position, looking along +y (CUSTOM_FRAMES)"),
+    # Petrov_Type_D_C_ES: every light ray of the static region, sent any way, ends at the horizon
+    # G(y) = 0, y = 1.3247, (the note in NOTES), so the objects must lie inside the static region
+    # around the observer: a sky sphere of radius 1.4 around (x, y, phi) = (1, 3, 0) (CUSTOM_FRAMES).
+    # PlaneGravWave: the objects are at rest before the wave (u = t - x < -a) and u only decreases
+    # along a light ray traced back, so an observer at t = 0, x = 20 (u = -20) sees only the flat
+    # region before the wave; at t = 20.5 (u = 0.5) the wave has passed the ring and the observer,
+    # and the past light cone crosses it.
+    "PlaneGravWave": ((20.5, 20.0, 0.0, 0.0), None, "t = 20.5: u = t - x = 0.5, behind the wave (-1 <= u <= 0)"),
+    "Petrov_Type_D_C_ES": ((0.0, 0.0, 1.0, 2.0), 1.4, "(x, y) = (1, 2), sky of radius 1.4 around (x, y) = (1, 3), looking along +y (CUSTOM_FRAMES)"),
 }
 
 # One line per metric, written after looking at its thumbnail: what the image shows and, for black
@@ -137,7 +144,7 @@ NOTES = {
     "Petrov_Type_D_AII_ES": "all black (horizon stops): the static region is the slab 0 < z < b = 1 between the singularity z = 0 and the horizon z = b; the sky sphere (radius 20) and most of the ring lie outside it, and every ray leaves the slab first",
     "ExtremeReissnerNordstromDihole": "two extreme RN holes at z = +-1 merge into one double shadow",
     "SchwarzschildWT": "spatial Schwarzschild times flat time: much weaker bending than Schwarzschild (no g_tt), a small black region = rays reaching the throat r = 2M",
-    "Kruskal": "black: the shadow, 29.5 degrees in radius from r = 9.37 M, fills most of the view; its rays, traced back, cross the past horizon X = -T into the white hole and stop at the singularity break u + 1 < horizon_eps (horizon); sky and ring only in the corners; 4% of the rays still run out of points (max-steps; not analysed)",
+    "Kruskal": "black: the shadow, 29.5 degrees in radius from r = 9.37 M, fills most of the view; its rays, traced back, cross the past horizon X = -T into the white hole and stop at the singularity break u + 1 < horizon_eps (horizon); sky and ring only in the corners. The 4% max-steps pixels are a rim, 1 to 2 pixels wide, at 29.0..30.5 degrees around the analytic edge asin(3 sqrt(3) M sqrt(1 - 2M/r)/r) = 29.45 degrees: near-critical rays that wind around the photon sphere r = 3M, where each winding multiplies X and T by e^(dt/4M) (X = -T = 2e3 .. 1e6 afterwards), so that these coordinates need 2000 .. 36000 steps for them. Given 200000 points, of 5 rim rays the two inside the edge end at the singularity (horizon) and the three outside (one of them 0.004 degrees inside, within the tolerance) reach the sky; with 40000 points 1.2% are still left, since the steps needed grow without bound towards the edge. So the rim is a cost of the chart, kept at the common 3000 points: black just inside the edge is right, the sky's photon-ring images just outside are missing",
     "VaidyaIncRad": "all black: every inward ray traced back meets the apparent horizon r = 2 m(v), and m(v) = k s^(1/3) tanh^2(sigma s) grows without bound into the past (s = -v), so the mass always fills the field of view",
     "SultanaDyerBlackhole": "at t = 200 like Schwarzschild (conformally related, null geodesics coincide)",
     "FriedmanNonEmptyNull": "k = 0, conformal time chi = 200: flat-space view (conformally flat)",
@@ -145,14 +152,14 @@ NOTES = {
     "Petrov_Type_D_BI_ES": "mostly black: the rays run into the Killing horizons sin(theta) = 0 (g_tt = 0) and stop at the break margin sin^2(theta) < horizon_eps (horizon); the visible arches are sky and ring between them. The blackness is physical",
     "Petrov_Type_D_BII_ES": "all black: every ray runs into the Killing horizon r = 0 (g_tt = -z^2 sinh^2 r = 0) and stops at the break margin sinh^2 r < horizon_eps (horizon); the ray's end there is physical",
     "Petrov_Type_D_BIII_ES": "all black: every ray runs into the Rindler horizon r = 0 (g_tt = -z^2 r^2 = 0) and stops at the break margin r^2 < horizon_eps (horizon); the ray's end there is physical",
-    "Petrov_Type_D_C_ES": "own viewing rule (CUSTOM_FRAMES: camera along +y, away from the horizon G = 0 at y = 1.32, scene centred at y = 4.5): only the ring's centre is seen, small, in the middle; every other ray ends at an edge of the static region (f, G < horizon_eps or x + y = 0: horizon) before the sky -- which edge was not analysed",
+    "Petrov_Type_D_C_ES": "the static region is y > 1.3247 (G = y^3 - y - 1 > 0; G = 0 is a Killing horizon, g_tt = -G/(x + y)^2 vanishes linearly there), x > -1.3247 (f = x^3 - x + 1 > 0; f = 0 is the axis) and x + y < infinity (curvature singularity at finite proper distance). Light falls to the horizon whichever way it is sent: from the sample position (x, y) = (1, 1.5) all 108 rays of a 12 x 9 pixel sample ended at G < horizon_eps, y = 1.3247 (even rays sent along +y turn round at y = 2.4; only the exact +y ray runs on towards the singularity), with E = G k^t/(x + y)^2 conserved to 4e-7: the observer sees the horizon in every direction, and the former scene (sky of radius 20, mostly outside the region) was 99% black. So sky and ring lie inside the static region around the observer (sky radius 1.4 around (x, y) = (1, 3), observer at (1, 2)): every ray crosses the sky before the horizon (no black). The ring looks large because the y direction is short: proper length dy/((x + y) sqrt G) against dx/((x + y) sqrt f), sqrt G = 4.8, sqrt f = 1 at (1, 3)",
     "Pravda_C-Metric": "all black (horizon stops): the chart is x < -4.8 (G > 0, beyond the axis) and y < -0.9 (F > 0, outside the horizon), so the origin the camera looks at lies beyond the axis and the horizon; every ray ends there",
     "Pravda_C-Metric_Canonical_Coords": "A = 0.01: the two holes are about 1/A = 100 away along +-z, outside the view, so the view is nearly flat; the thin vertical seam through the centre lies on the z axis, presumably the conical singularity (strut/string) that accelerates the holes -- not checked in detail",
     "SchwarzschildGravWave": "from r = 8 (the wave keeps the signature at all times only for r < 8.8 M): the black disk is the Schwarzschild shadow (horizon stops), of the ring (r = 1.6 .. 2.8) only the outer part shows around it; the l = 0 wave is a gauge ripple (Birkhoff), and the picture looks like Schwarzschild's",
-    "PlaneGravWave": "nearly flat view from x = 20: undistorted sky grid, the ring seen as a flat band -- not analysed in detail",
+    "PlaneGravWave": "the coordinates (x, y, z) of the objects label free test particles (Rosen form). Before the wave (u = t - x < -a) the metric is flat with g_yy = p0^2, g_zz = q0^2, p0 = 3.42, q0 = 0.658 (p0 q0 = (1 + a/2)^2, p0/q0 = e^(2 m(-a)) = 5.20; 5.23 without the series truncation): a coordinate circle of radius R is there an ellipse with proper semi-axes p0 R, q0 R, which the wave makes round (p = q = 1 at u = 0) and then focuses (p = q = 1 - u, zero at u = 1). The former camera at t = 0, x = 20 (u = -20) saw only that region (u decreases along every ray traced back), hence the ring as a flat band, which is right: its elevations on the centre column, 6.2..9.9 and -13.7..-7.5 degrees (288 x 216 render), match 6.2..10.1 and -13.7..-7.4 degrees from straight lines with p0, q0. From t = 20.5 (u = 0.5) the past light cone crosses the wave: the ring, seen at u = -0.35..0.41 (mostly after the wave, p = q), is round and smaller; the sky light, emitted mostly before the wave (u < -1), crossed it and the grid is bent into arcs on both sides",
     "BesselGravWaveCart": "Einstein-Rosen cylindrical Bessel wave (C = 1) from x = 20: the sky is strongly sheared into bands around the horizon line, and the ring is squeezed into a thin line; no black (no horizon). Identical to HalilsoyWave with alpha = 0",
     "HalilsoyWave": "alpha = 0 is the Einstein-Rosen Bessel wave: the same picture as BesselGravWaveCart (cylindrical chart, same event)",
-    "Bonnor": "Bonnor's massive magnetic dipole (m = 1, b = 0.1): a round black region (44% of the rays stop at its break condition, horizon) inside the lensed ring, larger than Schwarzschild's 14-degree shadow at this distance -- not analysed further",
+    "Bonnor": "a capture region, but not a horizon shadow. g_tt = -(P/Y)^2 = -(1 - 4m/r + ...): total mass 2m, hence larger than Schwarzschild's; Bonnor's solution is a black dihole (Emparan, PRD 61 (2000) 104009): two extreme magnetically charged holes at the poles of the rod Z = 0, r_b = m + sqrt(m^2 + b^2) = 2.005 (where g_tt has a double zero), joined by a strut, a conical singularity along the rod (circumference/radius -> 2 pi (m^2 + b^2)^2/b^4 = 2 pi 10201). Rays inside the equatorial photon orbit (r = 5.0 m, critical impact parameter 10.75 m, edge at asin(10.75 (1 - 2m/r)^(3/2)/r) = 27.3 degrees from r = 20; rendered without the ring: 27.1..27.6 degrees along the equator, 77% black) run down to the rod and stop at the break margin r < r_b (1 + horizon_eps) (horizon; E and L of a sample ray conserved to 4e-7). Of the 83 captured rays of a 12 x 9 pixel sample, 39 end within 5 degrees of the poles, where P ~ Z and g_tt -> 0: into the throats of the extreme holes; the others reach the strut, where g_tt = -(b^2 sin^2 theta/Y)^2 is not zero: a ray with angular momentum cannot come closer than Z = b_imp^2 P^4/(Y^4 sin^2 theta) (where g_phiphi/(-g_tt) = b_imp^2), r - r_b ~ 1e-9 (an equatorial ray with b_imp = 8 turns round at 1.2e-9), inside the margin and Motion4D's r <= r_b, next to the singular strut (with horizon_eps = 1e-13 the bounce breaks the constraint); so black there is light from the immediate neighbourhood of the strut, not computed. The ring's near side hides the lower part of the disk",
     "AlcubierreWarp": "the bubble (R = 1, sigma = 8, v_s = 1) at the origin, seen from y = -20: ring and grid as in flat space at this resolution",
     "ChazyCurzonRot": "rotating Chazy-Curzon (p = 0.5) from rho = 20 on the equator: the sky and ring are swirled by the rotation around a small black core (2% max-steps: rays approaching the singular source)",
     "TomimatsuSato": "delta = 2 (p = 0.5, q = 0.87, M = 1.73), first render of the prolate spheroidal chart (x = 46.2, y = 0.5: distance 20, 60 degrees from the axis): a black region shifted sideways by the rotation (39% stop at the break, horizon), the ring lensed around it",
@@ -171,12 +178,17 @@ KNOWN_TYPES = ("cartesian", "spherical", "cylinder", "prolatespheroidal", "custo
 # up direction u.
 #  * Petrov_Type_D_C_ES: coordinates (t, phi, x, y), pseudo-Cartesian (x, y, phi)
 #    (petrov_type_d_c_es.cpp), tetrad e(1) = d/dphi, e(2) = d/dx, e(3) = d/dy. The static region is
-#    x + y > 0, f(x) = x^3 - x + 1 > 0 (x > -1.32), G(y) = y^3 - y - 1 > 0 (y > 1.32): the origin
-#    (y = 0) lies outside it. From the sample position (x, y) = (1, 1.5) the camera looks along +y
-#    (away from the horizon G = 0 at y = 1.32, e(3)), up +x (e(2)), at the point y = 4.5 ahead.
+#    x + y > 0, f(x) = x^3 - x + 1 > 0 (x > -1.3247, the axis f = 0), G(y) = y^3 - y - 1 > 0
+#    (y > 1.3247, the horizon G = 0): the origin (y = 0) lies outside it, and every light ray ends at
+#    the horizon (NOTES). From (x, y) = (1, 2) the camera looks along +y (e(3)), up +x (e(2)), at
+#    the point (x, y, phi) = (1, 3, 0); the sky sphere of radius 1.4 around it (VIEW) lies inside the
+#    static region (1.6 <= y <= 4.4, -0.4 <= x <= 2.4) and encloses the observer, so each ray crosses
+#    it before it can reach the horizon; its phi extent 2.8 stays below 4 pi/f'(x0) = 2.95, the period
+#    of phi that makes the axis f = 0 regular. `pseudo_cartesian` maps the observer's position.
 CUSTOM_FRAMES = {
     "Petrov_Type_D_C_ES": dict(e1=[0.0, 0.0, 1.0], e2=[-1.0, 0.0, 0.0], e3=[0.0, 1.0, 0.0],
-                               center=[1.0, 4.5, 0.0], n=[0.0, -1.0, 0.0], u=[1.0, 0.0, 0.0]),
+                               center=[1.0, 3.0, 0.0], n=[0.0, -1.0, 0.0], u=[1.0, 0.0, 0.0],
+                               pseudo_cartesian=lambda pos: (pos[2], pos[3], pos[1])),
 }
 
 
@@ -299,8 +311,11 @@ def vec(v):
 
 def scene(metric, pos, sky_override):
     ctype = metric["coordinate_type"]
-    p = pseudo_cartesian(pos, ctype, metric)
     custom = CUSTOM_FRAMES.get(metric["name"])
+    if custom and "pseudo_cartesian" in custom:
+        p = custom["pseudo_cartesian"](pos)
+    else:
+        p = pseudo_cartesian(pos, ctype, metric)
     center = tuple(custom["center"]) if custom else (0.0, 0.0, 0.0)
     d = math.sqrt(sum((v - c) ** 2 for v, c in zip(p, center)))
     sky = sky_override if sky_override else max(20.0, 4.0 * d)

@@ -9,7 +9,9 @@
 // tetrads of every kind, and physics with independent expectations (Gödel's field equations, the
 // Einstein static universe's null cone, the tortoise and Kruskal radial light rays, the rotating
 // lattice and spinning string seen from inertial frames, Motion4D's k^t rescaling of
-// AlcubierreWarpSimple, Majumdar–Papapetrou and Bonnor as electrovacua, Vaidya's null dust,
+// AlcubierreWarpSimple, Majumdar–Papapetrou and Bonnor as electrovacua, Bonnor's dihole (mass 2m,
+// strut, light capture), the plane wave's scales before the wave, the C-metric's horizon catching
+// every light ray, Vaidya's null dust,
 // conserved quantities of Sultana–Dyer and Teo light rays, Friedmann dust, the C-metric's Weyl
 // coordinates, linearised vacuum perturbations, Killing constants along light rays, limits to
 // Schwarzschild, Kerr, Curzon and Zipoy–Voorhees).
@@ -709,6 +711,35 @@ TEST(MetricsCatalogue, PlaneGravWaveIsFlatOutsideTheWaveAndKeepsItsKillingConsta
   EXPECT_LT(worst, 1e-9);
 }
 
+/// PlaneGravWave before the wave (u < −a): flat, with the transverse scales p0, q0 of the objects'
+/// coordinates (their gallery thumbnail from u = −20 shows a coordinate circle as an ellipse with
+/// axes p0 R, q0 R): p0 q0 = (1 + a/2)² (L(−a) = 1 + a/2), and p0/q0 = e^(2 m(−a)) with
+/// m(−a) = ∫_{−a}^0 √(−L″/L) du (file comment of plane_grav_wave.cpp), here by an independent
+/// midpoint quadrature, approached by the truncated sine series as its degree grows.
+TEST(MetricsCatalogue, PlaneGravWaveBeforeTheWaveScalesYAndZByP0AndQ0) {
+  const double a = 1.0;
+  const int n = 200000;
+  double m_a = 0;
+  for (int i = 0; i < n; ++i) {
+    const double u = -a + (i + 0.5) * a / n;
+    const double L = 1 - u + u * u * u / (a * a) + u * u * u * u / (2 * a * a * a);
+    m_a += std::sqrt(-6 * u * (u + a) / (a * a * a * L)) * a / n;
+  }
+  const double ratio = std::exp(2 * m_a);
+  double err_prev = 1e300;
+  for (double degree : {10.0, 30.0, 90.0}) {
+    const auto m = make_metric("PlaneGravWave", {{"long_ext", a}, {"degree", degree}});
+    Mat4 g;
+    m->metric_tensor(Vec4{{0, 20, 0.3, -0.2}}, g);  // u = −20
+    const double p0 = std::sqrt(g[2][2]), q0 = std::sqrt(g[3][3]);
+    EXPECT_NEAR(p0 * q0, std::pow(1 + a / 2, 2), 1e-12);
+    const double err = std::fabs(p0 / q0 / ratio - 1);
+    EXPECT_LT(err, err_prev) << degree;
+    err_prev = err;
+  }
+  EXPECT_LT(err_prev, 2e-3);  // degree 90: 1.1e-3
+}
+
 /// BesselGravWaveCart: vacuum away from the axis too (where J0, J1 come from the library instead of
 /// the series), and a light ray keeps the Killing constants of ∂_z and of the rotation
 /// x ∂_y − y ∂_x: e^(2U) k^z and g(x ∂_y − y ∂_x, k).
@@ -848,6 +879,149 @@ TEST(MetricsCatalogue, BonnorIsElectrovacAndZipoyVoorheesAtZeroDipole) {
   Mat4 g;
   zv->metric_tensor(Vec4{{0, 5.0, 0.9, 0}}, g);
   EXPECT_NEAR(g[0][0], -std::pow(1.0 - 2.0 * 1.3 / 5.0, 2), 1e-15);
+}
+
+/// Bonnor's solution is a black dihole (Emparan, Phys. Rev. D 61 (2000) 104009), which is what its
+/// gallery thumbnail shows (docs/gallery/metrics/README.md): total mass 2m (−g_tt = 1 − 4m/r + …);
+/// two extreme horizons at the poles of the rod Z = 0, r_b = m + √(m² + b²), where g_tt has a double
+/// zero; between them a strut, a conical singularity along the rod: circumference / (2π · proper
+/// radius) of the φ circles → (m² + b²)²/b⁴ there (from g_φφ = Z Y² sin²θ/P², g_rr = Y²P²/(Q³Z)
+/// with P = b² sin²θ, Q = (m² + b²) sin²θ, Z′ = 2√(m² + b²) at r_b), while the axis beyond the rod
+/// is regular (ratio 1). At b = 0 (Zipoy–Voorhees δ = 2) the equatorial photon orbit is the minimum
+/// of g_φφ/(−g_tt) = r²/(1 − 2m/r)³ at r = (1 + 2δ) m = 5m, critical impact parameter 5m/0.6^(3/2).
+TEST(MetricsCatalogue, BonnorIsADiholeOfMassTwoMWithAStrutAlongTheRod) {
+  const double m = 1.3, b = 0.4;
+  const auto bon = make_metric("Bonnor", {{"mass", m}, {"b", b}});
+  auto g_at = [&](const Metric& mt, double r, double th) {
+    Mat4 g;
+    mt.metric_tensor(Vec4{{0, r, th, 0.3}}, g);
+    return g;
+  };
+  for (double r : {1e4, 1e5}) EXPECT_NEAR((1.0 + g_at(*bon, r, 1.0)[0][0]) * r, 4.0 * m, 5.0 * m * m / r);
+  const double rb = m + std::sqrt(m * m + b * b);
+  // Double zero of g_tt on the axis: halving r − r_b quarters it.
+  const double gt1 = g_at(*bon, rb * (1 + 2e-5), 0.0)[0][0], gt2 = g_at(*bon, rb * (1 + 1e-5), 0.0)[0][0];
+  EXPECT_NEAR(gt1 / gt2, 4.0, 1e-3);
+  // Circumference per proper radius of the φ circles, d√g_φφ/ds along the normal of the rod
+  // (r direction, at r = r_b (1 + δ)) or of the axis (θ direction, at θ = δ); the limit δ → 0 is
+  // approached linearly in δ.
+  auto cone_ratio = [&](double r, double th, int dir, double delta) {
+    if (dir == 1) {
+      r = rb * (1 + delta);
+      const double h = 1e-3 * delta * r;
+      const double d = (std::sqrt(g_at(*bon, r + h, th)[3][3]) - std::sqrt(g_at(*bon, r - h, th)[3][3])) / (2 * h);
+      return d / std::sqrt(g_at(*bon, r, th)[1][1]);
+    }
+    th = delta;
+    const double h = 1e-3 * delta;
+    const double d = (std::sqrt(g_at(*bon, r, th + h)[3][3]) - std::sqrt(g_at(*bon, r, th - h)[3][3])) / (2 * h);
+    return d / std::sqrt(g_at(*bon, r, th)[2][2]);
+  };
+  const double strut = std::pow(m * m + b * b, 2) / std::pow(b, 4);
+  for (double th : {0.4, 1.2, 2.0}) {
+    const double dev6 = cone_ratio(0, th, 1, 1e-6) / strut - 1, dev7 = cone_ratio(0, th, 1, 1e-7) / strut - 1;
+    EXPECT_LT(std::fabs(dev7), 1e-3) << th;
+    EXPECT_LT(std::fabs(dev7), 0.2 * std::fabs(dev6)) << th;
+  }
+  for (double r : {rb * 1.5, rb * 4}) EXPECT_NEAR(cone_ratio(r, 0, 2, 1e-6), 1.0, 1e-6) << r;
+  // Zipoy–Voorhees δ = 2 photon orbit.
+  const auto zv = make_metric("Bonnor", {{"mass", m}, {"b", 0.0}});
+  auto h_eq = [&](double r) {
+    const Mat4 g = g_at(*zv, r, M_PI / 2);
+    return g[3][3] / -g[0][0];
+  };
+  EXPECT_LT(h_eq(5 * m), h_eq(5 * m * (1 + 1e-3)));
+  EXPECT_LT(h_eq(5 * m), h_eq(5 * m * (1 - 1e-3)));
+  EXPECT_NEAR(std::sqrt(h_eq(5 * m)), 5 * m / std::pow(0.6, 1.5), 1e-12 * m);
+}
+
+/// Bonnor's black disk in the gallery (m = 1, b = 0.1, observer at r = 20 on the equator): a light
+/// ray traced back with impact parameter 2 % below the equatorial critical one (the minimum of
+/// g_φφ/(−g_tt), found here by golden section) runs down to the rod and stops at the break margin
+/// r_b (1 + horizon_eps), with E = −g_tt k^t and L = g_φφ k^φ kept; 2 % above, it turns round
+/// outside the photon orbit and leaves.
+TEST(MetricsCatalogue, BonnorCapturesLightInsideItsPhotonOrbit) {
+  const auto m = make_metric("Bonnor");
+  auto h_eq = [&](double r) {
+    Mat4 g;
+    m->metric_tensor(Vec4{{0, r, M_PI / 2, 0}}, g);
+    return g[3][3] / -g[0][0];
+  };
+  double lo = 2.1, hi = 20.0;
+  for (int i = 0; i < 100; ++i) {
+    const double a = lo + 0.382 * (hi - lo), c = lo + 0.618 * (hi - lo);
+    if (h_eq(a) < h_eq(c))
+      hi = c;
+    else
+      lo = a;
+  }
+  const double r_ph = 0.5 * (lo + hi), b_c = std::sqrt(h_eq(r_ph));
+  EXPECT_NEAR(r_ph, 5.0, 0.01);  // close to the b = 0 orbit 5m
+  const double r0 = 20.0, rb = 1.0 + std::sqrt(1.01);
+  const Vec4 x{{0, r0, M_PI / 2, 0}};
+  for (double f : {0.98, 1.02}) {
+    // static observer: sin α = b_imp / √h(r0) off the inward radial direction
+    const double sa = f * b_c / std::sqrt(h_eq(r0));
+    const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{-std::sqrt(1 - sa * sa), 0, sa}, true);
+    double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+    auto EL = [&](const double* s) {
+      Mat4 g;
+      m->metric_tensor(Vec4{{s[0], s[1], s[2], s[3]}}, g);
+      return std::array<double, 2>{-g[0][0] * s[4], g[3][3] * s[7]};
+    };
+    const auto c0 = EL(y);
+    double r_min = r0;
+    SolverConfig cfg;
+    cfg.eps_abs = 1e-8;
+    cfg.max_steps = 5000;
+    cfg.lambda_max = 200.0;
+    const GeodesicResult res = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, [&](const StepView& s) {
+      r_min = std::min(r_min, s.y1[1]);
+      return StepAction::Continue;
+    });
+    const auto c1 = EL(y);
+    EXPECT_NEAR(c1[0] / c0[0], 1.0, 1e-6) << f;
+    EXPECT_NEAR(c1[1] / c0[1], 1.0, 1e-6) << f;
+    if (f < 1) {
+      EXPECT_EQ(res.reason, StopReason::Invalid) << stop_reason_name(res.reason);
+      EXPECT_LT(y[1], rb * (1 + 1.01 * m->horizon_eps()));
+    } else {
+      EXPECT_NE(res.reason, StopReason::Invalid);
+      EXPECT_GT(r_min, r_ph);
+      EXPECT_GT(y[1], r0);
+    }
+  }
+}
+
+/// Petrov_Type_D_C_ES (a = −1, b = 1): the static region y > y0 = 1.3247 (the real root of
+/// G(y) = y³ − y − 1) ends at the Killing horizon G = 0, and light falls to it whichever way it is
+/// sent: rays traced back from the sample position in eight directions (the thumbnail's camera looks
+/// along +y) all stop at the break margin G < horizon_eps, with E = G k^t/(x + y)² kept. Hence the
+/// gallery puts sky and ring inside the static region (docs/gallery/make_metric_gallery.py).
+TEST(MetricsCatalogue, PetrovTypeDCLightFallsToTheHorizonFromEveryDirection) {
+  const auto m = make_metric("Petrov_Type_D_C_ES");
+  const Vec4 x{{0, 0, 1.0, 1.5}};
+  double y0 = 1.3;  // Newton on G(y) = y^3 - y - 1
+  for (int i = 0; i < 50; ++i) y0 -= (y0 * y0 * y0 - y0 - 1) / (3 * y0 * y0 - 1);
+  const double eps_h = m->horizon_eps();
+  for (const Vec3& d : {Vec3{0, 0.2, 1}, Vec3{0.3, -0.3, 1}, Vec3{0, 1, 0}, Vec3{0, -1, 0}, Vec3{1, 0, 0},
+                        Vec3{-1, 0.5, 0.2}, Vec3{0.2, 0.1, -1}, Vec3{0.5, 0.5, 0.5}}) {
+    const Vec4 k = local_null_direction(m->natural_tetrad(x), d, true);
+    double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+    auto E = [](const double* s) {
+      const double G = s[3] * s[3] * s[3] - s[3] - 1, q = s[2] + s[3];
+      return G * s[4] / (q * q);
+    };
+    const double e0 = E(y);
+    SolverConfig cfg;
+    cfg.eps_abs = 1e-8;
+    cfg.max_steps = 5000;
+    const GeodesicResult res = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
+    const std::string what = "d (" + std::to_string(d.x) + ", " + std::to_string(d.y) + ", " + std::to_string(d.z) + ")";
+    EXPECT_EQ(res.reason, StopReason::Invalid) << what << ": " << stop_reason_name(res.reason);
+    EXPECT_NEAR(y[3], y0, 2 * eps_h) << what;  // G′(y0) = 4.26: G = eps_h at y0 + eps_h/4.26
+    EXPECT_NEAR(E(y) / e0, 1.0, 1e-6) << what;
+  }
 }
 
 /// AlcubierreWarp: light rays through the bubble wall keep g(k,k) = 0 to 1e-8 of the size of its
