@@ -168,6 +168,42 @@ TEST_F(RenderDistributed, MpiFourRanksAreByteIdenticalToSerial) {
   EXPECT_EQ(std::set<int>(tiles.begin(), tiles.end()).size(), 32u);
 }
 
+TEST_F(RenderDistributed, MpiFramesOverlapAndMatchSerial) {
+  SKIP_WITHOUT_MPI();
+  // Four frames of the Kerr disk (the observer moves out): frames are not a barrier, so a rank that
+  // finds no tile of frame N left is given one of a later frame while N's last tiles finish.
+  std::string scene = read_file(path("kerr.scm"));
+  const std::string two = "((= i 2))";
+  scene.replace(scene.find(two), two.size(), "((= i 4))");
+  std::ofstream(path("kerr4.scm")) << scene;
+  ASSERT_EQ(sh(kGeovis + " render kerr4.scm --threads 1 -q -o serial.png").exit_code, 0);
+  const ProgramRun r = sh(kMpirun + "3 " + kGeovis + " render kerr4.scm --threads 1 -v -o mpi.png --tile-stats mpi.csv");
+  ASSERT_EQ(r.exit_code, 0) << (r.exit_code == 124 ? "the job hung\n" : "") << r.output;
+  for (int f = 0; f < 4; ++f)
+    for (const char* ext : {".png", ".pdz"}) {
+      char name[32];
+      std::snprintf(name, sizeof name, "_%04d%s", f, ext);
+      ASSERT_TRUE(fs::exists(path(std::string("mpi") + name))) << name;
+      EXPECT_EQ(read_file(path(std::string("mpi") + name)), read_file(path(std::string("serial") + name))) << name;
+    }
+  // Every tile of every frame rendered exactly once.
+  const std::vector<int> tiles = stats_tiles("mpi.csv");
+  EXPECT_EQ(tiles.size(), 64u);
+  EXPECT_EQ(std::set<int>(tiles.begin(), tiles.end()).size(), 64u);
+  // Counted by rank 0 for each image: tiles of later frames handed out before the image's last
+  // tile was done. With frames as a barrier this is 0 for every frame.
+  const std::string needle = "tiles of later images were handed out before its last tile was done";
+  int images = 0, overlapped = 0;
+  for (size_t p = r.output.find(needle); p != std::string::npos; p = r.output.find(needle, p + 1)) {
+    const size_t number_end = r.output.rfind(' ', p - 1);
+    const size_t number_start = r.output.rfind(' ', number_end - 1) + 1;
+    overlapped += std::stoi(r.output.substr(number_start, number_end - number_start));
+    ++images;
+  }
+  EXPECT_EQ(images, 4) << r.output;
+  EXPECT_GT(overlapped, 0) << r.output;
+}
+
 TEST_F(RenderDistributed, MpiSequenceOfCheapFramesEndsAndMatchesSerial) {
   SKIP_WITHOUT_MPI();
   // Many frames of 6 cheap tiles, 2 threads a rank: the frame changes while threads of every rank
