@@ -1,6 +1,7 @@
 // `geovis render [SCENE] [-o OUT] [--frames A:B] [--res WxH] [--threads N] [--supersample N]
 //                [--texture-path DIR]... [--define NAME=VALUE]... [--strict] [--resume]
-//                [--movie out.mp4] [--tile-size N] [--tile-stats FILE] [--data] [--quiet] [--verbose]
+//                [--movie out.mp4] [--tile-size N] [--schedule cost|stripes] [--tile-stats FILE] [--data]
+//                [--quiet] [--verbose]
 //                [scene options: cli/scene_options.h]`
 //
 // Evaluates the scene (the built-in one without SCENE), builds each device (= frame) and renders
@@ -71,6 +72,7 @@ struct RenderArgs {
   bool resume = false;
   std::string movie;
   std::string tile_stats;
+  std::string schedule = "cost";
   bool data = false;  ///< write the EXR data file without a data filter
   bool quiet = false;
   bool verbose = false;
@@ -505,7 +507,10 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
   // Under MPI up to three images are in flight, so that ranks that run out of tiles of one frame
   // start on the next while its last tiles finish and it is written (memory: three results).
   // Alone, one image at a time: an interrupted render then has exactly one unfinished frame.
-  TileRenderSession session(tile_render_options(a, quiet, interrupt ? interrupt->flag() : nullptr), mpi ? 3 : 1);
+  // --schedule stripes: GeoViS's fixed bands of rows, one per rank, to measure what cost ordering gains.
+  const int stripes = a.schedule == "stripes" ? (mpi ? mpi->size() : 1) : 0;
+  TileRenderSession session(tile_render_options(a, quiet, interrupt ? interrupt->flag() : nullptr), mpi ? 3 : 1,
+                            stripes);
   std::unique_ptr<MpiTileDispatcher> dispatcher;
   if (mpi) dispatcher = std::make_unique<MpiTileDispatcher>(*mpi, session);
   std::string identity;  // what a tile checkpoint must match: the same settings as the images' hash
@@ -641,6 +646,10 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->add_flag("--resume", a->resume,
                 "skip frames whose image already exists and continue a frame from its tile checkpoint");
   sub->add_option("--movie", a->movie, "assemble the frames into a movie with ffmpeg (e.g. out.mp4)");
+  sub->add_option("--schedule", a->schedule,
+                  "how tiles are handed out: cost (default: most expensive first, to whoever is free) or "
+                  "stripes (one fixed band of rows per MPI rank, as GeoViS does; for load-balance comparisons)")
+      ->check(CLI::IsMember({"cost", "stripes"}));
   sub->add_option("--tile-stats", a->tile_stats,
                   "write one CSV line per rendered tile (rank, CPU seconds, steps) to FILE, for load-balance studies");
   sub->add_flag("--data", a->data,

@@ -88,6 +88,8 @@ struct RequestHeader {
   /// A render thread asks for more work of the image it renders (rank 0 answers at once: a tile,
   /// or kNoTileNow when that image has none left); false: the rank waits for the next image.
   int32_t in_image = 0;
+  /// 0: the message only returns the finished tile; rank 0 sends nothing back.
+  int32_t wants_work = 1;
 };
 
 struct Assignment {
@@ -242,7 +244,7 @@ void MpiTileDispatcher::State::update_status() { publish_status(status_text()); 
 
 bool MpiTileDispatcher::State::assign(int rank, int slot, bool in_image) {
   Assignment a;
-  const ImageTile next = finishing ? ImageTile{} : session.pop();
+  const ImageTile next = finishing ? ImageTile{} : session.pop(rank);
   if (next.image) {
     a = {Assignment::kTile, next.image->frame, next.image->eye, next.tile};
     in_flight.insert({rank, next.image->frame, next.image->eye, next.tile});
@@ -293,7 +295,7 @@ void MpiTileDispatcher::State::handle_request(int source, const std::vector<char
     image->done_remote(h.tile, source, TileCost{h.cpu_seconds, long(h.steps)}, pixels.data(),
                        data.empty() ? nullptr : data.data());
   }
-  if (!assign(source, h.slot, h.in_image != 0)) update_status();
+  if (!h.wants_work || !assign(source, h.slot, h.in_image != 0)) update_status();
 }
 
 void MpiTileDispatcher::State::loop() {
@@ -407,15 +409,25 @@ class WorkerTiles final : public TileSchedule {
   }
 
   int next_tile(int slot) override {
+    // A finished tile goes back with the thread's next request; when the thread takes a stashed
+    // tile instead, or may not ask (it keeps a tile of a later image), it goes back at once, before
+    // the thread finishes another tile in its place.
+    int stashed = -1;
+    bool keeps_later = false;
     {
       std::lock_guard lock(mutex_);
       for (Assignment& a : stash_) {
         if (a.kind == Assignment::kTile && a.frame == frame_ && a.eye == eye_) {
           a.kind = Assignment::kUnknown;
-          return a.tile;
+          stashed = a.tile;
+          break;
         }
       }
-      if (stash_[size_t(slot)].kind != Assignment::kUnknown) return -1;
+      keeps_later = stashed < 0 && stash_[size_t(slot)].kind != Assignment::kUnknown;
+    }
+    if (stashed >= 0 || keeps_later) {
+      return_finished(slot);
+      return stashed;
     }
     const Assignment a = request(slot, true);
     if (a.kind == Assignment::kTile && a.frame == frame_ && a.eye == eye_) return a.tile;
@@ -453,6 +465,18 @@ class WorkerTiles final : public TileSchedule {
   }
 
  private:
+  /// Returns the thread's finished tile, if any, to rank 0 without asking for work.
+  void return_finished(int slot) {
+    std::vector<char>& msg = finished_[size_t(slot)];
+    if (msg.empty()) return;
+    RequestHeader h;
+    std::memcpy(&h, msg.data(), sizeof h);
+    h.wants_work = 0;
+    std::memcpy(msg.data(), &h, sizeof h);
+    send_bytes(msg.data(), msg.size(), 0, kTagRequest);
+    msg.clear();
+  }
+
   /// Returns the thread's finished tile (if any) to rank 0 and receives its next assignment;
   /// `in_image`: asked by a render thread of the current image.
   Assignment request(int slot, bool in_image) {

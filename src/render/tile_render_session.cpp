@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <cstring>
 
 #include "core/error.h"
@@ -47,14 +48,35 @@ ImageInProgress::ImageInProgress(int frame_, int eye_, const TileGrid& grid_, co
   progress_.add(restored);
 }
 
-void ImageInProgress::order(std::vector<double> cost) {
+void ImageInProgress::order(std::vector<double> cost, int stripes) {
   order_cost_ = std::move(cost);
   order_cost_.resize(size_t(grid.count()), 0.0);
-  queue_.emplace(std::move(todo_tiles_), order_cost_);
+  if (stripes <= 0) {
+    queues_.push_back(std::make_unique<CostOrderedTiles>(std::move(todo_tiles_), order_cost_));
+    return;
+  }
+  // Rank r gets the tile rows [r ty / N, (r+1) ty / N), in tile order (all costs equal).
+  std::vector<std::vector<int>> band(static_cast<size_t>(stripes));
+  for (int t : todo_tiles_) band[size_t((t / grid.tiles_x) * int64_t(stripes) / grid.tiles_y)].push_back(t);
+  for (auto& tiles : band) queues_.push_back(std::make_unique<CostOrderedTiles>(std::move(tiles), std::vector<double>()));
 }
 
-int ImageInProgress::pop() {
-  const int tile = queue_->pop();
+int ImageInProgress::remaining() const {
+  if (queues_.empty()) return todo_;
+  int n = 0;
+  for (const auto& q : queues_) n += q->remaining();
+  return n;
+}
+
+int ImageInProgress::remaining(int rank) const {
+  if (queues_.size() == 1) return queues_[0]->remaining();
+  return size_t(rank) < queues_.size() ? queues_[size_t(rank)]->remaining() : 0;
+}
+
+int ImageInProgress::pop(int rank) {
+  const int tile = queues_.size() == 1 ? queues_[0]->pop()
+                   : size_t(rank) < queues_.size() ? queues_[size_t(rank)]->pop()
+                                                    : -1;
   if (tile >= 0) {
     std::lock_guard lock(mutex_);
     handed_out_.push_back(std::chrono::steady_clock::now());
@@ -149,8 +171,8 @@ std::vector<double> ImageInProgress::next_frame_costs() const {
 
 // ---- the session -------------------------------------------------------------------------------
 
-TileRenderSession::TileRenderSession(const RenderOptions& options, int max_in_flight)
-    : options_(options), max_in_flight_(std::max(1, max_in_flight)) {
+TileRenderSession::TileRenderSession(const RenderOptions& options, int max_in_flight, int stripes)
+    : options_(options), max_in_flight_(std::max(1, max_in_flight)), stripes_(stripes) {
   driver_ = std::thread([this] { drive_local(); });
 }
 
@@ -207,14 +229,16 @@ void TileRenderSession::submit(int frame, int eye, const RenderJob& job, const s
     for (const auto& s : slots_)
       if (s->image && s->image->eye == eye) previous = s->image.get();
     const auto last = last_cost_.find(eye);
-    const bool have_costs = previous ? same_film(previous->grid)
-                                     : last != last_cost_.end() && last->second.size() == size_t(grid.count());
+    const bool have_costs =
+        stripes_ > 0 || (previous ? same_film(previous->grid)
+                                  : last != last_cost_.end() && last->second.size() == size_t(grid.count()));
     if (!have_costs) {
       lock.unlock();
-      slot->image->order(probe_tile_costs(job, grid, options_.threads));
+      slot->image->order(probe_tile_costs(job, grid, options_.threads), stripes_);
       lock.lock();
     }
   }
+  if (error_ && slot->image) slot->image->fail(error_);  // the local render has stopped
   slots_.push_back(std::move(slot));
   lock.unlock();
   work_.notify_all();
@@ -229,26 +253,28 @@ void TileRenderSession::ensure_ordered(ImageInProgress& image) {
     if (s->image.get() == &image) break;
     if (s->image && s->image->eye == image.eye && s->image->ordered()) previous = s->image.get();
   }
-  if (previous)
+  if (stripes_ > 0)
+    image.order({}, stripes_);
+  else if (previous)
     image.order(previous->next_frame_costs());
   else
     image.order(last_cost_.at(image.eye));
 }
 
-ImageInProgress* TileRenderSession::next_with_tiles() {
+ImageInProgress* TileRenderSession::next_with_tiles(int rank) {
   for (const auto& s : slots_)
     if (s->image && s->image->remaining() > 0) {
       ensure_ordered(*s->image);
-      return s->image.get();
+      if (s->image->remaining(rank) > 0) return s->image.get();
     }
   return nullptr;
 }
 
-ImageTile TileRenderSession::pop() {
+ImageTile TileRenderSession::pop(int rank) {
   std::lock_guard lock(mutex_);
   if (error_ || closing_) return {};
-  for (ImageInProgress* image; (image = next_with_tiles());) {
-    const int tile = image->pop();
+  for (ImageInProgress* image; (image = next_with_tiles(rank));) {
+    const int tile = image->pop(rank);
     if (tile >= 0) return {image, tile};
   }
   return {};
@@ -280,7 +306,7 @@ void TileRenderSession::drive_local() {
     ImageInProgress* image = nullptr;
     {
       std::unique_lock lock(mutex_);
-      work_.wait(lock, [&] { return closing_ || (!error_ && (image = next_with_tiles()) != nullptr); });
+      work_.wait(lock, [&] { return closing_ || (!error_ && (image = next_with_tiles(0)) != nullptr); });
       if (closing_) return;
       image->begin_local();
     }
@@ -304,10 +330,17 @@ RenderedImage TileRenderSession::take_oldest() {
   {
     std::lock_guard lock(mutex_);
     if (slots_.empty()) throw Error("render: no image in flight");
-    if (error_) std::rethrow_exception(error_);
     image = slots_.front()->image.get();
   }
-  if (image) image->wait_until_complete();
+  try {
+    if (image) image->wait_until_complete();
+  } catch (...) {
+    // The image ends (its progress line too) before the caller reports the error.
+    std::lock_guard lock(mutex_);
+    slots_.front()->image.reset();
+    slots_.pop_front();
+    throw;
+  }
 
   std::lock_guard lock(mutex_);
   std::unique_ptr<Slot> slot = std::move(slots_.front());

@@ -52,12 +52,17 @@ class ImageInProgress {
   bool with_data() const { return !result_.data.empty(); }
 
   /// Orders the tiles to render by `cost` (indexed by tile number), most expensive first. Called
-  /// once, before the first pop().
-  void order(std::vector<double> cost);
-  bool ordered() const { return queue_.has_value(); }
-  /// The next tile to hand out, -1 when none is left.
-  int pop();
-  int remaining() const { return queue_ ? queue_->remaining() : todo_; }
+  /// once, before the first pop(). With `stripes` > 0, each of that many ranks gets one band of
+  /// tile rows of (nearly) equal height instead, top to bottom (GeoViS's gvsRenderPar; only for
+  /// load-balance comparisons).
+  void order(std::vector<double> cost, int stripes = 0);
+  bool ordered() const { return !queues_.empty(); }
+  /// The next tile for `rank` to render, -1 when none is left (for it).
+  int pop(int rank = 0);
+  /// Tiles not handed out yet (all of them before order()).
+  int remaining() const;
+  /// Tiles not handed out yet that `rank` may take; requires ordered().
+  int remaining(int rank) const;
   int todo_count() const { return todo_; }
   int done_count() const;
   const TileCheckpoint* checkpoint() const { return checkpoint_; }
@@ -91,7 +96,8 @@ class ImageInProgress {
   RenderResult& result_;
   TileCheckpoint* checkpoint_;
   std::vector<int> todo_tiles_;
-  std::optional<CostOrderedTiles> queue_;
+  /// One queue for all ranks; with stripes, one per rank.
+  std::vector<std::unique_ptr<CostOrderedTiles>> queues_;
   std::vector<double> order_cost_;
   const int todo_;
   Progress progress_;
@@ -138,7 +144,9 @@ class TileRenderSession {
  public:
   /// At most `max_in_flight` images are submitted and not yet taken back (memory: one result
   /// each); with 1 every image is rendered alone.
-  TileRenderSession(const RenderOptions& options, int max_in_flight);
+  /// With `stripes` > 0, the tiles are not handed out by cost but in fixed bands of rows, one per
+  /// rank of `stripes` ranks (GeoViS-style, to measure what cost ordering gains).
+  TileRenderSession(const RenderOptions& options, int max_in_flight, int stripes = 0);
   ~TileRenderSession();
   TileRenderSession(const TileRenderSession&) = delete;
   TileRenderSession& operator=(const TileRenderSession&) = delete;
@@ -155,9 +163,9 @@ class TileRenderSession {
   /// of the render (RenderInterrupted after SIGINT).
   RenderedImage take_oldest();
 
-  /// The next tile for another rank: of the oldest image that has tiles left (ordered on first
+  /// The next tile for `rank`: of the oldest image that has tiles left for it (ordered on first
   /// use by what the previous frame measured); {nullptr, -1} when there is none now.
-  ImageTile pop();
+  ImageTile pop(int rank);
   /// The image in flight with this frame and eye, null when there is none.
   ImageInProgress* find(int frame, int eye);
   std::vector<ImageStatus> status() const;
@@ -173,12 +181,12 @@ class TileRenderSession {
   };
   /// Orders `image` if it is not yet (under mutex_).
   void ensure_ordered(ImageInProgress& image);
-  /// Oldest image with tiles left (under mutex_); null when none.
-  ImageInProgress* next_with_tiles();
+  /// Oldest image with tiles left for `rank` (under mutex_); null when none.
+  ImageInProgress* next_with_tiles(int rank);
   void drive_local();
 
   RenderOptions options_;
-  const int max_in_flight_;
+  const int max_in_flight_, stripes_;
   mutable std::mutex mutex_;  // guards everything below
   std::condition_variable work_;
   std::deque<std::unique_ptr<Slot>> slots_;  ///< submitted, not taken back; oldest first
