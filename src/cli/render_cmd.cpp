@@ -5,11 +5,11 @@
 //                [scene options: cli/scene_options.h]`
 //
 // Evaluates the scene (the built-in one without SCENE), builds each device (= frame) and renders
-// it. Every finished frame is written atomically (io/image.h) before the next one starts, so a
-// failure in frame N never loses frames < N, and --resume continues an interrupted sequence.
-// Inside a frame, finished tiles go to a checkpoint next to the image (render/tile_checkpoint.h),
-// from which --resume continues an interrupted frame. Under mpirun the ranks share the tiles
-// (render/mpi_scheduler.h); rank 0 writes the files.
+// it. Every finished frame is written atomically (io/image.h), in frame order, so a failure in
+// frame N never loses frames < N, and --resume continues an interrupted sequence. Inside a frame,
+// finished tiles go to a checkpoint next to the image (render/tile_checkpoint.h), from which
+// --resume continues an interrupted frame. Under mpirun the ranks share the tiles of up to three
+// images in flight (render/mpi_scheduler.h); rank 0 writes the files.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>

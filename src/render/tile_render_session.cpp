@@ -335,10 +335,9 @@ RenderedImage TileRenderSession::take_oldest() {
   try {
     if (image) image->wait_until_complete();
   } catch (...) {
-    // The image ends (its progress line too) before the caller reports the error.
-    std::lock_guard lock(mutex_);
-    slots_.front()->image.reset();
-    slots_.pop_front();
+    // Its progress line ends before the caller reports the error. The image itself stays until
+    // the session ends: another rank may still be returning a tile of it.
+    image->end_progress();
     throw;
   }
 

@@ -77,6 +77,8 @@ class ImageInProgress {
   void end_local();
   /// Rendering failed: wait_until_complete() rethrows `error`.
   void fail(std::exception_ptr error);
+  /// Ends the progress line (before an error about the image is printed).
+  void end_progress() { progress_.finish(); }
   /// Blocks until every tile is done and no local render runs on the image; rethrows a failure.
   void wait_until_complete();
   /// Log entries of the tiles finished so far.
