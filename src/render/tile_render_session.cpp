@@ -19,10 +19,7 @@ class LocalTiles final : public TileSchedule {
  public:
   LocalTiles(ImageInProgress& image, const std::atomic<bool>& closing) : image_(image), closing_(closing) {}
   int next_tile(int) override { return closing_ ? -1 : image_.pop(); }
-  void tile_done(int, int tile, const TileCost& cost, const RenderResult&) override {
-    image_.done(tile, 0, cost);
-    test_hook_tile_finished();
-  }
+  void tile_done(int, int tile, const TileCost& cost, const RenderResult&) override { image_.done(tile, 0, cost); }
 
  private:
   ImageInProgress& image_;
@@ -96,7 +93,13 @@ int ImageInProgress::handed_out_before(std::chrono::steady_clock::time_point t) 
 
 void ImageInProgress::done(int tile, int rank, const TileCost& cost) {
   // Durable before it counts: once the tile is logged as done it is in the checkpoint.
-  if (checkpoint_) checkpoint_->append(tile, result_);
+  {
+    // The test hook may kill the process after this tile (rank 0 = rendered here): no other
+    // thread's tile may reach the checkpoint in between, or the count a test expects is off.
+    std::lock_guard lock(append_mutex_);
+    if (checkpoint_) checkpoint_->append(tile, result_);
+    if (rank == 0) test_hook_tile_finished();
+  }
   progress_.add(grid.rect(tile).pixels());
   std::lock_guard lock(mutex_);
   const auto now = std::chrono::steady_clock::now();

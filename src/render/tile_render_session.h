@@ -66,7 +66,8 @@ class ImageInProgress {
   int todo_count() const { return todo_; }
   int done_count() const;
   const TileCheckpoint* checkpoint() const { return checkpoint_; }
-  /// A finished tile rendered by this process (its pixels are in the result already).
+  /// A finished tile rendered by this process (rank 0; its pixels are in the result already) or,
+  /// from done_remote, by rank `rank`.
   void done(int tile, int rank, const TileCost& cost);
   /// A finished tile rendered by another rank: `pixels` are its rows of RGB floats, `data` its
   /// rows of PixelData (null without data).
@@ -104,6 +105,7 @@ class ImageInProgress {
   const int todo_;
   Progress progress_;
   const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::mutex append_mutex_;  ///< one checkpoint record at a time, with the test hook
   mutable std::mutex mutex_;
   std::condition_variable changed_;
   int done_ = 0, local_ = 0;
