@@ -1,14 +1,15 @@
 // `geovis render [SCENE] [-o OUT] [--frames A:B] [--res WxH] [--threads N] [--supersample N]
 //                [--texture-path DIR]... [--define NAME=VALUE]... [--strict] [--resume]
-//                [--movie out.mp4] [--tile-size N] [--tile-stats FILE] [--data] [--quiet] [--verbose]
+//                [--movie out.mp4] [--tile-size N] [--schedule cost|stripes] [--tile-stats FILE] [--data]
+//                [--quiet] [--verbose]
 //                [scene options: cli/scene_options.h]`
 //
 // Evaluates the scene (the built-in one without SCENE), builds each device (= frame) and renders
-// it. Every finished frame is written atomically (io/image.h) before the next one starts, so a
-// failure in frame N never loses frames < N, and --resume continues an interrupted sequence.
-// Inside a frame, finished tiles go to a checkpoint next to the image (render/tile_checkpoint.h),
-// from which --resume continues an interrupted frame. Under mpirun the ranks share the tiles
-// (render/mpi_scheduler.h); rank 0 writes the files.
+// it. Every finished frame is written atomically (io/image.h), in frame order, so a failure in
+// frame N never loses frames < N, and --resume continues an interrupted sequence. Inside a frame,
+// finished tiles go to a checkpoint next to the image (render/tile_checkpoint.h), from which
+// --resume continues an interrupted frame. Under mpirun the ranks share the tiles of up to three
+// images in flight (render/mpi_scheduler.h); rank 0 writes the files.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -18,11 +19,13 @@
 #include <cctype>
 #include <csignal>
 #include <cstdio>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -69,6 +72,7 @@ struct RenderArgs {
   bool resume = false;
   std::string movie;
   std::string tile_stats;
+  std::string schedule = "cost";
   bool data = false;  ///< write the EXR data file without a data filter
   bool quiet = false;
   bool verbose = false;
@@ -354,11 +358,10 @@ RenderOptions tile_render_options(const RenderArgs& a, bool quiet, const std::at
   return ro;
 }
 
-/// Renders image `eye` of frame `frame` with its tile checkpoint IMG.tiles (restored with
-/// --resume); the caller removes the checkpoint once the image is written.
-RenderedImage render_frame_image(TileRenderSession& session, const RenderArgs& a, const std::string& identity,
-                                 int frame, int eye, const FrameJob& fj, const std::string& img, bool quiet,
-                                 bool verbose) {
+/// Submits image `eye` of frame `frame` to the session, with its tile checkpoint IMG.tiles
+/// (restored with --resume); the caller removes the checkpoint once the image is written.
+void submit_frame_image(TileRenderSession& session, const RenderArgs& a, const std::string& identity, int frame,
+                        int eye, const FrameJob& fj, const std::string& img, bool quiet) {
   CheckpointSpec ckpt;
   ckpt.path = img + ".tiles";
   const std::string key = identity + "\nframe " + std::to_string(frame) + " " + fj.eye;
@@ -366,12 +369,8 @@ RenderedImage render_frame_image(TileRenderSession& session, const RenderArgs& a
   ckpt.resume = a.resume;
   std::string notes;
   const std::string label = "frame " + std::to_string(frame) + (fj.eye.empty() ? "" : " " + fj.eye) + " -> " + img;
-  RenderedImage r = session.render_image(frame, eye, fj.job, label, ckpt, &notes);
+  session.submit(frame, eye, fj.job, label, ckpt, &notes);
   if (!quiet) std::cerr << notes;
-  if (verbose)
-    std::cerr << "  tiles: " << r.tiles_rendered << " rendered, " << r.tiles_restored
-              << " restored from the checkpoint\n";
-  return r;
 }
 
 /// --tile-stats: one CSV line per rendered tile; with --verbose under MPI, each rank's busy CPU time.
@@ -501,30 +500,86 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
   if (!quiet) std::cout << action_log.str();
   if (mpi_worker) return render_as_mpi_worker(builder, a, *mpi);
 
-  std::unique_ptr<MpiTileDispatcher> dispatcher;
-  if (mpi) dispatcher = std::make_unique<MpiTileDispatcher>(*mpi);
   // SIGINT/SIGTERM stop at the next tile. Under mpirun, SIGTERM is mpirun ending the job (a rank
   // died, a time limit): the MPI dispatcher's own handler then says where the job stood instead.
   std::optional<InterruptHandler> interrupt;
-  if (!dispatcher) interrupt.emplace();
-  TileRenderSession session(tile_render_options(a, quiet, interrupt ? interrupt->flag() : nullptr), dispatcher.get());
+  if (!mpi) interrupt.emplace();
+  // Under MPI up to three images are in flight, so that ranks that run out of tiles of one frame
+  // start on the next while its last tiles finish and it is written (memory: three results).
+  // Alone, one image at a time: an interrupted render then has exactly one unfinished frame.
+  // --schedule stripes: GeoViS's fixed bands of rows, one per rank, to measure what cost ordering gains.
+  const int stripes = a.schedule == "stripes" ? (mpi ? mpi->size() : 1) : 0;
+  TileRenderSession session(tile_render_options(a, quiet, interrupt ? interrupt->flag() : nullptr), mpi ? 3 : 1,
+                            stripes);
+  std::unique_ptr<MpiTileDispatcher> dispatcher;
+  if (mpi) dispatcher = std::make_unique<MpiTileDispatcher>(*mpi, session);
   std::string identity;  // what a tile checkpoint must match: the same settings as the images' hash
   for (const std::string& line : settings) identity += line + "\n";
   int rendered = 0, skipped = 0;
   bool stereo = false;
+
+  // The images submitted and not yet written, oldest first; their jobs live here until then.
+  struct PendingImage {
+    int frame = 0;
+    size_t eye = 0;
+    std::shared_ptr<const std::vector<FrameJob>> jobs;
+    std::string img;
+  };
+  std::deque<PendingImage> pending;
+  // Writes the oldest image once it is complete; returns the exit status when the render was
+  // interrupted.
+  auto write_oldest = [&]() -> std::optional<int> {
+    const PendingImage p = pending.front();
+    const FrameJob& fj = (*p.jobs)[p.eye];
+    RenderedImage rendered_image;
+    try {
+      rendered_image = session.take_oldest();
+    } catch (const RenderInterrupted& e) {
+      return report_interrupted(e, interrupt ? interrupt->signal_number() : 0, p.frame, rendered + skipped,
+                                p.img + ".tiles");
+    }
+    pending.pop_front();
+    if (dispatcher) dispatcher->images_changed();
+    const RenderResult& r = rendered_image.result;
+    const std::string& img = p.img;
+    // Data files first, the image last: an existing image means a complete frame (--resume).
+    if (!fj.data_files_wanted.empty()) {
+      const std::string written = write_filter_data(img, fj.job.filter, r.image.width, r.image.height, r.data);
+      if (verbose && !written.empty()) std::cerr << "  data: " << written << "\n";
+    }
+    if (!r.data.empty()) {
+      data_info.frame = p.frame;
+      const std::string written = write_data_exr(img, fj.job, r.image, r.data, data_info);
+      if (verbose) std::cerr << "  data: " << written << "\n";
+    }
+    write_image(img, r.image, 8, frame_description(settings, p.frame, fj.eye));
+    if (rendered_image.checkpoint) rendered_image.checkpoint->remove();
+    if (verbose) {
+      std::cerr << "  " << img << ": tiles: " << rendered_image.tiles_rendered << " rendered, "
+                << rendered_image.tiles_restored << " restored from the checkpoint";
+      if (mpi)
+        std::cerr << "; " << rendered_image.later_tiles_started
+                  << " tiles of later images were handed out before its last tile was done";
+      std::cerr << "\n  " << r.stats.rays << " rays, " << r.stats.steps << " steps, " << r.stats.rhs_evals
+                << " right-hand-side evaluations, " << r.stats.seconds << " s\n";
+    }
+    if (p.eye + 1 == p.jobs->size()) ++rendered;
+    return std::nullopt;
+  };
+
   for (int f = first; f <= last; ++f) {
     const std::string path = frame_path(out, f, sequence);
-    std::vector<FrameJob> jobs = builder.build(f);
-    for (FrameJob& fj : jobs) fj.job.keep_data = a.data;
-    stereo = stereo || jobs.size() == 2;
+    auto jobs = std::make_shared<std::vector<FrameJob>>(builder.build(f));
+    for (FrameJob& fj : *jobs) fj.job.keep_data = a.data;
+    stereo = stereo || jobs->size() == 2;
     print_warnings(diag, quiet, printed);
-    if (a.resume && frame_is_complete(path, f, jobs, settings, quiet)) {
+    if (a.resume && frame_is_complete(path, f, *jobs, settings, quiet)) {
       ++skipped;
       if (verbose) std::cerr << "frame " << f << ": " << path << " is complete, skipped (--resume)\n";
       continue;
     }
-    for (size_t eye = 0; eye < jobs.size(); ++eye) {
-      const FrameJob& fj = jobs[eye];
+    for (size_t eye = 0; eye < jobs->size(); ++eye) {
+      const FrameJob& fj = (*jobs)[eye];
       const std::string img = eye_path(path, fj.eye);
       const fs::path parent = fs::path(img).parent_path();
       if (!parent.empty()) {
@@ -532,32 +587,15 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
         fs::create_directories(parent, ec);
         if (ec) throw Error("cannot create the output folder \"" + parent.string() + "\": " + ec.message());
       }
-      RenderedImage rendered_image;
-      try {
-        rendered_image = render_frame_image(session, a, identity, f, int(eye), fj, img, quiet, verbose);
-      } catch (const RenderInterrupted& e) {
-        return report_interrupted(e, interrupt ? interrupt->signal_number() : 0, f, rendered + skipped, img + ".tiles");
-      }
-      const RenderResult& r = rendered_image.result;
-      // Data files first, the image last: an existing image means a complete frame (--resume).
-      if (!fj.data_files_wanted.empty()) {
-        const std::string written =
-            write_filter_data(img, fj.job.filter, r.image.width, r.image.height, r.data);
-        if (verbose && !written.empty()) std::cerr << "  data: " << written << "\n";
-      }
-      if (!r.data.empty()) {
-        data_info.frame = f;
-        const std::string written = write_data_exr(img, fj.job, r.image, r.data, data_info);
-        if (verbose) std::cerr << "  data: " << written << "\n";
-      }
-      write_image(img, r.image, 8, frame_description(settings, f, fj.eye));
-      if (rendered_image.checkpoint) rendered_image.checkpoint->remove();
-      if (verbose)
-        std::cerr << "  " << r.stats.rays << " rays, " << r.stats.steps << " steps, " << r.stats.rhs_evals
-                  << " right-hand-side evaluations, " << r.stats.seconds << " s\n";
+      while (session.full())
+        if (const std::optional<int> rc = write_oldest()) return *rc;
+      submit_frame_image(session, a, identity, f, int(eye), fj, img, quiet);
+      pending.push_back({f, eye, jobs, img});
+      if (dispatcher) dispatcher->images_changed();
     }
-    ++rendered;
   }
+  while (!pending.empty())
+    if (const std::optional<int> rc = write_oldest()) return *rc;
   if (dispatcher) dispatcher->finish();
   report_tiles(a, session, verbose, mpi != nullptr);
   if (!quiet && a.resume) std::cerr << rendered << " frame(s) rendered, " << skipped << " skipped (already on disk)\n";
@@ -608,6 +646,10 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->add_flag("--resume", a->resume,
                 "skip frames whose image already exists and continue a frame from its tile checkpoint");
   sub->add_option("--movie", a->movie, "assemble the frames into a movie with ffmpeg (e.g. out.mp4)");
+  sub->add_option("--schedule", a->schedule,
+                  "how tiles are handed out: cost (default: most expensive first, to whoever is free) or "
+                  "stripes (one fixed band of rows per MPI rank, as GeoViS does; for load-balance comparisons)")
+      ->check(CLI::IsMember({"cost", "stripes"}));
   sub->add_option("--tile-stats", a->tile_stats,
                   "write one CSV line per rendered tile (rank, CPU seconds, steps) to FILE, for load-balance studies");
   sub->add_flag("--data", a->data,

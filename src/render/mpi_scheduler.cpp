@@ -88,6 +88,8 @@ struct RequestHeader {
   /// A render thread asks for more work of the image it renders (rank 0 answers at once: a tile,
   /// or kNoTileNow when that image has none left); false: the rank waits for the next image.
   int32_t in_image = 0;
+  /// 0: the message only returns the finished tile; rank 0 sends nothing back.
+  int32_t wants_work = 1;
 };
 
 struct Assignment {
@@ -195,14 +197,18 @@ void MpiContext::fail(const std::string& message) {
 // ---- rank 0 ------------------------------------------------------------------------------------
 
 struct MpiTileDispatcher::State {
-  explicit State(MpiContext& m) : mpi(m) {}
+  State(MpiContext& m, TileRenderSession& s) : mpi(m), session(s) {}
   MpiContext& mpi;
+  TileRenderSession& session;
   std::thread comm;
   std::atomic<bool> stop{false};
   std::mutex mutex;  // guards everything below
-  ImageInProgress* image = nullptr;
-  std::deque<std::pair<int, int>> waiting;      ///< (rank, slot) asking for work while there is none
-  std::set<std::pair<int, int>> in_flight;      ///< (rank, tile) handed out and not back yet
+  std::deque<std::pair<int, int>> waiting;  ///< (rank, slot) asking for work while there is none
+  struct Lent {
+    int rank, frame, eye, tile;
+    auto operator<=>(const Lent&) const = default;
+  };
+  std::set<Lent> in_flight;  ///< tiles handed out and not back yet
   bool finishing = false;
   int byes = 0;
 
@@ -216,18 +222,20 @@ struct MpiTileDispatcher::State {
 
 std::string MpiTileDispatcher::State::status_text() const {
   std::string s = "geovis: the MPI job was stopped (a rank died, or the batch system ended it)";
-  if (image) {
-    s += " while rendering frame " + std::to_string(image->frame);
-    if (image->eye > 0) s += " (image " + std::to_string(image->eye + 1) + " of the stereo pair)";
-    s += ": " + std::to_string(image->done_count()) + " of " + std::to_string(image->todo_count()) +
-         " tiles were finished";
-    if (image->checkpoint()) s += " and are kept in the checkpoint \"" + image->checkpoint()->path() + "\"";
-    if (!in_flight.empty()) {
-      s += "; unfinished:";
-      for (const auto& [rank, tile] : in_flight)
-        s += " tile " + std::to_string(tile) + " on rank " + std::to_string(rank) + ",";
-      s.pop_back();
-    }
+  const char* sep = " while rendering ";
+  for (const ImageStatus& im : session.status()) {
+    s += sep + std::string("frame ") + std::to_string(im.frame);
+    if (im.eye > 0) s += " (image " + std::to_string(im.eye + 1) + " of the stereo pair)";
+    s += ": " + std::to_string(im.done) + " of " + std::to_string(im.todo) + " tiles were finished";
+    if (!im.checkpoint.empty()) s += " and are kept in the checkpoint \"" + im.checkpoint + "\"";
+    sep = "; ";
+  }
+  if (!in_flight.empty()) {
+    s += "; unfinished:";
+    for (const Lent& t : in_flight)
+      s += " tile " + std::to_string(t.tile) + " of frame " + std::to_string(t.frame) + " on rank " +
+           std::to_string(t.rank) + ",";
+    s.pop_back();
   }
   return s + "\ngeovis: to continue, run: " + mpi.resume_command() + "\n";
 }
@@ -236,10 +244,10 @@ void MpiTileDispatcher::State::update_status() { publish_status(status_text()); 
 
 bool MpiTileDispatcher::State::assign(int rank, int slot, bool in_image) {
   Assignment a;
-  const int tile = image ? image->pop() : -1;
-  if (tile >= 0) {
-    a = {Assignment::kTile, image->frame, image->eye, tile};
-    in_flight.insert({rank, tile});
+  const ImageTile next = finishing ? ImageTile{} : session.pop(rank);
+  if (next.image) {
+    a = {Assignment::kTile, next.image->frame, next.image->eye, next.tile};
+    in_flight.insert({rank, next.image->frame, next.image->eye, next.tile});
   } else if (finishing) {
     a.kind = Assignment::kFinished;
   } else if (in_image) {
@@ -249,12 +257,13 @@ bool MpiTileDispatcher::State::assign(int rank, int slot, bool in_image) {
     return false;
   }
   send_bytes(&a, sizeof a, rank, kTagAssign + slot);
-  if (tile >= 0) update_status();
+  if (next.image) update_status();
   return true;
 }
 
 void MpiTileDispatcher::State::serve_waiting() {
-  while (!waiting.empty() && (finishing || (image && image->remaining() > 0))) {
+  // A waiting rank that still finds no work goes back into the queue, and the rest wait too.
+  while (!waiting.empty()) {
     const auto [rank, slot] = waiting.front();
     waiting.pop_front();
     if (!assign(rank, slot, false)) break;
@@ -266,9 +275,10 @@ void MpiTileDispatcher::State::handle_request(int source, const std::vector<char
   if (msg.size() < sizeof h) throw Error("MPI: a short request from rank " + std::to_string(source));
   std::memcpy(&h, msg.data(), sizeof h);
   if (h.tile >= 0) {
-    if (!image || h.frame != image->frame || h.eye != image->eye || h.tile >= image->grid.count())
+    ImageInProgress* image = session.find(h.frame, h.eye);
+    if (!image || h.tile >= image->grid.count() || !in_flight.count({source, h.frame, h.eye, h.tile}))
       throw Error("MPI: rank " + std::to_string(source) + " returned tile " + std::to_string(h.tile) + " of frame " +
-                  std::to_string(h.frame) + ", which is not being rendered");
+                  std::to_string(h.frame) + ", which it was not given");
     const int px = image->grid.rect(h.tile).pixels();
     const int doubles_per_px = int(sizeof(PixelData) / sizeof(double));
     if (h.n_floats != 3 * px || (h.n_doubles != 0 && h.n_doubles != px * doubles_per_px) ||
@@ -280,11 +290,12 @@ void MpiTileDispatcher::State::handle_request(int source, const std::vector<char
     std::vector<PixelData> data(size_t(h.n_doubles / doubles_per_px));
     std::memcpy(static_cast<void*>(data.data()), msg.data() + sizeof h + pixels.size() * sizeof(float),
                 data.size() * sizeof(PixelData));
+    // Out of the list before it counts as done: once done, the image may be written and leave.
+    in_flight.erase({source, h.frame, h.eye, h.tile});
     image->done_remote(h.tile, source, TileCost{h.cpu_seconds, long(h.steps)}, pixels.data(),
                        data.empty() ? nullptr : data.data());
-    in_flight.erase({source, h.tile});
   }
-  if (!assign(source, h.slot, h.in_image != 0)) update_status();
+  if (!h.wants_work || !assign(source, h.slot, h.in_image != 0)) update_status();
 }
 
 void MpiTileDispatcher::State::loop() {
@@ -334,7 +345,8 @@ void MpiTileDispatcher::State::loop() {
   }
 }
 
-MpiTileDispatcher::MpiTileDispatcher(MpiContext& mpi) : state_(std::make_unique<State>(mpi)) {
+MpiTileDispatcher::MpiTileDispatcher(MpiContext& mpi, TileRenderSession& session)
+    : state_(std::make_unique<State>(mpi, session)) {
   state_->update_status();
   ::signal(SIGTERM, on_terminate);
   state_->comm = std::thread([s = state_.get()] { s->loop(); });
@@ -347,15 +359,8 @@ MpiTileDispatcher::~MpiTileDispatcher() {
   }
 }
 
-void MpiTileDispatcher::start_image(ImageInProgress& image) {
+void MpiTileDispatcher::images_changed() {
   std::lock_guard lock(state_->mutex);
-  state_->image = &image;
-  state_->update_status();
-}
-
-void MpiTileDispatcher::end_image() {
-  std::lock_guard lock(state_->mutex);
-  state_->image = nullptr;
   state_->update_status();
 }
 
@@ -404,15 +409,25 @@ class WorkerTiles final : public TileSchedule {
   }
 
   int next_tile(int slot) override {
+    // A finished tile goes back with the thread's next request; when the thread takes a stashed
+    // tile instead, or may not ask (it keeps a tile of a later image), it goes back at once, before
+    // the thread finishes another tile in its place.
+    int stashed = -1;
+    bool keeps_later = false;
     {
       std::lock_guard lock(mutex_);
       for (Assignment& a : stash_) {
         if (a.kind == Assignment::kTile && a.frame == frame_ && a.eye == eye_) {
           a.kind = Assignment::kUnknown;
-          return a.tile;
+          stashed = a.tile;
+          break;
         }
       }
-      if (stash_[size_t(slot)].kind != Assignment::kUnknown) return -1;
+      keeps_later = stashed < 0 && stash_[size_t(slot)].kind != Assignment::kUnknown;
+    }
+    if (stashed >= 0 || keeps_later) {
+      return_finished(slot);
+      return stashed;
     }
     const Assignment a = request(slot, true);
     if (a.kind == Assignment::kTile && a.frame == frame_ && a.eye == eye_) return a.tile;
@@ -450,6 +465,18 @@ class WorkerTiles final : public TileSchedule {
   }
 
  private:
+  /// Returns the thread's finished tile, if any, to rank 0 without asking for work.
+  void return_finished(int slot) {
+    std::vector<char>& msg = finished_[size_t(slot)];
+    if (msg.empty()) return;
+    RequestHeader h;
+    std::memcpy(&h, msg.data(), sizeof h);
+    h.wants_work = 0;
+    std::memcpy(msg.data(), &h, sizeof h);
+    send_bytes(msg.data(), msg.size(), 0, kTagRequest);
+    msg.clear();
+  }
+
   /// Returns the thread's finished tile (if any) to rank 0 and receives its next assignment;
   /// `in_image`: asked by a render thread of the current image.
   Assignment request(int slot, bool in_image) {
@@ -515,10 +542,9 @@ void MpiContext::fail(const std::string& message) {
   std::_Exit(1);
 }
 struct MpiTileDispatcher::State {};
-MpiTileDispatcher::MpiTileDispatcher(MpiContext&) { throw Error("geovis was built without MPI"); }
+MpiTileDispatcher::MpiTileDispatcher(MpiContext&, TileRenderSession&) { throw Error("geovis was built without MPI"); }
 MpiTileDispatcher::~MpiTileDispatcher() = default;
-void MpiTileDispatcher::start_image(ImageInProgress&) {}
-void MpiTileDispatcher::end_image() {}
+void MpiTileDispatcher::images_changed() {}
 void MpiTileDispatcher::finish() {}
 void run_mpi_worker(MpiContext&, const RenderOptions&, const std::function<const RenderJob&(int, int)>&) {
   throw Error("geovis was built without MPI");

@@ -1,8 +1,11 @@
 // Rendering with several MPI ranks (`mpirun -np N geovis render ...`): rank 0 hands out the tiles
-// of each image to every rank, most expensive first, gathers the finished tiles, checkpoints them
-// and writes the files; ranks 1..N-1 render what they are given with their own threads.
+// of the images in flight (render/tile_render_session.h) to every rank, most expensive first and
+// the oldest image first, gathers the finished tiles, checkpoints them and writes the files;
+// ranks 1..N-1 render what they are given with their own threads. Frames are not a barrier: a
+// rank that finds no tile of frame N left is given one of frame N+1 while N's last tiles finish
+// and rank 0 writes N.
 //
-// Design: rank 0 renders too. Its render threads take tiles straight from the image's queue
+// Design: rank 0 renders too. Its render threads take tiles straight from the images' queues
 // (render/tile_render_session.h), and one extra communication thread answers the other ranks'
 // requests. A thread is needed because rank 0's render threads are busy for the whole length of
 // a tile: a rank that asks for work would otherwise wait up to a tile's time, and the other ranks
@@ -51,13 +54,16 @@ class MpiContext {
   int rank_ = 0, size_ = 1;
 };
 
-/// Rank 0's side: hands the tiles of each image to ranks 1..N-1 until finish().
-class MpiTileDispatcher final : public TileDistributor {
+/// Rank 0's side: hands the tiles of the session's images in flight to ranks 1..N-1, oldest image
+/// first (so a rank that finds no tile of frame N left gets one of frame N+1), until finish().
+class MpiTileDispatcher {
  public:
-  explicit MpiTileDispatcher(MpiContext& mpi);
-  ~MpiTileDispatcher() override;
-  void start_image(ImageInProgress& image) override;
-  void end_image() override;
+  /// `session` must outlive the dispatcher.
+  MpiTileDispatcher(MpiContext& mpi, TileRenderSession& session);
+  ~MpiTileDispatcher();
+  /// An image was submitted to or taken back from the session: updates the message printed when
+  /// the job is stopped.
+  void images_changed();
   /// No more images: tells every rank to stop and waits until they have.
   void finish();
 
