@@ -143,10 +143,14 @@ TEST_P(ExamplePicture, IsPixelIdenticalToTheRecordedOne) {
   const fs::path dir = fs::temp_directory_path() / ("geovis_example_" + stem + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  // Text outputs of a scene (calc-ray, gvs-print-motion) go to the working folder: the temporary one.
+  const fs::path cwd = fs::current_path();
+  fs::current_path(dir);
   testing::internal::CaptureStderr();
   const int rc = run_args({"render", (kExamples / (stem + ".scm")).string(), "--res", "24x18", "--frames", "0:0",
                            "--threads", "1", "--quiet", "-o", (dir / (stem + ".png")).string()});
   const std::string err = testing::internal::GetCapturedStderr();
+  fs::current_path(cwd);
   ASSERT_EQ(rc, 0) << err;
   std::vector<fs::path> pngs;
   for (const auto& e : fs::directory_iterator(dir))
