@@ -25,23 +25,30 @@
 // (KerrMinoConstants::radial_potential_positive_on, kerr_mino.h).
 #pragma once
 
-#include <cfloat>
 #include <cmath>
 
 #include "spacetime/geodesic.h"
 
 namespace geovis {
 
+/// A bounding-box limit at least this far out is no limit for a falling ray: GeoViS scenes write
+/// "no limit" as ±gpDBLMAX = 2⁶⁴ ≈ 1.8e19. Along the fall from r to the break radius t, θ and φ
+/// change by finite amounts far below it: in Boyer–Lindquist terms dt/dr and dφ/dr grow like
+/// (r² + a²)/Δ at the horizon, so |Δt|, |Δφ| ≲ (r₊² + a²)/(r₊ − r₋) ln(1/horizon_eps) (≈ 30 M for
+/// a = 0.9 M), or ≈ (r₊² + a²)/(horizon_eps r₊) = 2·10⁴ M for the extremal hole; θ passes the
+/// axis at most a few times.
+constexpr double kOpenBoxLimit = 1e18;
+
 /// Nothing but the break radius ends the fall of a ray from radius r to r_break (r is the
-/// coordinate x^radial): no limit on the affine parameter, the scene's bounding box open in every
-/// other coordinate (GeoViS's ±DBL_MAX) and its lower bound in the radial one at most r_break.
-/// (The number of steps is no such limit: the capture stop is what the ray would reach with
-/// enough of them.)
+/// coordinate x^radial): no limit on the affine parameter, the scene's bounding box open
+/// (kOpenBoxLimit) in every other coordinate and its lower bound in the radial one at most
+/// r_break. (The number of steps is no such limit: the capture stop is what the ray would reach
+/// with enough of them.)
 inline bool capture_unobstructed(const SolverConfig& c, double r_break, int radial = 1) {
   if (std::isfinite(c.lambda_max)) return false;
   for (int i = 0; i < 4; ++i) {
     if (i == radial) continue;
-    if (c.box_ll[i] > -DBL_MAX || c.box_ur[i] < DBL_MAX) return false;
+    if (c.box_ll[i] > -kOpenBoxLimit || c.box_ur[i] < kOpenBoxLimit) return false;
   }
   return c.box_ll[radial] <= r_break;
 }

@@ -261,3 +261,39 @@ TEST(Capture, RayTurningJustOutsideThePhotonOrbitIsNotStopped) {
     }
   }
 }
+
+TEST(Capture, OnlyWhereNothingElseEndsTheFall) {
+  // A ray straight at a Kerr hole (a = 0.9), Mino and coordinate form: GeoViS's open box
+  // (±gpDBLMAX = 2⁶⁴) lets the capture stop it early; a box that ends above the break radius, a
+  // limit on t, or a limit on the affine parameter could end the fall first, so there the ray
+  // runs exactly as without capture.
+  auto m = make_metric("KerrBL", {{"angmom", 0.9}, {"mass", 1.0}});
+  const Vec4 x{{0, 50.0, 1.2, 0}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x, TetradKind::Default), Vec3{-1, 0.01, 0.02}, true);
+  const double gp_dbl_max = 1.844674407370955616e19;
+  for (const Form& f : kForms) {
+    SCOPED_TRACE(f.name);
+    auto run = [&](SolverConfig cfg, double cr) {
+      double y[kMaxSystemDim];
+      start(*m, x, k, f.sys, y);
+      cfg.capture_radius = cr;
+      return m->integrate(cfg, f.sys, y, 0.0, {});
+    };
+    SolverConfig open = config(f);
+    open.box_ll = Vec4{{-gp_dbl_max, 0, -gp_dbl_max, -gp_dbl_max}};
+    open.box_ur = Vec4{{gp_dbl_max, 70, gp_dbl_max, gp_dbl_max}};
+    const GeodesicResult early = run(open, 10.0);
+    EXPECT_EQ(early.reason, StopReason::Invalid);
+    EXPECT_LT(early.steps, run(open, 0.0).steps);
+    SolverConfig above = open, t_limited = open, lambda_limited = open;
+    above.box_ll[1] = 2.5;
+    t_limited.box_ll[0] = -1e3;
+    lambda_limited.lambda_max = 1e6;
+    for (const SolverConfig& c : {above, t_limited, lambda_limited}) {
+      const GeodesicResult with = run(c, 10.0), without = run(c, 0.0);
+      EXPECT_EQ(with.reason, without.reason) << stop_reason_name(with.reason);
+      EXPECT_EQ(with.steps, without.steps);
+    }
+    EXPECT_EQ(run(above, 10.0).reason, StopReason::BoundingBox);
+  }
+}
