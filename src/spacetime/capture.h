@@ -19,7 +19,8 @@
 // sphere, down to the horizon — and dr/dλ < 0 at r < r_photon, then for every r' in [r_break, r):
 // E² − L²/h(r')² > E² − L²/h(r)² = A B (dr/dλ)²|_r > 0, so dr/dλ never vanishes and r falls
 // monotonically; with A B = 1 (Schwarzschild) |dr/dλ| stays above its value at r and the ray
-// reaches r_break at finite λ. captured_spherical() below is this test.
+// reaches r_break at finite λ. captured_spherical() below is this test (Schwarzschild,
+// Reissner–Nordström with a horizon).
 //
 // The Kerr family tests Carter's radial potential R(r) on [r_break, r] directly
 // (KerrMinoConstants::radial_potential_positive_on, kerr_mino.h).

@@ -893,8 +893,11 @@ TEST(Tracer, CapturedRaysKeepTheirPixelsInEveryFilter) {
         const RayStop o = ray_stop(old.data[size_t(y) * N + x]);
         horizon += c == RayStop::Horizon;
         hits += c == RayStop::Hit;
-        if (c != RayStop::Escaped) EXPECT_EQ(c, o) << x << "," << y;
-        else EXPECT_EQ(o, RayStop::Box) << x << "," << y;
+        if (c != RayStop::Escaped) {
+          EXPECT_EQ(c, o) << x << "," << y;
+        } else {
+          EXPECT_EQ(o, RayStop::Box) << x << "," << y;
+        }
         for (int k = 0; k < 3; ++k) differ += cap.image.at(x, y)[k] != old.image.at(x, y)[k];
       }
     EXPECT_EQ(differ, 0);

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "spacetime/jacobi.h"
 #include "spacetime/kerr_mino.h"
@@ -106,7 +108,9 @@ TEST(Capture, CertificateHoldsWhereverTheSampledPotentialSaysSo) {
       const bool cert = c.radial_potential_positive_on(rb, x[1]);
       certified += cert;
       with_root += rmin <= 0;
-      if (cert) EXPECT_GT(rmin, 0.0) << "a = " << a << ", r = " << x[1];
+      if (cert) {
+        EXPECT_GT(rmin, 0.0) << "a = " << a << ", r = " << x[1];
+      }
       if (rmin > 1e-6 * size) {
         ++clear;
         clear_certified += cert;
@@ -255,7 +259,9 @@ TEST(Capture, RayTurningJustOutsideThePhotonOrbitIsNotStopped) {
         full.capture_radius = 1e3;
         const GeodesicResult r_cap = m->integrate(full, f.sys, y, 0.0, {});
         EXPECT_EQ(r_cap.reason, StopReason::Invalid) << stop_reason_name(r_cap.reason);
-        if (f.sys == GeodesicSystem::Geodesic) EXPECT_EQ(r_full.reason, StopReason::Invalid);
+        if (f.sys == GeodesicSystem::Geodesic) {
+          EXPECT_EQ(r_full.reason, StopReason::Invalid);
+        }
         EXPECT_LT(r_cap.steps, r_full.steps);
       }
     }
@@ -295,5 +301,51 @@ TEST(Capture, OnlyWhereNothingElseEndsTheFall) {
       EXPECT_EQ(with.steps, without.steps);
     }
     EXPECT_EQ(run(above, 10.0).reason, StopReason::BoundingBox);
+  }
+}
+
+TEST(Capture, SphericalHolesStopOnlyRaysThatFallIn) {
+  // Schwarzschild (coordinate form) and Reissner–Nordström with a horizon: random light rays
+  // between the horizon and 1.5 times the photon sphere, both time orientations, integrated with
+  // capture everywhere and without: the same stop reason for every ray, never more steps.
+  // Naked Reissner–Nordström (|Q| > M) has no horizon and never captures.
+  struct Case {
+    const char* name;
+    std::vector<std::pair<std::string, double>> params;
+    double r_photon;
+  };
+  const Case cases[] = {{"Schwarzschild", {{"mass", 1.0}}, 3.0},
+                        {"ReissnerNordstrom", {{"mass", 1.0}, {"charge", 0.6}}, 0.5 * (3.0 + std::sqrt(9.0 - 8 * 0.36))},
+                        {"ReissnerNordstrom", {{"mass", 1.0}, {"charge", 0.9}}, 0.5 * (3.0 + std::sqrt(9.0 - 8 * 0.81))},
+                        {"ReissnerNordstrom", {{"mass", 1.0}, {"charge", 1.05}}, 0.5 * (3.0 + std::sqrt(9.0 - 8 * 1.1025))}};
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (const Case& c : cases) {
+    auto m = make_metric(c.name, c.params);
+    const bool naked = c.params.size() == 2 && c.params[1].second > 1.0;
+    SCOPED_TRACE(testing::Message() << c.name << " " << c.params.back().second);
+    int captured = 0;
+    double r_lo = 0.01;
+    while (!m->is_valid(Vec4{{0, r_lo, 1.0, 0}})) r_lo *= 1.01;
+    for (int n = 0; n < 60; ++n) {
+      const Vec4 x{{0, r_lo * 1.01 + (1.5 * c.r_photon - r_lo * 1.01) * U(rng), 0.3 + 2.5 * U(rng), 0.5}};
+      const Vec3 d = normalize(Vec3{2 * U(rng) - 1, 2 * U(rng) - 1, 2 * U(rng) - 1});
+      const Vec4 k = local_null_direction(m->natural_tetrad(x, TetradKind::Default), d, n % 2 == 0);
+      SolverConfig cfg = config(kForms[1]);
+      cfg.max_steps = 100000;
+      double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+      const GeodesicResult without = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
+      cfg.capture_radius = INFINITY;
+      double y2[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+      const GeodesicResult with = m->integrate(cfg, GeodesicSystem::Geodesic, y2, 0.0, {});
+      EXPECT_EQ(with.reason, without.reason) << stop_reason_name(with.reason) << " r = " << x[1];
+      EXPECT_LE(with.steps, without.steps);
+      captured += with.steps < without.steps;
+    }
+    if (naked) {
+      EXPECT_EQ(captured, 0);
+    } else {
+      EXPECT_GT(captured, 10);
+    }
   }
 }
