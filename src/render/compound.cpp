@@ -109,4 +109,11 @@ bool CompoundObject::intersect(const Segment& seg, Hit& hit) const {
 
 Bounds3 CompoundObject::bounds() const { return bounds_; }
 
+double CompoundObject::inner_radius() const {
+  if (transformed_) return bounds_.distance_from_origin();
+  double r = std::numeric_limits<double>::infinity();
+  for (const auto& c : children_) r = std::min(r, c->inner_radius());
+  return r;
+}
+
 }  // namespace geovis

@@ -20,6 +20,8 @@ class CompoundObject final : public SceneObject {
   void set_transform(const Transform& t);
   bool intersect(const Segment& seg, Hit& hit) const override;
   Bounds3 bounds() const override;
+  /// The smallest of the children's (untransformed; else the bounds').
+  double inner_radius() const override;
   const std::vector<SceneObjectPtr>& children() const { return children_; }
 
  private:

@@ -6,6 +6,8 @@
 // closest hit as the fraction `s` along it; the tracer refines the hit to integration precision.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <string>
@@ -32,6 +34,17 @@ struct Bounds3 {
     expand(b.hi);
   }
   bool empty() const { return lo.x > hi.x; }
+  /// Distance of the box's closest point from the origin (0 when the box contains it; +∞ when
+  /// empty: no point at all).
+  double distance_from_origin() const {
+    if (empty()) return std::numeric_limits<double>::infinity();
+    double d2 = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double d = std::max({lo[i], 0.0, -hi[i]});
+      d2 += d * d;
+    }
+    return std::sqrt(d2);
+  }
   static Bounds3 infinite() {
     const double inf = std::numeric_limits<double>::infinity();
     return {Vec3{-inf, -inf, -inf}, Vec3{inf, inf, inf}};
@@ -86,6 +99,10 @@ class SceneObject {
   virtual bool intersect(const Segment& seg, Hit& hit) const = 0;
   /// Bounds in pseudo-Cartesian coordinates (infinite when unknown/unbounded).
   virtual Bounds3 bounds() const = 0;
+  /// No point of the object lies closer to the origin than this (pseudo-Cartesian |p|; the
+  /// renderer's capture radius, geodesic.h SolverConfig::capture_radius). Default: the distance
+  /// of its bounds, 0 when they contain the origin.
+  virtual double inner_radius() const { return bounds().distance_from_origin(); }
   /// Chart in which the object lives (paper §2.3; e.g. Morris-Thorne 0: l>0, 1: l<=0).
   int chart = 0;
   std::string id;

@@ -441,6 +441,14 @@ Bounds3 PlaneRing::local_bounds() const {
   return b;
 }
 
+double PlaneRing::inner_radius() const {
+  const double box = bounds().distance_from_origin();
+  if (transformed) return box;
+  const double cn = dot(center, normal);
+  const double in_plane = std::max(0.0, rin - norm(center - cn * normal));
+  return std::max(box, std::sqrt(cn * cn + in_plane * in_plane));
+}
+
 bool segment_triangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c, double tmax,
                       double& t, double& b1, double& b2, bool parallelogram) {
   const Vec3 e1 = b - a, e2 = c - a;

@@ -219,6 +219,9 @@ class PlaneRing final : public PlanarPrimitive {
   bool local_intersect(const Vec3& o, const Vec3& d, double tmax, double& t, Vec3& n, double& u,
                        double& v) const override;
   Bounds3 local_bounds() const override;
+  /// Untransformed: |p|² = (c·n)² + |c⊥ + q|² with |q| ≥ rin in the plane, so |p| ≥
+  /// √((c·n)² + max(0, rin − |c⊥|)²) (c⊥: the centre's part in the plane); transformed: the bounds'.
+  double inner_radius() const override;
   Vec3 center, normal, e1, e2;
   double rin, rout;
 };

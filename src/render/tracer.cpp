@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "spacetime/circular_orbit.h"
@@ -301,6 +302,9 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
       cfg_.escape_radius = std::sqrt(r2);  // +inf for unbounded objects
     }
   }
+  // Capture (geodesic.h): nothing to hit below the scene's innermost radius (0 when an object may
+  // reach the origin or its bounds are unknown: never); nothing at all without a scene.
+  cfg_.capture_radius = job.scene ? job.scene->inner_radius() : std::numeric_limits<double>::infinity();
   point_lights_ = job.metric->info().inertial_cartesian && job.lights.shadows && !job.lights.lights.empty();
 }
 

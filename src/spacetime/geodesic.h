@@ -92,12 +92,18 @@ struct SolverConfig {
   /// metric, spacetime/escape.h) stops there. The renderer sets the scene's bounding sphere;
   /// +∞ (default): never; 0: as soon as the ray cannot turn back.
   double escape_radius = std::numeric_limits<double>::infinity();
+  /// Capture (spacetime/capture.h): no object lies closer than this to the origin (distance |p| in
+  /// the metric's pseudo-Cartesian coordinates). A light ray below it that provably falls into the
+  /// horizon without turning back stops there with StopReason::Invalid, the reason it gets at the
+  /// break radius. The renderer sets the scene's innermost radius; 0 (default): never.
+  double capture_radius = 0.0;
 };
 
 enum class StopReason {
   None,           ///< still running (internal)
   Callback,       ///< the step callback stopped it (e.g. the ray hit an object)
-  Invalid,        ///< left the coordinate validity domain (horizon, singularity, throat chart ...)
+  Invalid,        ///< left the coordinate validity domain (horizon, singularity, throat chart ...),
+                  ///< or is certain to reach the horizon without turning back (capture.h)
   BoundingBox,    ///< left the scene's bounding box
   LambdaMax,      ///< reached the maximal affine parameter
   MaxSteps,       ///< reached the maximal number of accepted steps

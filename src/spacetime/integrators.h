@@ -787,6 +787,18 @@ struct MetricSystem {
     }
     return false;
   }
+  /// Capture of a light ray (capture.h): a metric with a horizon provides `bool captures(const
+  /// Vec4& x, const Vec4& k, const SolverConfig& c) const`, true when x lies below
+  /// c.capture_radius and the light ray there, moving along k, falls to the break radius without
+  /// turning back or meeting another stop. The ray moves along direction·k.
+  bool captured(const SolverConfig& c, const double* y) const {
+    if constexpr (requires(const Vec4& v) { m.captures(v, v, c); }) {
+      if (c.type != GeodesicType::Lightlike || !(c.capture_radius > 0.0)) return false;
+      const double s = c.direction >= 0 ? 1.0 : -1.0;
+      return m.captures(Vec4{{y[0], y[1], y[2], y[3]}}, Vec4{{s * y[4], s * y[5], s * y[6], s * y[7]}}, c);
+    }
+    return false;
+  }
   /// value = g(k,k) − target; scale = a positive-definite size of k (never below |target|), so the
   /// constraint test |value| <= constraint_tol·scale is relative and stays meaningful where k^0
   /// diverges (horizons) and where the terms of g(k,k) are small or cancel (off-diagonal metrics).
@@ -913,7 +925,9 @@ void validate_solver_config(const SolverConfig& cfg);
 /// callback, re-basing of the state
 /// (`void rebase(double* y)`, systems whose variables are relative to a moving origin, kerr_mino.h),
 /// bounding box, λ_max, escape (`bool escaped(const SolverConfig&, const double* y, double&
-/// radius) const`, systems that can tell; geodesic.h SolverConfig::escape_radius). Before
+/// radius) const`, systems that can tell; geodesic.h SolverConfig::escape_radius), capture
+/// (`bool captured(const SolverConfig&, const double* y) const`: stops with Invalid, the reason
+/// of the break radius the ray is certain to reach; SolverConfig::capture_radius). Before
 /// each attempt: max_steps. A ray that runs into the edge of the validity domain stops with
 /// Invalid once the edge is located to 1/1024 of the first step that crossed it. Step underflow (|h| < step_min or |h| below the resolution of λ)
 /// stops with StepUnderflow, or with Invalid / NotFinite when the rejected trials were leaving the
@@ -1083,6 +1097,9 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
     if (clipped) return finish(StopReason::LambdaMax);
     if constexpr (requires { sys.escaped(cfg, y, res.escape_radius); }) {
       if (sys.escaped(cfg, y, res.escape_radius)) return finish(StopReason::Escaped);
+    }
+    if constexpr (requires { sys.captured(cfg, y); }) {
+      if (sys.captured(cfg, y)) return finish(StopReason::Invalid);
     }
     if (adaptive) h = std::min(hmax, std::max(stepper.next_step(hstep, err, true, after_reject), hmin));
     if (!adaptive && kOwnAffine) h = std::fabs(cfg.step_size) * per_affine(y);

@@ -45,6 +45,7 @@
 
 #include <cmath>
 
+#include "spacetime/capture.h"
 #include "spacetime/integrators.h"
 
 namespace geovis {
@@ -95,6 +96,74 @@ struct KerrMinoConstants {
     const double dR = ((4.0 * c4 * r + 3.0 * c3) * r + 2.0 * c2) * r + c1;
     const double ddR = (12.0 * c4 * r + 6.0 * c3) * r + 2.0 * c2;
     return R > 0.0 && dR > 0.0 && ddR > 0.0;
+  }
+
+  /// Capture test (capture.h): R(r) > 0 on all of [r_lo, r_hi] (0 < r_lo < r_hi), so a geodesic
+  /// moving inward at r_hi has no radial turning point before r_lo: (dr/dσ)² = R stays above its
+  /// minimum on the interval, r falls monotonically and reaches r_lo at finite Mino time.
+  /// Certified by the Bernstein form of the quartic R (coefficients above) on the interval: a
+  /// polynomial lies in the convex hull of its Bernstein coefficients, so all of them positive
+  /// proves R > 0 (Farouki & Rajan, Comput. Aided Geom. Des. 4 (1987) 191; Lane & Riesenfeld,
+  /// IEEE PAMI 3 (1981) 35 for the subdivision). Where the test is inconclusive, the interval is
+  /// halved by de Casteljau's algorithm, up to 2⁶ pieces; a coefficient must exceed 1e-12 of the
+  /// size of R's terms, far above their rounding error. False (no capture; the ray integrates on)
+  /// whenever positivity is not proven, e.g. for a ray with a turning point in the interval.
+  bool radial_potential_positive_on(double r_lo, double r_hi) const {
+    const double c4 = E * E - mu2, c3 = 2.0 * M * mu2, c2 = 2.0 * E * c - a2 * mu2 - K, c1 = 2.0 * M * K,
+                 c0 = c * c - a2 * K;
+    if (!(r_lo > 0.0 && r_hi > r_lo)) return false;
+    const double u = r_lo, h = r_hi - r_lo;
+    // Taylor coefficients at r_lo in t = (r − r_lo)/h: p_j = R^(j)(r_lo) h^j / j!.
+    const double p0 = (((c4 * u + c3) * u + c2) * u + c1) * u + c0;
+    const double p1 = (((4.0 * c4 * u + 3.0 * c3) * u + 2.0 * c2) * u + c1) * h;
+    const double p2 = ((6.0 * c4 * u + 3.0 * c3) * u + c2) * h * h;
+    const double p3 = (4.0 * c4 * u + c3) * h * h * h;
+    const double p4 = c4 * h * h * h * h;
+    // Power to Bernstein basis of degree 4: b_i = Σ_{j≤i} C(i,j)/C(4,j) p_j.
+    double b[5] = {p0, p0 + 0.25 * p1, p0 + 0.5 * p1 + p2 / 6.0, p0 + 0.75 * p1 + 0.5 * p2 + 0.25 * p3,
+                   p0 + p1 + p2 + p3 + p4};
+    const double rr = r_hi;
+    const double size = (((std::fabs(c4) * rr + std::fabs(c3)) * rr + std::fabs(c2)) * rr + std::fabs(c1)) * rr +
+                        std::fabs(c0);
+    const double floor = 1e-12 * size;
+    if (!(b[0] > floor && b[4] > floor)) return false;  // R at the ends (and NaN)
+    // Depth-first subdivision with an explicit stack (no heap): each entry one piece's coefficients.
+    constexpr int kMaxDepth = 6;
+    double stack[kMaxDepth + 1][5];
+    int depth_of[kMaxDepth + 1];
+    int top = 0;
+    for (int i = 0; i < 5; ++i) stack[0][i] = b[i];
+    depth_of[0] = 0;
+    while (top >= 0) {
+      double* q = stack[top];
+      const int depth = depth_of[top];
+      bool positive = true;
+      for (int i = 0; i < 5; ++i) positive = positive && q[i] > floor;
+      if (positive) {
+        --top;
+        continue;
+      }
+      if (depth == kMaxDepth || !(q[0] > floor && q[4] > floor)) return false;
+      // de Casteljau at t = 1/2: left piece (l0..l4), right piece (r0..r4).
+      double t[5][5];
+      for (int i = 0; i < 5; ++i) t[0][i] = q[i];
+      for (int j = 1; j < 5; ++j)
+        for (int i = 0; i + j < 5; ++i) t[j][i] = 0.5 * (t[j - 1][i] + t[j - 1][i + 1]);
+      double* right = stack[top];
+      double* left = stack[top + 1];
+      double l[5], rgt[5];
+      for (int j = 0; j < 5; ++j) {
+        l[j] = t[j][0];
+        rgt[j] = t[4 - j][j];
+      }
+      for (int i = 0; i < 5; ++i) {
+        right[i] = rgt[i];
+        left[i] = l[i];
+      }
+      depth_of[top] = depth_of[top + 1] = depth + 1;
+      ++top;
+    }
+    return true;
   }
 
   void derive() {
@@ -259,6 +328,16 @@ struct KerrMinoSystem {
     if (!(outward > 0.0) || !k.no_radial_turning_point_beyond(1.0 / w)) return false;
     radius = 1.0 / w;
     return true;
+  }
+  /// Capture (integrators.h, capture.h): below SolverConfig::capture_radius (|p| = r in BL),
+  /// moving inward in the direction of integration, with R > 0 all the way down to the break
+  /// radius 1/w_break, where the integration would stop with Invalid.
+  bool captured(const SolverConfig& c, const double* y) const {
+    const double w = y[I::W];
+    if (!(w * c.capture_radius > 1.0) || c.type != GeodesicType::Lightlike) return false;
+    const double inward = (c.direction >= 0 ? 1.0 : -1.0) * y[I::DW];  // ∝ −dr/dσ = w'/w²
+    if (!(inward > 0.0) || !capture_unobstructed(c, 1.0 / w_break)) return false;
+    return k.radial_potential_positive_on(1.0 / w_break, 1.0 / w);
   }
   /// After an accepted step: a ray that crossed the equator is re-expressed relative to the other
   /// pole, ζ ← ζ + 2p (the derivative, z', is unchanged; the step's endpoints were reported in the

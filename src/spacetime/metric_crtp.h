@@ -17,6 +17,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "spacetime/capture.h"
 #include "spacetime/escape.h"
 #include "spacetime/fast_math.h"
 #include "spacetime/integrators.h"
@@ -142,6 +143,14 @@ MetricKernel MetricKernel::of(const M& m) {
           };
         else
           return static_cast<bool (*)(V, const Vec4&, const Vec4&, double, double&)>(nullptr);
+      }(),
+      [] {
+        if constexpr (requires(const M& mm, const Vec4& v, const SolverConfig& c) { mm.captures(v, v, c); })
+          return +[](V p, const Vec4& x, const Vec4& k, const SolverConfig& c) {
+            return static_cast<const M*>(p)->captures(x, k, c);
+          };
+        else
+          return static_cast<bool (*)(V, const Vec4&, const Vec4&, const SolverConfig&)>(nullptr);
       }(),
       [] {
         if constexpr (requires(const M& mm, const Vec4& v, const Mat4& g) { mm.constraint_norm(v, g, v); })

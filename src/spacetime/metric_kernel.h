@@ -1,6 +1,6 @@
 // A concrete metric seen through a table of plain function pointers: what the ODE systems of
 // integrators.h ask of a metric (g_{μν}, Γ, Γ with its derivatives, −Γkk, the validity domain and
-// the optional break, escape, constraint-norm and rescaling rules of metric_crtp.h), without its type.
+// the optional break, escape, capture, constraint-norm and rescaling rules of metric_crtp.h), without its type.
 //
 // Why: the integrators are templates over the metric. Instantiated for every metric, system and
 // stepper, they made each metric file take 15–27 s to compile. Instead, the systems and steppers
@@ -37,6 +37,7 @@ struct MetricKernelOps {
   /// Optional rules (null when the metric has none; see MetricSystem in integrators.h).
   bool (*leaves_chart)(const void* m, const Vec4& x, const Vec4& k);
   bool (*escapes)(const void* m, const Vec4& x, const Vec4& k, double r_min, double& radius);
+  bool (*captures)(const void* m, const Vec4& x, const Vec4& k, const SolverConfig& c);
   double (*constraint_norm)(const void* m, const Vec4& x, const Mat4& g, const Vec4& k);
   void (*rescale_null_direction)(const void* m, double* k);
 };
@@ -61,6 +62,9 @@ class MetricKernel {
   }
   bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
     return ops_->escapes != nullptr && ops_->escapes(m_, x, k, r_min, radius);
+  }
+  bool captures(const Vec4& x, const Vec4& k, const SolverConfig& c) const {
+    return ops_->captures != nullptr && ops_->captures(m_, x, k, c);
   }
   /// The metric's own size of k, or MetricSystem's generic one Σ_{μν} |g_μν k^μ k^ν|.
   double constraint_norm(const Vec4& x, const Mat4& g, const Vec4& k) const {

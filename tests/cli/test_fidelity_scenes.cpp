@@ -47,7 +47,7 @@ TEST_P(FidelityScene, MatchesGeoViSReference) {
     GTEST_SKIP() << "known difference (docs/geovis-differences.md, RGBjac near an extremal horizon): at 200x200 "
                     "4.3 % of the pixels differ and 0.70 % have no match in 3x3 (the rule allows 4 % and 0.5 %), "
                     "all of them at the edge of the shadow, where GeoViS's rays end by exhausting maxNumPoints in "
-                    "its Jacobi system (background colour) instead of at the horizon (constraint colour); ~75 s "
+                    "its Jacobi system (background colour) instead of at the horizon (constraint colour); ~30 s "
                     "of CPU";
   const Image reference = read_image((kData / (name + ".geovis.png")).string());
   const std::string out = (dir_ / (name + ".png")).string();

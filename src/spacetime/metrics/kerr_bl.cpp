@@ -209,6 +209,13 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     return true;
   }
 
+  /// Capture (capture.h) in the coordinate form: inward, with the radial potential of the ray's
+  /// constants positive down to the break radius (KerrMinoConstants::radial_potential_positive_on).
+  bool captures(const Vec4& x, const Vec4& k, const SolverConfig& c) const {
+    if (!(x[1] < c.capture_radius && k[1] < 0.0) || !capture_unobstructed(c, r_break_)) return false;
+    return kerr_mino_constants(mass_, a_, x, k, 0.0).radial_potential_positive_on(r_break_, x[1]);
+  }
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     const double r = x[1];

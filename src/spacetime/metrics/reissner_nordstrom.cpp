@@ -77,6 +77,15 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
     return escapes_spherical(x[1], k[1], r_photon, r_min, x[1], radius);
   }
 
+  /// Capture (capture.h), only with a horizon (|Q| ≤ M): (h²)' above has the roots
+  /// (3M ± √(9M² − 8Q²))/2, the smaller one at or below r+ (equal for |Q| = M), so h decreases on
+  /// (r+, outer photon sphere); A B = 1. r is |p|.
+  bool captures(const Vec4& x, const Vec4& k, const SolverConfig& c) const {
+    if (!(r_plus_ > 0.0)) return false;
+    const double r_photon = 0.5 * (3.0 * M_ + std::sqrt(9.0 * M_ * M_ - 8.0 * Q2_));
+    return captured_spherical(x[1], k[1], r_photon, c.capture_radius) && capture_unobstructed(c, r_min_);
+  }
+
   /// Effective potential, circular orbits and embedding (static_spherical.h) from r_+ (or, for a
   /// naked singularity, from r_min) outwards.
   std::vector<MetricFunction> functions() const override {

@@ -87,6 +87,12 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
     return escapes_spherical(x[1], k[1], 1.5 * rs_, r_min, x[1], radius);
   }
 
+  /// Capture (capture.h): h² = r³/(r − r_s) decreases from the horizon up to the photon sphere
+  /// r = 1.5 r_s ((h²)' = r²(2r − 3r_s)/(r − r_s)², A B = 1); r is |p|.
+  bool captures(const Vec4& x, const Vec4& k, const SolverConfig& c) const {
+    return captured_spherical(x[1], k[1], 1.5 * rs_, c.capture_radius) && capture_unobstructed(c, r_break_);
+  }
+
   /// Effective potential, circular orbits (β² = M/(r − 2M)) and embedding z = √(8M(r − 2M))
   /// (static_spherical.h) from the horizon outwards.
   std::vector<MetricFunction> functions() const override {
