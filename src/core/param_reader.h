@@ -21,6 +21,7 @@ class ParamReader {
   bool has(std::string_view key) const { return ps_.has(key); }
 
   // Typed reads: the scene's value, else the spec's default, else (no default) the key is required.
+  // A number outside the spec's range is a SceneError (as in ParamSet::validate).
   bool boolean(std::string_view key) const;
   double number(std::string_view key) const;
   int integer(std::string_view key) const;

@@ -58,6 +58,22 @@ TEST(ParamSpecRange, ValidateRejectsNumbersOutsideTheRange) {
   EXPECT_THROW(negative.validate(s, diag), SceneError);
 }
 
+TEST(ParamReader, ReadsOnlyNumbersInTheRange) {
+  // Factories called without validate (tests, builder-internal reads) still see the range.
+  const auto s = specs();
+  ParamSet ps("init-camera", SourceLoc{"a.scm", 5});
+  ps.add("sep", -0.5);
+  ps.add("fov", std::vector<double>{0, 30});
+  EXPECT_THROW(ParamReader(ps, s).number("sep"), SceneError);
+  try {
+    ParamReader(ps, s).vector("fov", 2);
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("a.scm:5: init-camera: fov: expected numbers in (0, 180)"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(ParamSpecRange, TextAndDefaultTextAreWhatTheReferencePrints) {
   EXPECT_EQ((ParamRange{0, 180, true, true}.text()), "(0, 180)");
   EXPECT_EQ(ParamRange::non_negative().text(), "[0, inf)");
