@@ -9,13 +9,13 @@ ParamSpec camera_resolution_key(double width, double height) {
           std::vector<double>{width, height}, ParamRange{1, 1e6}};
 }
 
-std::vector<ParamSpec> camera_view_keys() {
+std::vector<ParamSpec> camera_view_keys(ParamRange fov_range) {
   using T = ParamType;
   return {{"dir", T::Vec3, "viewing direction in the observer's local frame", false, false,
            std::vector<double>{-1, 0, 0}},
           {"vup", T::Vec3, "up vector in the local frame", false, false, std::vector<double>{0, 0, 1}},
           {"fov", T::Vec2, "field of view #(horizontal vertical) in degrees", false, false,
-           std::vector<double>{60, 48}, ParamRange{0, 180, true, true}}};
+           std::vector<double>{60, 48}, fov_range}};
 }
 
 std::vector<ParamSpec> camera_common_keys() {

@@ -22,8 +22,9 @@ using CameraRegistry = TypeRegistry<CameraType>;
 
 /// `res` with the given default resolution (GeoViS: #(720 576); 2PICam #(100 100)).
 ParamSpec camera_resolution_key(double width, double height);
-/// dir, vup, fov: the view of the pinhole-like cameras (PinHoleCam, PinHoleStereoCam, PanoramaCam).
-std::vector<ParamSpec> camera_view_keys();
+/// dir, vup, fov: the view of the pinhole-like cameras (PinHoleCam, PinHoleStereoCam, PanoramaCam);
+/// `fov_range` is the camera's (a pinhole's (0, 180), a panorama's (0, 360]).
+std::vector<ParamSpec> camera_view_keys(ParamRange fov_range);
 /// type, id, filter, param: the keys every camera has.
 std::vector<ParamSpec> camera_common_keys();
 

@@ -51,7 +51,7 @@ namespace {
 // GeoViS PanoramaCam (docs/geovis-catalogue.md §2).
 const TypeRegistrar<CameraType> registrar{
     {{"PanoramaCam", {}, "panorama camera: cylindrical mapping of longitude and latitude around dir", [] {
-        auto keys = camera_view_keys();
+        auto keys = camera_view_keys(ParamRange{0, 360, true, false});
         keys.insert(keys.begin(), camera_resolution_key(720, 576));
         return keys;
       }()},

@@ -68,7 +68,7 @@ namespace {
 // GeoViS PinHoleCam (docs/geovis-catalogue.md §2).
 const TypeRegistrar<CameraType> registrar{
     {{"PinHoleCam", {}, "pinhole camera: perspective image of the viewing direction dir", [] {
-        auto keys = camera_view_keys();
+        auto keys = camera_view_keys(ParamRange{0, 180, true, true});
         keys.insert(keys.begin(), camera_resolution_key(720, 576));
         return keys;
       }()},
