@@ -43,7 +43,17 @@ const std::vector<SolverInfo>& solver_names() {
   return names;
 }
 
-SolverKind solver_kind_from_name(const std::string& name) { return SolverRegistry::instance().get(name, "solver").kind; }
+SolverKind solver_kind_from_name(const std::string& name) {
+  const auto& registry = SolverRegistry::instance();
+  if (const SolverType* t = registry.find(name)) return t->kind;
+  // GeoViS scenes name integrators by their nicknames, so those are listed too (the full Motion4D
+  // names, with spaces, are in the scene reference).
+  std::vector<std::string> valid;
+  for (const std::string& n : registry.names_and_aliases())
+    if (n.find(' ') == std::string::npos) valid.push_back(n);
+  throw Error("unknown solver \"" + name + "\"" + did_you_mean(name, registry.names_and_aliases()) +
+              " (valid solvers: " + join(valid) + ")");
+}
 
 namespace {
 const SolverType& solver_type_of(SolverKind k) {
