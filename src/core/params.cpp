@@ -68,6 +68,47 @@ std::string Value::describe() const {
   return os.str();
 }
 
+bool ParamRange::contains(double x) const {
+  if (std::isnan(x)) return false;
+  const bool above = open_min ? x > min : x >= min;
+  const bool below = open_max ? x < max : x <= max;
+  return above && below;
+}
+
+namespace {
+std::string number_text(double x) {
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+}  // namespace
+
+std::string ParamRange::text() const {
+  return std::string(open_min ? "(" : "[") + number_text(min) + ", " + number_text(max) + (open_max ? ")" : "]");
+}
+
+std::string param_default_text(const ParamSpec& spec) {
+  if (!spec.def) return {};
+  struct V {
+    std::string operator()(std::monostate) const { return {}; }
+    std::string operator()(bool b) const { return b ? "#t" : "#f"; }
+    std::string operator()(double d) const { return number_text(d); }
+    std::string operator()(const std::string& s) const { return "\"" + s + "\""; }
+    std::string operator()(const std::vector<double>& v) const {
+      std::string out = "#(";
+      for (size_t i = 0; i < v.size(); ++i) {
+        if (i) out += ' ';
+        out += number_text(v[i]);
+      }
+      return out + ")";
+    }
+    std::string operator()(const Transform&) const { return "identity"; }
+    std::string operator()(const ValueList& l) const { return l.empty() ? "()" : "a list"; }
+  };
+  return std::visit(V{}, spec.def->v);
+}
+
 std::string_view param_type_name(ParamType t) {
   switch (t) {
     case ParamType::Bool: return "a boolean (#t or #f)";
@@ -229,8 +270,7 @@ Transform ParamSet::get_transform(std::string_view key, std::optional<Transform>
                 p->value.describe());
 }
 
-namespace {
-bool shape_ok(ParamType t, const Value& v) {
+bool value_has_shape(ParamType t, const Value& v) {
   auto vec_size = [&]() -> long {
     if (auto* x = std::get_if<std::vector<double>>(&v.v)) return static_cast<long>(x->size());
     return -1;
@@ -257,7 +297,6 @@ bool shape_ok(ParamType t, const Value& v) {
   }
   return true;
 }
-}  // namespace
 
 void ParamSet::validate(const std::vector<ParamSpec>& specs, Diagnostics& diag) const {
   std::vector<std::string> names;
@@ -273,9 +312,19 @@ void ParamSet::validate(const std::vector<ParamSpec>& specs, Diagnostics& diag) 
                 "unknown key, ignored" + did_you_mean(p.key, names) + " (valid keys: " + join(names) + ")");
       continue;
     }
-    if (!shape_ok(spec->type, p.value))
+    if (!value_has_shape(spec->type, p.value))
       throw SceneError(where, command_, p.key,
                        "expected " + std::string(param_type_name(spec->type)) + ", found " + p.value.describe());
+    if (spec->range) {
+      std::vector<double> numbers;
+      if (p.value.is_number()) numbers.push_back(std::get<double>(p.value.v));
+      if (p.value.is_vector()) numbers = std::get<std::vector<double>>(p.value.v);
+      for (double x : numbers)
+        if (!spec->range->contains(x))
+          throw SceneError(where, command_, p.key,
+                           "expected " + std::string(p.value.is_vector() ? "numbers" : "a number") + " in " +
+                               spec->range->text() + ", found " + p.value.describe());
+    }
     if (!spec->repeatable && find_all(p.key).size() > 1 && &p != find(p.key))
       throw SceneError(where, command_, p.key, "this key may be given only once");
   }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -63,6 +64,22 @@ struct Value {
 /// Expected shape of a parameter, used for validation and for `geovis metrics`-style listings.
 enum class ParamType { Bool, Number, Int, String, Vec2, Vec3, Vec4, Vec5, IntVec2, Transform, List, Any };
 std::string_view param_type_name(ParamType t);
+/// Whether `v` is a value of type `t` (what ParamSet::validate checks).
+bool value_has_shape(ParamType t, const Value& v);
+
+/// The numbers a key accepts: every number of its value (each component of a vector) lies in
+/// [min, max], or in the open side when `open_min`/`open_max` is set.
+struct ParamRange {
+  double min;
+  double max;
+  bool open_min = false;
+  bool open_max = false;
+  static ParamRange positive() { return {0, std::numeric_limits<double>::infinity(), true, true}; }      ///< (0, inf)
+  static ParamRange non_negative() { return {0, std::numeric_limits<double>::infinity(), false, true}; }  ///< [0, inf)
+  [[nodiscard]] bool contains(double x) const;
+  /// "[0, 1]", "(0, 0.5)", "(0, inf)": the interval as the scene reference prints it.
+  [[nodiscard]] std::string text() const;
+};
 
 /// Declaration of one key a plugin accepts.
 struct ParamSpec {
@@ -71,7 +88,14 @@ struct ParamSpec {
   std::string doc;
   bool required = false;
   bool repeatable = false;  ///< e.g. `texture`, `obj`, `light`, `setparam`
+  /// The value the factory uses when the key is absent; factories read it from here (ParamReader),
+  /// so the scene reference shows the default the code uses.
+  std::optional<Value> def = {};
+  std::optional<ParamRange> range = {};  ///< checked by ParamSet::validate
 };
+
+/// The default of a spec as the scene reference prints it: "60", "#(-1 0 0)", "\"linear\"", "#f".
+std::string param_default_text(const ParamSpec& spec);
 
 struct Param {
   std::string key;  ///< lower case
@@ -119,8 +143,8 @@ class ParamSet {
   [[noreturn]] void fail(std::string_view key, std::string_view message) const;
 
   /// Checks keys against `specs`: an unknown key is a warning (error when diag.strict) with the
-  /// closest valid key; a repeated non-repeatable key, a missing required key or a value of the
-  /// wrong shape is an error.
+  /// closest valid key; a repeated non-repeatable key, a missing required key, a value of the
+  /// wrong shape or a number outside the spec's range is an error.
   void validate(const std::vector<ParamSpec>& specs, Diagnostics& diag) const;
 
  private:

@@ -25,6 +25,11 @@ struct LocalTetrad {
 class BuildContext {
  public:
   Diagnostics* diag = nullptr;
+  /// `*diag`, or a sink of this thread when none is set (factories used outside a scene build).
+  Diagnostics& diagnostics() {
+    static thread_local Diagnostics fallback;
+    return diag ? *diag : fallback;
+  }
   std::vector<std::string> search_paths;  ///< scene folder, --texture-path dirs, working dir
   std::shared_ptr<const Metric> metric;   ///< the metric of the device being built
 

@@ -1,4 +1,6 @@
-// Builds cameras from `init-camera` parameter sets (catalogue §1/§2): keys, defaults, filters.
+// Builds cameras from `init-camera` parameter sets (docs/geovis-catalogue.md §1/§2). The camera
+// types and their keys come from the CameraRegistry (render/camera_type.h; each camera's .cpp
+// registers itself), the filters from the FilterRegistry (render/filter_type.h).
 #pragma once
 
 #include <memory>
@@ -11,15 +13,15 @@
 
 namespace geovis {
 
-/// GeoViS camera type names: PinHoleCam, PinHoleStereoCam, PanoramaCam, 4PICam, 2PICam.
+/// The registered camera types (GeoViS: PinHoleCam, PinHoleStereoCam, PanoramaCam, 4PICam, 2PICam), sorted.
 const std::vector<std::string>& camera_type_names();
 
 /// Keys `init-camera` accepts for the given camera type (type, id, res, filter, param and the
 /// type's own keys). Unknown type -> Error with the closest valid name.
 std::vector<ParamSpec> camera_param_specs(const std::string& type);
 
-/// GeoViS filter names (FilterRGB, FilterRGBpdz, FilterRGBjac, FilterRGBpt, FilterIntersec; the
-/// alias FilterRGBIntersec is accepted too).
+/// The registered filter names (FilterRGB, FilterRGBpdz, FilterRGBjac, FilterRGBpt, FilterIntersec;
+/// the alias FilterRGBIntersec is accepted too), sorted.
 const std::vector<std::string>& filter_names();
 const char* filter_name(Filter f);
 /// Unknown name -> Error with the closest valid one.

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "render/local_object.h"
+#include "render/object_type.h"
 
 namespace geovis {
 
@@ -115,5 +116,56 @@ double CompoundObject::inner_radius() const {
   for (const auto& c : children_) r = std::min(r, c->inner_radius());
   return r;
 }
+
+// ---- registration (docs/geovis-catalogue.md §4) -------------------------------------------------
+
+namespace {
+
+/// The objects of every `obj` key. GeoViS ignores objtype when intersecting: an object of
+/// gpObjTypeLocal inside a plain group is placed in coordinates like any other (appViewMovBall.scm).
+std::vector<SceneObjectPtr> group_children(const ParamSet& ps, BuildContext& ctx) {
+  std::vector<SceneObjectPtr> out;
+  for (const auto& id : ps.get_strings("obj")) out.push_back(ctx.lookup(ctx.objects, id, ps, "obj", "object"));
+  return out;
+}
+
+const TypeRegistrar<ObjectType> comp_object{
+    {{"comp-object", {}, "a group of objects",
+      {{"obj", ParamType::String, "object id", false, true},
+       {"transform", ParamType::Transform, "transform of the whole group"},
+       {"id", ParamType::String, "object id"}}},
+     [](const ParamReader& keys, BuildContext& ctx) -> SceneObjectPtr {
+       const ParamSet& ps = keys.params();
+       auto comp = std::make_shared<CompoundObject>(group_children(ps, ctx));
+       if (ps.has("transform")) {
+         try {
+           comp->set_transform(ps.get_transform("transform"));
+         } catch (const SceneError&) {
+           throw;
+         } catch (const Error& e) {
+           ps.fail("transform", e.what());
+         }
+       }
+       comp->id = ps.get_string("id", "");
+       return comp;
+     },
+     true}};
+
+const TypeRegistrar<ObjectType> comp_octree_object{
+    {{"comp-octree-object", {}, "a group of objects in an octree (a BVH is used instead)",
+      {{"obj", ParamType::String, "object id", false, true},
+       {"lower", ParamType::Vec3, "octree box corner (a BVH is used instead)"},
+       {"upper", ParamType::Vec3, "octree box corner (a BVH is used instead)"},
+       {"subdivs", ParamType::Int, "octree subdivisions (a BVH is used instead)", false, false, {},
+        ParamRange::non_negative()},
+       {"id", ParamType::String, "object id"}}},
+     [](const ParamReader& keys, BuildContext& ctx) -> SceneObjectPtr {
+       auto comp = std::make_shared<CompoundObject>(group_children(keys.params(), ctx));
+       comp->id = keys.params().get_string("id", "");
+       return comp;
+     },
+     true}};
+
+}  // namespace
 
 }  // namespace geovis

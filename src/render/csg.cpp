@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "render/local_object.h"
+#include "render/object_type.h"
+
 namespace geovis {
 
 namespace {
@@ -94,5 +97,64 @@ Bounds3 CsgObject::bounds() const {
   r.hi = {std::min(ba.hi.x, bb.hi.x), std::min(ba.hi.y, bb.hi.y), std::min(ba.hi.z, bb.hi.z)};
   return r;
 }
+
+// ---- registration (docs/geovis-catalogue.md §4) -------------------------------------------------
+
+namespace {
+
+SceneObjectPtr make_csg(const ParamReader& keys, BuildContext& ctx) {
+  const ParamSet& ps = keys.params();
+  int type = keys.integer("csgtype");
+  if (type == 0) {
+    ctx.diagnostics().warn(ps.loc(), ps.command(), "csgtype",
+                           "missing or 0: using difference (1), as GeoViS does (valid: 1 difference, 2 union, 3 "
+                           "intersection)");
+    type = 1;
+  }
+  if (type < 1 || type > 3)
+    ps.fail("csgtype", "expected 1 (difference), 2 (union) or 3 (intersection), found " + std::to_string(type));
+  const std::string id1 = ps.get_string("obj1"), id2 = ps.get_string("obj2");
+  const SceneObjectPtr& a = ctx.lookup(ctx.objects, id1, ps, "obj1", "object");
+  const SceneObjectPtr& b = ctx.lookup(ctx.objects, id2, ps, "obj2", "object");
+  auto moving_a = std::dynamic_pointer_cast<const LocalObject>(a);
+  auto moving_b = std::dynamic_pointer_cast<const LocalObject>(b);
+  SceneObjectPtr sa = a, sb = b;
+  if (moving_a || moving_b) {
+    // Both solids must move together: the CSG is then built in their common rest frame and
+    // moved as a whole.
+    if (!moving_a || !moving_b || !moving_a->frame().moving() || !moving_b->frame().moving() ||
+        moving_a->frame().motion() != moving_b->frame().motion())
+      ps.fail("obj2", "\"" + id1 + "\" and \"" + id2 +
+                          "\" must both be solids at rest in coordinates or both move with the same motion");
+    sa = moving_a->child();
+    sb = moving_b->child();
+  }
+  auto solid_a = std::dynamic_pointer_cast<const Solid>(sa);
+  auto solid_b = std::dynamic_pointer_cast<const Solid>(sb);
+  if (!solid_a) ps.fail("obj1", "\"" + id1 + "\" is not a solid (csg-object combines solid-* objects and csg-objects)");
+  if (!solid_b) ps.fail("obj2", "\"" + id2 + "\" is not a solid (csg-object combines solid-* objects and csg-objects)");
+  auto csg = std::make_shared<CsgObject>(static_cast<CsgOp>(type), solid_a, solid_b);
+  csg->id = ps.get_string("id", "");
+  if (moving_a) {
+    auto moving = std::make_shared<LocalObject>(csg, moving_a->frame());
+    moving->id = csg->id;
+    moving->chart = csg->chart;
+    return moving;
+  }
+  return csg;
+}
+
+// GeoViS lets a per-frame change set a CSG object's transform; ours has none yet (its solids'
+// normals are computed in their own parent frame), so such a change is an error, not ignored.
+const TypeRegistrar<ObjectType> registrar{
+    {{"csg-object", {}, "union, difference or intersection of two solids",
+      {{"csgtype", ParamType::Int, "1 difference, 2 union, 3 intersection (0: difference, with a warning)", false,
+        false, 0.0},
+       {"obj1", ParamType::String, "first solid", true},
+       {"obj2", ParamType::String, "second solid", true},
+       {"id", ParamType::String, "object id"}}},
+     make_csg, true}};
+
+}  // namespace
 
 }  // namespace geovis

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "render/camera_type.h"
 
 namespace geovis {
 
@@ -75,5 +76,17 @@ void DomeCamera::set_param(std::string_view name, const Value& value) {
   (n == "heading" ? heading_deg_ : pitch_deg_) = a;
   install();
 }
+
+namespace {
+// GeoViS 2PICam (docs/geovis-catalogue.md §2): square, only res[0] is used.
+const TypeRegistrar<CameraType> registrar{
+    {{"2PICam", {}, "dome (fisheye) camera: the half sky around heading and pitch on a square image",
+      {camera_resolution_key(100, 100),
+       {"heading", ParamType::Number, "heading of the dome centre in degrees", false, false, 0.0},
+       {"pitch", ParamType::Number, "pitch of the dome centre in degrees", false, false, 0.0}}},
+     [](const ParamReader& keys, int width, int) -> std::shared_ptr<Camera> {
+       return std::make_shared<DomeCamera>(keys.number("heading"), keys.number("pitch"), width);
+     }}};
+}  // namespace
 
 }  // namespace geovis

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "render/camera_type.h"
 
 namespace geovis {
 
@@ -31,5 +32,16 @@ void FullSkyCamera::set_param(std::string_view name, const Value& value) {
   if (!std::isfinite(a)) throw ParameterError("4PICam", "angle", "expected a finite number, found " + value.describe());
   angle_deg_ = a;
 }
+
+namespace {
+// GeoViS 4PICam (docs/geovis-catalogue.md §2).
+const TypeRegistrar<CameraType> registrar{
+    {{"4PICam", {}, "full-sky camera: equirectangular image of all directions",
+      {camera_resolution_key(720, 576),
+       {"angle", ParamType::Number, "rotation about the local z axis in degrees", false, false, 0.0}}},
+     [](const ParamReader& keys, int width, int height) -> std::shared_ptr<Camera> {
+       return std::make_shared<FullSkyCamera>(keys.number("angle"), width, height);
+     }}};
+}  // namespace
 
 }  // namespace geovis

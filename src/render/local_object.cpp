@@ -5,6 +5,8 @@
 #include <limits>
 
 #include "core/error.h"
+#include "render/compound.h"
+#include "render/object_type.h"
 #include "spacetime/motion_const_velocity.h"
 
 namespace geovis {
@@ -427,5 +429,52 @@ bool PseudoCartesianMotionObject::intersect(const Segment& seg, Hit& hit) const 
   hit.emitter_u = Vec4{{0, 0, 0, 0}};
   return true;
 }
+
+// ---- registration (docs/geovis-catalogue.md §4) -------------------------------------------------
+
+namespace {
+
+SceneObjectPtr make_local_comp(const ParamReader& keys, BuildContext& ctx) {
+  const ParamSet& ps = keys.params();
+  const bool has_tetrad = ps.has("localtetrad"), has_motion = ps.has("motion");
+  if (has_tetrad == has_motion)
+    ps.fail(has_tetrad ? "motion" : "localtetrad",
+            has_tetrad ? "give either localtetrad or motion, not both" : "needs a static localtetrad or a motion");
+  std::vector<SceneObjectPtr> children;
+  for (const auto& id : ps.get_strings("obj")) {
+    const SceneObjectPtr& o = ctx.lookup(ctx.objects, id, ps, "obj", "object");
+    if (object_type_of(*o) != ObjType::Local)
+      ctx.diagnostics().warn(ps.loc(), ps.command(), "obj",
+                             "object \"" + id + "\" has objtype gpObjTypeInCoords; inside local-comp-object it is "
+                             "interpreted in the local frame");
+    children.push_back(o);
+  }
+  SceneObjectPtr child = children.size() == 1 ? children[0] : std::make_shared<CompoundObject>(children);
+  auto metric = require_metric(ps, ctx, has_motion ? "motion" : "localtetrad");
+  try {
+    auto obj = has_motion
+                   ? std::make_shared<LocalObject>(child, LocalFrame(metric, ctx.ref(ctx.motions, ps, "motion", "motion")))
+                   : std::make_shared<LocalObject>(
+                         child, LocalFrame(metric, ctx.ref(ctx.tetrads, ps, "localtetrad", "local tetrad")));
+    obj->id = ps.get_string("id", "");
+    return obj;
+  } catch (const SceneError&) {
+    throw;
+  } catch (const Error& e) {
+    ps.fail("obj", e.what());
+  }
+}
+
+const TypeRegistrar<ObjectType> registrar{
+    {{"local-comp-object", {}, "objects given in a local tetrad frame, riding on a motion",
+      {{"obj", ParamType::String, "object of gpObjTypeLocal", true, true},
+       {"localtetrad", ParamType::String, "static local tetrad id"},
+       {"motion", ParamType::String, "motion id"},
+       {"timeboxsize", ParamType::Number,
+        "accepted for GeoViS compatibility (world tube from the motion's samples)"},
+       {"id", ParamType::String, "object id"}}},
+     make_local_comp, true}};
+
+}  // namespace
 
 }  // namespace geovis

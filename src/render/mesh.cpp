@@ -3,6 +3,9 @@
 #include <tiny_obj_loader.h>
 
 #include "core/error.h"
+#include "core/rotation.h"
+#include "io/image.h"
+#include "render/object_type.h"
 
 namespace geovis {
 
@@ -122,5 +125,42 @@ bool MeshObject::intersect(const Segment& seg, Hit& hit) const {
   hit.part = 0;
   return true;
 }
+
+// ---- registration (docs/geovis-catalogue.md §4) -------------------------------------------------
+
+namespace {
+
+const TypeRegistrar<ObjectType> registrar{
+    {{"mesh-obj", {}, "a triangle mesh from a Wavefront OBJ file",
+      primitive_keys_and({{"filename", ParamType::String, "Wavefront OBJ file", true},
+                          {"pathname", ParamType::String, "folder of the file", false, false, std::string()},
+                          {"rotate", ParamType::Vec4, "#(angle_deg ax ay az) rotation before transform"}}),
+      {"objfilename"}},
+     [](const ParamReader& keys, BuildContext& ctx) -> SceneObjectPtr {
+       const std::string file = keys.string("filename");
+       const std::string dir = keys.string("pathname");
+       const std::string name = dir.empty() ? file : dir + "/" + file;
+       std::shared_ptr<MeshObject> mesh;
+       try {
+         mesh = MeshObject::load(find_file(name, ctx.search_paths, "OBJ mesh"));
+       } catch (const SceneError&) {
+         throw;
+       } catch (const Error& e) {
+         keys.fail("filename", e.what());
+       }
+       if (!keys.has("rotate")) return finish_primitive(keys, ctx, mesh);
+       const auto r = keys.vector("rotate", 4);
+       Vec3 axis{r[1], r[2], r[3]};
+       if (norm(axis) == 0) keys.fail("rotate", "expected #(angle_deg ax ay az) with a non-zero axis");
+       axis = normalize(axis);
+       // Rotation about the axis, applied before the transform.
+       Transform rot = Transform::identity(3);
+       const Matrix3 R = rotation_about_axis({axis.x, axis.y, axis.z}, r[0] * kDegToRad);
+       for (int i = 0; i < 3; ++i)
+         for (int j = 0; j < 3; ++j) rot(i, j) = R[i][j];
+       return finish_primitive(keys, ctx, mesh, *mesh, &rot);
+     }}};
+
+}  // namespace
 
 }  // namespace geovis

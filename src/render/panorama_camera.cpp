@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "render/camera_type.h"
 
 namespace geovis {
 
@@ -45,5 +46,20 @@ void PanoramaCamera::set_param(std::string_view name, const Value& value) {
   (n == "dir" ? dir_ : vup_) = nv;
   frame_ = f;
 }
+
+namespace {
+// GeoViS PanoramaCam (docs/geovis-catalogue.md §2).
+const TypeRegistrar<CameraType> registrar{
+    {{"PanoramaCam", {}, "panorama camera: cylindrical mapping of longitude and latitude around dir", [] {
+        auto keys = camera_view_keys(ParamRange{0, 360, true, false});
+        keys.insert(keys.begin(), camera_resolution_key(720, 576));
+        return keys;
+      }()},
+     [](const ParamReader& keys, int width, int height) -> std::shared_ptr<Camera> {
+       const auto fov = keys.vector("fov", 2), dir = keys.vector("dir", 3), vup = keys.vector("vup", 3);
+       return std::make_shared<PanoramaCamera>(Vec3{dir[0], dir[1], dir[2]}, Vec3{vup[0], vup[1], vup[2]}, fov[0],
+                                               fov[1], width, height);
+     }}};
+}  // namespace
 
 }  // namespace geovis

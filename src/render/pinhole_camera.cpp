@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "core/error.h"
+#include "render/camera_type.h"
 
 namespace geovis {
 
@@ -62,5 +63,20 @@ void PinholeCamera::set_param(std::string_view name, const Value& value) {
     unknown_param(name);
   }
 }
+
+namespace {
+// GeoViS PinHoleCam (docs/geovis-catalogue.md §2).
+const TypeRegistrar<CameraType> registrar{
+    {{"PinHoleCam", {}, "pinhole camera: perspective image of the viewing direction dir", [] {
+        auto keys = camera_view_keys(ParamRange{0, 180, true, true});
+        keys.insert(keys.begin(), camera_resolution_key(720, 576));
+        return keys;
+      }()},
+     [](const ParamReader& keys, int width, int height) -> std::shared_ptr<Camera> {
+       const auto fov = keys.vector("fov", 2);
+       return std::make_shared<PinholeCamera>(to_vec3(keys.vector("dir", 3)), to_vec3(keys.vector("vup", 3)), fov[0],
+                                              fov[1], width, height);
+     }}};
+}  // namespace
 
 }  // namespace geovis

@@ -1,8 +1,11 @@
 #include "render/shapes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+
+#include "render/object_type.h"
 
 namespace geovis {
 
@@ -491,5 +494,129 @@ Bounds3 Parallelogram::local_bounds() const {
   b.expand(p1), b.expand(p2), b.expand(p3), b.expand(p2 + p3 - p1);
   return b;
 }
+
+// ---- registration (docs/geovis-catalogue.md §4; keys and defaults of GeoViS Parser/parse_*.cpp) ----------
+
+namespace {
+
+using T = ParamType;
+
+const TypeRegistrar<ObjectType> ellipsoid{
+    {{"solid-ellipsoid", {}, "an ellipsoid (sphere)",
+      primitive_keys_and({{"center", T::Vec3, "centre", false, false, std::vector<double>{0, 0, 0}},
+                          {"axlen", T::Vec3, "semi-axes", false, false, std::vector<double>{1, 1, 1},
+                           ParamRange::positive()}}),
+      {"axlen", "transform"}},
+     [](const ParamReader& keys, BuildContext& ctx) {
+       return finish_primitive(keys, ctx, std::make_shared<Ellipsoid>(vec3_key(keys, "center"), vec3_key(keys, "axlen")));
+     }}};
+
+const TypeRegistrar<ObjectType> background{
+    {{"solid-background", {}, "the sky: a textured sphere at coordinate radius", primitive_keys(false)},
+     [](const ParamReader& keys, BuildContext& ctx) {
+       return finish_primitive(keys, ctx, std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{1, 1, 1}));
+     }}};
+
+const TypeRegistrar<ObjectType> box{
+    {{"solid-box", {}, "a box",
+      primitive_keys_and({{"cornerll", T::Vec3, "first corner", true}, {"cornerur", T::Vec3, "opposite corner", true}}),
+      {"transform"}},
+     [](const ParamReader& keys, BuildContext& ctx) {
+       const Vec3 a = vec3_key(keys, "cornerll"), b = vec3_key(keys, "cornerur");
+       for (int i = 0; i < 3; ++i)
+         if (a[i] == b[i]) keys.fail("cornerur", "the box has zero extent along axis " + std::to_string(i));
+       return finish_primitive(keys, ctx, std::make_shared<Box>(a, b));
+     }}};
+
+std::vector<ParamSpec> cylinder_keys() {
+  return {{"base", T::Vec3, "centre of the base", true},
+          {"top", T::Vec3, "centre of the top", true},
+          {"radii", T::Vec2, "the two radii", true, false, {}, ParamRange::positive()}};
+}
+
+const TypeRegistrar<ObjectType> cylinder{
+    {{"solid-cylinder", {}, "a cylinder between base and top", primitive_keys_and(cylinder_keys()), {"transform"}},
+     [](const ParamReader& keys, BuildContext& ctx) {
+       const Vec3 base = vec3_key(keys, "base"), top = vec3_key(keys, "top");
+       if (norm(top - base) == 0) keys.fail("top", "top equals base: the cylinder has no height");
+       const auto r = keys.vector("radii", 2);
+       return finish_primitive(keys, ctx, std::make_shared<Cylinder>(base, top, r[0], r[1]));
+     }}};
+
+const TypeRegistrar<ObjectType> ring{
+    {{"solid-ring", {}, "a thick ring (hollow cylinder)", [] {
+        auto keys = primitive_keys_and(cylinder_keys());
+        keys.push_back({"innerradii", T::Vec2, "inner radii", true, false, {}, ParamRange::positive()});
+        return keys;
+      }(),
+      {"transform"}},
+     [](const ParamReader& keys, BuildContext& ctx) {
+       const Vec3 base = vec3_key(keys, "base"), top = vec3_key(keys, "top");
+       if (norm(top - base) == 0) keys.fail("top", "top equals base: the cylinder has no height");
+       const auto r = keys.vector("radii", 2), ri = keys.vector("innerradii", 2);
+       if (!(ri[0] < r[0] && ri[1] < r[1])) keys.fail("innerradii", "inner radii must be smaller than the radii");
+       return finish_primitive(keys, ctx, std::make_shared<Ring>(base, top, r[0], r[1], ri[0], ri[1]));
+     }}};
+
+const TypeRegistrar<ObjectType> plane_ring{
+    {{"plane-ring", {}, "a flat ring (disk with a hole)",
+      primitive_keys_and(
+          {{"center", T::Vec3, "centre", false, false, std::vector<double>{0, 0, 0}},
+           {"normal", T::Vec3, "normal", false, false, std::vector<double>{0, 0, 1}},
+           {"rout", T::Number, "outer radius", true, false, {}, ParamRange::positive()},
+           {"rin", T::Number, "inner radius (< rout)", false, false, 0.0, ParamRange::non_negative()},
+           {"emitter", T::String,
+            "geovis: velocity of the emitting matter for 1+z: \"rest\" (at rest in the natural frame) or "
+            "\"keplerian\" (thin disk on circular geodesics turning in +phi; spherical coordinates, centre 0, "
+            "normal along z)",
+            false, false, std::string("rest")}}),
+      {"transform"}},
+     [](const ParamReader& keys, BuildContext& ctx) {
+       const Vec3 n = vec3_key(keys, "normal");
+       if (norm(n) == 0) keys.fail("normal", "expected a non-zero normal vector");
+       const double rout = keys.number("rout"), rin = keys.number("rin");
+       if (!(rin < rout)) keys.fail("rin", "expected 0 <= rin < rout, found rin = " + Value(rin).describe());
+       const Vec3 center = vec3_key(keys, "center");
+       auto ring = std::make_shared<PlaneRing>(center, n, rin, rout);
+       if (keys.choice("emitter", {"rest", "keplerian"}, "emitter velocity") == "keplerian") {
+         // circular_orbit_velocity needs the equatorial plane of spherical-like coordinates.
+         if (!ctx.metric || ctx.metric->info().coord_type != CoordType::Spherical)
+           keys.fail("emitter", "\"keplerian\" needs a metric in spherical coordinates (t, r, theta, phi)" +
+                                    (ctx.metric ? std::string(", found ") + ctx.metric->name() : std::string()));
+         if (norm(center) != 0 || n.x != 0 || n.y != 0 || keys.has("transform"))
+           keys.fail("emitter", "\"keplerian\" needs a ring in the equatorial plane: centre #(0 0 0), normal along z, "
+                                "no transform");
+         ring->keplerian_disk = true;
+       }
+       return finish_primitive(keys, ctx, ring);
+     }}};
+
+std::vector<ParamSpec> three_points() {
+  return {{"p1", T::Vec3, "corner", true}, {"p2", T::Vec3, "corner", true}, {"p3", T::Vec3, "corner", true}};
+}
+
+/// p1, p2, p3 of a flat shape; collinear points are a SceneError.
+std::array<Vec3, 3> non_collinear_points(const ParamReader& keys) {
+  const Vec3 p1 = vec3_key(keys, "p1"), p2 = vec3_key(keys, "p2"), p3 = vec3_key(keys, "p3");
+  if (norm(cross(p2 - p1, p3 - p1)) == 0) keys.fail("p3", "the three points are collinear");
+  return {p1, p2, p3};
+}
+
+const TypeRegistrar<ObjectType> triangle{
+    {{"plane-triangle", {}, "a triangle", primitive_keys_and(three_points()), {"transform"}},
+     [](const ParamReader& keys, BuildContext& ctx) {
+       const auto p = non_collinear_points(keys);
+       return finish_primitive(keys, ctx, std::make_shared<Triangle>(p[0], p[1], p[2]));
+     }}};
+
+const TypeRegistrar<ObjectType> parallelogram{
+    {{"plane-parallelogram", {}, "a parallelogram with corners p1, p2, p3 and p2 + p3 - p1",
+      primitive_keys_and(three_points()), {"transform"}, true},
+     [](const ParamReader& keys, BuildContext& ctx) {
+       const auto p = non_collinear_points(keys);
+       return finish_primitive(keys, ctx, std::make_shared<Parallelogram>(p[0], p[1], p[2]));
+     }}};
+
+}  // namespace
 
 }  // namespace geovis

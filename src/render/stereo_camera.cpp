@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "render/camera_type.h"
 
 namespace geovis {
 
@@ -33,5 +34,22 @@ Vec3 PinholeStereoCamera::eye_offset(Eye eye) const {
     default: return {0, 0, 0};
   }
 }
+
+namespace {
+// GeoViS PinHoleStereoCam (docs/geovis-catalogue.md §2): two images, eyes at -+sep/2.
+const TypeRegistrar<CameraType> registrar{
+    {{"PinHoleStereoCam", {}, "two pinhole cameras (left and right eye), one image each", [] {
+        auto keys = camera_view_keys(ParamRange{0, 180, true, true});
+        keys.insert(keys.begin(), camera_resolution_key(720, 576));
+        keys.push_back({"sep", ParamType::Number, "eye separation (per-frame change: eyesep)", false, false, 0.1,
+                        ParamRange::non_negative()});
+        return keys;
+      }()},
+     [](const ParamReader& keys, int width, int height) -> std::shared_ptr<Camera> {
+       const auto fov = keys.vector("fov", 2), dir = keys.vector("dir", 3), vup = keys.vector("vup", 3);
+       return std::make_shared<PinholeStereoCamera>(Vec3{dir[0], dir[1], dir[2]}, Vec3{vup[0], vup[1], vup[2]}, fov[0],
+                                                    fov[1], width, height, keys.number("sep"));
+     }}};
+}  // namespace
 
 }  // namespace geovis

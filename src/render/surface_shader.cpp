@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "render/shader_type.h"
+
 namespace geovis {
 
 double light_attenuation(const Vec3& atten, double dist) {
@@ -43,5 +45,25 @@ Color SurfaceShader::shade(const Hit& hit, const ShadeContext& ctx) const {
   }
   return c.clamped();
 }
+
+namespace {
+
+// GeoViS SurfShader (docs/geovis-catalogue.md §6).
+const TypeRegistrar<ShaderType> registrar{
+    {{"SurfShader", {}, "object colour from a texture, ambient and diffuse reflection, point lights",
+      {{"objcolor", ParamType::String, "texture id of the object colour (none: black)"},
+       {"normalmap", ParamType::String, "texture id of a normal map"},
+       {"ambient", ParamType::Number, "ambient reflectance ka", false, false, 1.0},
+       {"diffuse", ParamType::Number, "diffuse reflectance kd", false, false, 0.0}}},
+     [](const ParamReader& keys, BuildContext& ctx) -> ShaderPtr {
+       auto sh = std::make_shared<SurfaceShader>();
+       if (keys.has("objcolor")) sh->objcolor = ctx.ref(ctx.textures, keys.params(), "objcolor", "texture");
+       if (keys.has("normalmap")) sh->normalmap = ctx.ref(ctx.textures, keys.params(), "normalmap", "texture");
+       sh->ambient = keys.number("ambient");
+       sh->diffuse = keys.number("diffuse");
+       return sh;
+     }}};
+
+}  // namespace
 
 }  // namespace geovis

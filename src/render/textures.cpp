@@ -4,6 +4,8 @@
 #include <map>
 #include <mutex>
 
+#include "render/texture_type.h"
+
 namespace geovis {
 
 UVTransform UVTransform::from(const Transform& t) {
@@ -200,5 +202,94 @@ std::shared_ptr<const Image> load_image_cached(const std::string& path) {
   cache.emplace(path, img);
   return img;
 }
+
+// ---- registration (docs/geovis-catalogue.md §5; keys and defaults of GeoViS Parser/parse_texture.cpp) ----
+
+namespace {
+
+Color color_of(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
+
+const TypeRegistrar<TextureType> uni_texture{
+    {{"UniTex", {}, "one colour everywhere",
+      {{"color", ParamType::Vec3, "RGB colour", false, false, std::vector<double>{0, 0, 0}},
+       {"colorgray", ParamType::Number, "grey value (instead of color)"}},
+      {"color"}},
+     [](const ParamReader& keys, BuildContext&) -> std::shared_ptr<Texture2D> {
+       if (!keys.has("color") && keys.has("colorgray")) {
+         const double g = keys.number("colorgray");
+         return std::make_shared<UniTexture>(Color{g, g, g});
+       }
+       return std::make_shared<UniTexture>(color_of(keys.vector("color", 3)));
+     }}};
+
+const TypeRegistrar<TextureType> checker_texture{
+    {{"CheckerT2D", {}, "checkerboard of two textures in (u, v)", {two_textures_key()}},
+     [](const ParamReader& keys, BuildContext& ctx) -> std::shared_ptr<Texture2D> {
+       auto [a, b] = two_textures(keys.params(), ctx);
+       return std::make_shared<CheckerTexture>(a, b);
+     }}};
+
+const TypeRegistrar<TextureType> die_texture{
+    {{"DieT2D", {}, "the eyes of a die (first texture) on the faces of a box (second texture)", {two_textures_key()}},
+     [](const ParamReader& keys, BuildContext& ctx) -> std::shared_ptr<Texture2D> {
+       auto [a, b] = two_textures(keys.params(), ctx);
+       return std::make_shared<DieTexture>(a, b);
+     }}};
+
+const TypeRegistrar<TextureType> chequered_texture{
+    {{"ChequeredT2D", {}, "squares of the first texture with a border of the second",
+      {two_textures_key(),
+       {"width", ParamType::Number, "border width", false, false, 0.25, ParamRange{0, 0.5, true, true}}}},
+     [](const ParamReader& keys, BuildContext& ctx) -> std::shared_ptr<Texture2D> {
+       auto [a, b] = two_textures(keys.params(), ctx);
+       return std::make_shared<ChequeredTexture>(a, b, keys.number("width"));
+     }}};
+
+const TypeRegistrar<TextureType> chequered_time_texture{
+    {{"ChequeredTimeT2D", {}, "alternates between two textures in coordinate time",
+      {two_textures_key(),
+       {"deltat", ParamType::Number, "period in coordinate time", false, false, 1.0, ParamRange::positive()}}},
+     [](const ParamReader& keys, BuildContext& ctx) -> std::shared_ptr<Texture2D> {
+       auto [a, b] = two_textures(keys.params(), ctx);
+       return std::make_shared<ChequeredTimeTexture>(a, b, keys.number("deltat"));
+     }}};
+
+const TypeRegistrar<TextureType> color_grad_texture{
+    {{"ColorGradTex", {}, "colour gradient in (u, v): linear, radial, hsv, or the texture coordinates",
+      {{"color1", ParamType::Vec3, "start colour", false, false, std::vector<double>{0, 0, 0}},
+       {"color2", ParamType::Vec3, "end colour", false, false, std::vector<double>{1, 1, 1}},
+       {"start", ParamType::Vec2, "start point in (u, v)", false, false, std::vector<double>{0, 0.5}},
+       {"end", ParamType::Vec2, "end point in (u, v)", false, false, std::vector<double>{1, 0.5}},
+       {"gradtype", ParamType::String, "linear | radial | hsv | texCoords", false, false, std::string("linear")}},
+      {"color1", "color2", "startpoint", "endpoint", "gradtype"}},
+     [](const ParamReader& keys, BuildContext&) -> std::shared_ptr<Texture2D> {
+       const auto st = keys.vector("start", 2), en = keys.vector("end", 2);
+       const auto kind = static_cast<ColorGradTexture::Kind>(
+           keys.choice_index("gradtype", ColorGradTexture::kind_names(), "gradient type"));
+       return std::make_shared<ColorGradTexture>(color_of(keys.vector("color1", 3)), color_of(keys.vector("color2", 3)),
+                                                 st[0], st[1], en[0], en[1], kind);
+     }}};
+
+const TypeRegistrar<TextureType> image_texture{
+    {{"Image", {}, "an image file mapped onto [0,1)^2 with periodic wrap",
+      {{"file", ParamType::String, "image file", true},
+       {"sampling", ParamType::String,
+        "geovis extension: nearest (as GeoViS), bilinear or bicubic texel interpolation", false, false,
+        std::string("nearest")}}},
+     [](const ParamReader& keys, BuildContext& ctx) -> std::shared_ptr<Texture2D> {
+       const std::string file = keys.string("file");
+       const auto sampling = static_cast<ImageTexture::Sampling>(
+           keys.choice_index("sampling", ImageTexture::sampling_names(), "sampling"));
+       try {
+         return std::make_shared<ImageTexture>(load_image_cached(find_file(file, ctx.search_paths, "texture image")),
+                                               sampling);
+       } catch (const SceneError&) {
+         throw;
+       } catch (const Error& e) {
+         keys.fail("file", e.what());
+       }
+     }}};
+
+}  // namespace
 
 }  // namespace geovis

@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "core/param_reader.h"
 #include "scene/builder.h"
+#include "scene/command_table.h"
 #include "scene/cache_keys.h"
 #include "scene/definitions.h"
 #include "scene/frame_changes.h"
@@ -273,7 +275,11 @@ struct SceneBuilder::Impl {
 
   // ---- solver configuration (catalogue §1 init-solver / init-raygen) ----
 
+  /// init-solver's keys with their defaults (scene/command_table.cpp): read through them so the
+  /// documented defaults are the ones used.
   static SolverConfig solver_config(const ParamSet& ps) {
+    const std::vector<ParamSpec> specs = find_scene_command("init-solver")->keys(std::string());
+    const ParamReader keys(ps, specs);
     SolverConfig c;
     try {
       c.kind = solver_kind_from_name(ps.get_string("type"));
@@ -287,29 +293,27 @@ struct SceneBuilder::Impl {
         rethrow_at(ps, "geodtype", e);
       }
     }
-    const std::string dir = ps.get_string("geoddir", std::string("forward"));
+    const std::string dir = keys.string("geoddir");
     if (dir != "forward" && dir != "backward")
       ps.fail("geoddir", "expected \"forward\" or \"backward\", found \"" + dir + "\"");
-    c.step_ctrl = ps.get_bool("step_ctrl", true);
-    c.step_size = ps.get_number("step_size", 0.01);
-    c.step_max = ps.get_number("max_step", c.step_max);
-    c.eps_abs = ps.get_number("eps_abs", 1e-4);
-    c.eps_rel = ps.get_number("eps_rel", 0.0);
-    c.separable = ps.get_bool("separable", true);
-    if (!(c.step_size > 0)) ps.fail("step_size", "expected a positive step size, found " + std::to_string(c.step_size));
-    if (!(c.step_max > 0)) ps.fail("max_step", "expected a positive maximal step, found " + std::to_string(c.step_max));
-    if (!(c.eps_abs >= 0) || !(c.eps_rel >= 0) || (c.eps_abs == 0 && c.eps_rel == 0 && c.step_ctrl))
+    c.step_ctrl = keys.boolean("step_ctrl");
+    c.step_size = keys.number("step_size");
+    c.step_max = keys.number("max_step");
+    c.eps_abs = keys.number("eps_abs");
+    c.eps_rel = keys.number("eps_rel");
+    c.separable = keys.boolean("separable");
+    if (c.eps_abs == 0 && c.eps_rel == 0 && c.step_ctrl)
       ps.fail("eps_abs", "expected non-negative tolerances, not both zero with step control");
-    // GeoViS default bounding box: (±DBL_MAX, ±50, ±50, ±50) (catalogue §1).
-    set_box(ps, c);
+    set_box(keys, c);
     return c;
   }
 
-  static void set_box(const ParamSet& ps, SolverConfig& c) {
-    const std::vector<double> ll = ps.get_vector("boundboxll", 4, std::vector<double>{-DBL_MAX, -50, -50, -50});
-    const std::vector<double> ur = ps.get_vector("boundboxur", 4, std::vector<double>{DBL_MAX, 50, 50, 50});
+  /// boundboxll/boundboxur of init-solver or init-raygen.
+  static void set_box(const ParamReader& keys, SolverConfig& c) {
+    const std::vector<double> ll = keys.vector("boundboxll", 4);
+    const std::vector<double> ur = keys.vector("boundboxur", 4);
     for (int i = 0; i < 4; ++i) {
-      if (!(ll[i] < ur[i])) ps.fail("boundboxur", "every component must exceed the one of boundBoxLL");
+      if (!(ll[i] < ur[i])) keys.fail("boundboxur", "every component must exceed the one of boundBoxLL");
       c.box_ll[i] = ll[i];
       c.box_ur[i] = ur[i];
     }

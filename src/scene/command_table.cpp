@@ -3,13 +3,21 @@
 #include "scene/command_table.h"
 
 #include <algorithm>
+#include <cfloat>
+#include <limits>
 
 #include "render/camera_factory.h"
+#include "render/camera_type.h"
 #include "render/plugins.h"
+#include "render/light_type.h"
+#include "render/object_type.h"
+#include "render/shader_type.h"
+#include "render/texture_type.h"
 #include "spacetime/geodesic.h"
 #include "spacetime/metric.h"
 #include "spacetime/metric_registry.h"
 #include "spacetime/motion_factory.h"
+#include "spacetime/solver_type.h"
 
 namespace geovis {
 
@@ -35,33 +43,50 @@ namespace {
 
 // ---- keys of the commands the builder checks itself ------------------------------------------
 
+/// The bounding box of init-solver and init-raygen; GeoViS's default is (±DBL_MAX, ±50, ±50, ±50)
+/// (catalogue §1).
+std::vector<ParamSpec> bounding_box_keys() {
+  using T = ParamType;
+  return {{"boundboxll", T::Vec4, "lower corner of the bounding box", false, false,
+           std::vector<double>{-DBL_MAX, -50, -50, -50}},
+          {"boundboxur", T::Vec4, "upper corner of the bounding box", false, false,
+           std::vector<double>{DBL_MAX, 50, 50, 50}}};
+}
+
 std::vector<ParamSpec> keys_init_solver(const std::string&) {
   using T = ParamType;
-  return {{"type", T::String, "integrator name (GeoViS nickname or full name)", true},
-        {"id", T::String, "id"},
-        {"metric", T::String, "metric id (the device's metric is used)"},
-        {"geodtype", T::String, "lightlike, timelike or spacelike"},
-        {"geoddir", T::String, "forward or backward"},
-        {"step_ctrl", T::Bool, "adaptive step size control (default #t)"},
-        {"step_size", T::Number, "initial or fixed step size (default 0.01)"},
-        {"max_step", T::Number, "maximal step size"},
-        {"eps_abs", T::Number, "absolute tolerance (default 1e-4)"},
-        {"eps_rel", T::Number, "relative tolerance (default 0)"},
-        {"separable", T::Bool,
-         "geovis extension: KerrBL and Schwarzschild geodesics through Carter's separated equations in Mino "
-         "time (default #t); #f: the coordinate geodesic equation, as GeoViS"},
-        {"boundboxll", T::Vec4, "lower corner of the bounding box"},
-        {"boundboxur", T::Vec4, "upper corner of the bounding box"}};
+  const SolverConfig d;  // GeoViS's defaults (spacetime/geodesic.h)
+  std::vector<ParamSpec> keys = {
+      {"type", T::String, "integrator name (GeoViS nickname or full name)", true},
+      {"id", T::String, "id"},
+      {"metric", T::String, "metric id (the device's metric is used)"},
+      {"geodtype", T::String, "lightlike, timelike or spacelike", false, false, std::string("lightlike")},
+      {"geoddir", T::String, "forward or backward", false, false, std::string("forward")},
+      {"step_ctrl", T::Bool, "adaptive step size control", false, false, d.step_ctrl},
+      {"step_size", T::Number, "initial or fixed step size", false, false, d.step_size, ParamRange::positive()},
+      {"max_step", T::Number, "maximal step size", false, false, d.step_max, ParamRange::positive()},
+      {"eps_abs", T::Number, "absolute tolerance", false, false, d.eps_abs, ParamRange::non_negative()},
+      {"eps_rel", T::Number, "relative tolerance", false, false, d.eps_rel, ParamRange::non_negative()},
+      {"separable", T::Bool,
+       "geovis extension: KerrBL and Schwarzschild geodesics through Carter's separated equations in Mino "
+       "time; #f: the coordinate geodesic equation, as GeoViS",
+       false, false, d.separable}};
+  const auto box = bounding_box_keys();
+  keys.insert(keys.end(), box.begin(), box.end());
+  return keys;
 }
 
 std::vector<ParamSpec> keys_init_raygen(const std::string&) {
   using T = ParamType;
-  return {{"type", T::String, "RayGenSimple"},
-        {"id", T::String, "id"},
-        {"solver", T::String, "solver id"},
-        {"maxnumpoints", T::Int, "maximal number of ray points (default 3000)"},
-        {"boundboxll", T::Vec4, "lower corner of the bounding box"},
-        {"boundboxur", T::Vec4, "upper corner of the bounding box"}};
+  std::vector<ParamSpec> keys = {
+      {"type", T::String, "RayGenSimple", false, false, std::string("RayGenSimple")},
+      {"id", T::String, "id"},
+      {"solver", T::String, "solver id"},
+      {"maxnumpoints", T::Int, "maximal number of ray points", false, false, 3000.0,
+       ParamRange{2, std::numeric_limits<double>::infinity(), false, true}}};
+  const auto box = bounding_box_keys();
+  keys.insert(keys.end(), box.begin(), box.end());
+  return keys;
 }
 
 std::vector<ParamSpec> keys_local_tetrad(const std::string&) {
@@ -161,29 +186,31 @@ std::vector<ParamSpec> keys_init_metric(const std::string& type) {
   return keys;
 }
 
-std::vector<std::string> solver_types() {
-  std::vector<std::string> names;
-  for (const SolverInfo& s : solver_names()) names.push_back(s.name);
-  return names;
+std::vector<std::string> solver_types() { return SolverRegistry::instance().names(); }
+
+/// The entry of `type` in a registry (core/type_registry.h), as the base every entry shares.
+template <class Registry>
+const TypeDescription* registry_entry(const std::string& type) {
+  return Registry::instance().find(type);
+}
+/// What a per-frame change may set, as the type's registry entry lists it.
+template <class Registry>
+std::vector<std::string> registry_changeable(const std::string& type) {
+  const auto* e = Registry::instance().find(type);
+  return e ? e->changeable : std::vector<std::string>{};
 }
 
 std::vector<ParamSpec> keys_init_camera(const std::string& type) { return camera_param_specs(type.empty() ? "PinHoleCam" : type); }
 std::vector<std::string> camera_types() { return camera_type_names(); }
 std::vector<ParamSpec> keys_init_texture(const std::string& type) { return texture_keys(type); }
-std::vector<ParamSpec> keys_init_shader(const std::string&) { return shader_keys(); }
+std::vector<ParamSpec> keys_init_shader(const std::string& type) { return shader_keys(type); }
 std::vector<std::string> shader_type_list() { return shader_types(); }
-std::vector<ParamSpec> keys_init_light(const std::string&) { return light_keys(); }
+std::vector<ParamSpec> keys_init_light(const std::string& type) { return light_keys(type); }
 std::vector<std::string> light_type_list() { return light_types(); }
 std::vector<ParamSpec> keys_init_light_mgr(const std::string&) { return light_manager_keys(); }
 std::vector<ParamSpec> keys_init_motion(const std::string& type) { return motion_param_specs(type); }
 std::vector<std::string> raygen_types() { return {"RayGenSimple"}; }
 std::vector<std::string> device_types() { return {"standard", "standard_manual"}; }
-
-/// The keys of an object command, read from its factory (render/plugins.cpp).
-template <const char* Command>
-std::vector<ParamSpec> object_command_keys(const std::string&) {
-  return object_keys(Command);
-}
 
 // ---- what a per-frame change may set (docs/geovis-catalogue.md §10) ----------------------------
 
@@ -191,28 +218,15 @@ std::vector<std::string> tetrad_changeable(const std::string&) {
   return {"pos", "time", "e0", "e1", "e2", "e3", "localvel", "calc"};
 }
 std::vector<std::string> projector_changeable(const std::string&) { return {"actualpos"}; }
-std::vector<std::string> texture_changeable(const std::string& type) {
-  if (type == "UniTex") return {"color"};
-  if (type == "ColorGradTex") return {"color1", "color2", "startpoint", "endpoint", "gradtype"};
-  return {};
-}
-std::vector<std::string> transform_changeable(const std::string&) { return {"transform"}; }
-std::vector<std::string> ellipsoid_changeable(const std::string&) { return {"axlen", "transform"}; }
-std::vector<std::string> mesh_changeable(const std::string&) { return {"objfilename"}; }
 
-constexpr char kSolidEllipsoid[] = "solid-ellipsoid";
-constexpr char kSolidBox[] = "solid-box";
-constexpr char kSolidCylinder[] = "solid-cylinder";
-constexpr char kSolidRing[] = "solid-ring";
-constexpr char kSolidBackground[] = "solid-background";
-constexpr char kPlaneRing[] = "plane-ring";
-constexpr char kPlaneTriangle[] = "plane-triangle";
-constexpr char kPlaneParallelogram[] = "plane-parallelogram";
-constexpr char kMeshObj[] = "mesh-obj";
-constexpr char kCsgObject[] = "csg-object";
-constexpr char kCompObject[] = "comp-object";
-constexpr char kCompOctreeObject[] = "comp-octree-object";
-constexpr char kLocalCompObject[] = "local-comp-object";
+/// The scene command of an object type registered beside its class (render/object_type.h).
+SceneCommand object_command(const ObjectType& t) {
+  SceneCommand c{t.name, t.container ? CommandRole::Container : CommandRole::Definition, DefinitionKind::Object,
+                 t.geovis_extension, t.doc};
+  c.keys = [&t](const std::string&) { return t.keys; };
+  c.changeable = [&t](const std::string&) { return t.changeable; };
+  return c;
+}
 
 }  // namespace
 
@@ -220,13 +234,14 @@ const std::vector<SceneCommand>& scene_commands() {
   using R = CommandRole;
   using K = DefinitionKind;
   using C = Changeable;
-  static const std::vector<SceneCommand> commands = {
+  static const std::vector<SceneCommand> commands = [] {
+    std::vector<SceneCommand> list = {
       {"init-metric", R::Definition, K::Metric, false, "the spacetime: `type` names a metric, its parameters are keys",
        keys_init_metric, metric_names, C::TypeParameters},
       {"init-solver", R::Definition, K::Solver, false, "the geodesic integrator and its step control",
-       keys_init_solver, solver_types},
+       keys_init_solver, solver_types, C::Listed, nullptr, registry_entry<SolverRegistry>},
       {"init-camera", R::Definition, K::Camera, false, "the camera: type, resolution, field of view, filter",
-       keys_init_camera, camera_types, C::TypeParameters},
+       keys_init_camera, camera_types, C::TypeParameters, nullptr, registry_entry<CameraRegistry>},
       {"init-raygen", R::Definition, K::RayGen, false, "the ray generator: solver, bounding box, maximal points",
        keys_init_raygen, raygen_types},
       {"init-projector", R::Definition, K::Projector, false, "the observer: local tetrad or motion, background colours",
@@ -235,42 +250,17 @@ const std::vector<SceneCommand>& scene_commands() {
        keys_local_tetrad, nullptr, C::Listed, tetrad_changeable},
       {"init-light-mgr", R::Definition, K::LightMgr, false, "ambient and diffuse light, point lights, shadows",
        keys_init_light_mgr},
-      {"init-light", R::Definition, K::Light, false, "a point light", keys_init_light, light_type_list},
+      {"init-light", R::Definition, K::Light, false, "a point light", keys_init_light, light_type_list, C::Listed,
+       nullptr, registry_entry<LightRegistry>},
       {"init-texture", R::Definition, K::Texture, false, "a texture (colour, checker, gradient, image, ...)",
-       keys_init_texture, texture_types, C::Listed, texture_changeable},
+       keys_init_texture, texture_types, C::Listed, registry_changeable<TextureRegistry>,
+       registry_entry<TextureRegistry>},
       {"init-shader", R::Definition, K::Shader, false, "a surface shader: object colour, normal map, reflectances",
-       keys_init_shader, shader_type_list},
-      {"solid-ellipsoid", R::Definition, K::Object, false, "an ellipsoid (sphere)",
-       object_command_keys<kSolidEllipsoid>, nullptr, C::Listed, ellipsoid_changeable},
-      {"solid-box", R::Definition, K::Object, false, "a box", object_command_keys<kSolidBox>, nullptr, C::Listed,
-       transform_changeable},
-      {"solid-cylinder", R::Definition, K::Object, false, "a cylinder between base and top",
-       object_command_keys<kSolidCylinder>, nullptr, C::Listed, transform_changeable},
-      {"solid-ring", R::Definition, K::Object, false, "a thick ring (hollow cylinder)", object_command_keys<kSolidRing>,
-       nullptr, C::Listed, transform_changeable},
-      {"solid-background", R::Definition, K::Object, false, "the sky: a textured sphere at coordinate radius",
-       object_command_keys<kSolidBackground>},
-      {"plane-ring", R::Definition, K::Object, false, "a flat ring (disk with a hole)", object_command_keys<kPlaneRing>,
-       nullptr, C::Listed, transform_changeable},
-      {"plane-triangle", R::Definition, K::Object, false, "a triangle", object_command_keys<kPlaneTriangle>, nullptr,
-       C::Listed, transform_changeable},
-      {"plane-parallelogram", R::Definition, K::Object, true, "a parallelogram (geovis extension)",
-       object_command_keys<kPlaneParallelogram>, nullptr, C::Listed, transform_changeable},
-      {"mesh-obj", R::Definition, K::Object, false, "a triangle mesh from a Wavefront OBJ file",
-       object_command_keys<kMeshObj>, nullptr, C::Listed, mesh_changeable},
-      // GeoViS lets a per-frame change set a CSG object's transform; ours has none yet (its solids'
-      // normals are computed in their own parent frame), so such a change is an error, not ignored.
-      {"csg-object", R::Container, K::Object, false, "union, difference or intersection of two solids",
-       object_command_keys<kCsgObject>},
-      {"comp-object", R::Container, K::Object, false, "a group of objects", object_command_keys<kCompObject>},
-      {"comp-octree-object", R::Container, K::Object, false, "a group of objects in an octree",
-       object_command_keys<kCompOctreeObject>},
-      {"local-comp-object", R::Container, K::Object, false,
-       "objects given in a local tetrad frame, riding on a motion", object_command_keys<kLocalCompObject>},
+       keys_init_shader, shader_type_list, C::Listed, nullptr, registry_entry<ShaderRegistry>},
       {"add-object", R::Modifier, K::Object, false, "adds objects to a comp-object or comp-octree-object",
        keys_add_object},
       {"init-motion", R::Definition, K::Motion, false, "a motion: geodesic, constant velocity or world line",
-       keys_init_motion, motion_type_names},
+       keys_init_motion, motion_type_names, C::Listed, nullptr, registry_entry<MotionRegistry>},
       {"init-device", R::Device, K::Object, false, "one image or sequence: camera, projector, scene, per-frame changes",
        keys_init_device, device_types},
       {"set-parameter", R::Modifier, K::Object, false,
@@ -291,7 +281,12 @@ const std::vector<SceneCommand>& scene_commands() {
       {"scale-obj", R::Immediate, K::Object, false, "a scaling matrix"},
       {"m4d-metriclist", R::Immediate, K::Object, false, "prints the metric names"},
       {"m4d-solverlist", R::Immediate, K::Object, false, "prints the integrator names"},
-  };
+    };
+    // The object commands, after the other definitions they refer to (catalogue §1 order).
+    auto at = std::find_if(list.begin(), list.end(), [](const SceneCommand& c) { return c.name == "init-shader"; }) + 1;
+    for (const ObjectType* t : ObjectRegistry::instance().entries()) at = list.insert(at, object_command(*t)) + 1;
+    return list;
+  }();
   return commands;
 }
 

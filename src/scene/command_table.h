@@ -1,16 +1,19 @@
 // The commands of the scene language, described once (docs/geovis-catalogue.md §1).
 //
-// This table is the only list of command names: the Scheme bindings (scheme_prelude.cpp's command
+// This table is the only list of command names (the object commands come from the registry of
+// object types, render/object_type.h, where each object registers itself): the Scheme bindings (scheme_prelude.cpp's command
 // macros and scene bindings), the evaluator's "did you mean", the builder's dispatch and key checks,
 // and the generated scene reference (docs/scene-reference.md, `geovis reference`) all read it.
 // Adding a command is adding its entry here and its handling where its role says.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "core/params.h"
+#include "core/type_registry.h"
 
 namespace geovis {
 
@@ -42,12 +45,15 @@ struct SceneCommand {
   bool geovis_extension = false;                 ///< not a GeoViS command
   std::string_view doc;                          ///< one line
   /// Keys the command accepts; `type` is the value of its `type` key (ignored by untyped commands).
-  std::vector<ParamSpec> (*keys)(const std::string& type) = nullptr;
-  /// Valid `type` values (nullptr for untyped commands).
-  std::vector<std::string> (*types)() = nullptr;
+  std::function<std::vector<ParamSpec>(const std::string& type)> keys = nullptr;
+  /// Valid `type` values (empty for untyped commands).
+  std::function<std::vector<std::string>()> types = nullptr;
   Changeable change_rule = Changeable::Listed;
-  /// Names a per-frame change may set for a definition of this type (nullptr: none).
-  std::vector<std::string> (*changeable)(const std::string& type) = nullptr;
+  /// Names a per-frame change may set for a definition of this type (empty: none).
+  std::function<std::vector<std::string>(const std::string& type)> changeable = nullptr;
+  /// The registry entry of a `type` value (doc, aliases, keys; core/type_registry.h), nullptr for
+  /// an unknown type; empty for a command whose types have no registry.
+  std::function<const TypeDescription*(const std::string& type)> describe = nullptr;
 };
 
 /// Every command, in catalogue order.

@@ -207,9 +207,10 @@ class DeviceBuild {
     // initial tangent is past-directed (paper eq. 7), set by the tracer; λ increases.
     c.type = GeodesicType::Lightlike;
     c.direction = 1.0;
-    c.max_steps = raygen_ps.get_int("maxnumpoints", 3000);
-    if (c.max_steps < 2) raygen_ps.fail("maxnumpoints", "expected at least 2 points, found " + std::to_string(c.max_steps));
-    if (raygen_ps.has("boundboxll") || raygen_ps.has("boundboxur")) Impl::set_box(raygen_ps, c);
+    const std::vector<ParamSpec> specs = find_scene_command("init-raygen")->keys(std::string());
+    const ParamReader keys(raygen_ps, specs);
+    c.max_steps = keys.integer("maxnumpoints");
+    if (raygen_ps.has("boundboxll") || raygen_ps.has("boundboxur")) Impl::set_box(keys, c);
     return c;
   }
 

@@ -3,12 +3,13 @@
 #include <cmath>
 #include <sstream>
 
-#include "render/camera_factory.h"
+#include "render/filter_type.h"
 #include "scene/command_table.h"
 #include "spacetime/geodesic.h"
 #include "spacetime/metric.h"
 #include "spacetime/metric_param_text.h"
 #include "spacetime/metric_registry.h"
+#include "spacetime/solver_type.h"
 
 namespace geovis {
 
@@ -38,12 +39,13 @@ std::string cell(std::string s) {
 }
 
 void key_table(std::ostream& os, const std::vector<ParamSpec>& keys) {
-  os << "| key | type | doc |\n|---|---|---|\n";
+  os << "| key | type | default | range | doc |\n|---|---|---|---|---|\n";
   for (const ParamSpec& k : keys) {
     std::string flags;
     if (k.required) flags += " (required)";
     if (k.repeatable) flags += " (repeatable)";
-    os << "| `" << k.key << "` | " << param_type_name(k.type) << " | " << cell(k.doc + flags) << " |\n";
+    os << "| `" << k.key << "` | " << param_type_name(k.type) << " | " << cell(param_default_text(k)) << " | "
+       << (k.range ? k.range->text() : std::string()) << " | " << cell(k.doc + flags) << " |\n";
   }
 }
 
@@ -71,18 +73,26 @@ void command_section(std::ostream& os, const SceneCommand& c) {
     return;
   }
   if (c.name == "init-solver") {
-    os << "| type | integrator |\n|---|---|\n";
-    for (const SolverInfo& s : solver_names()) os << "| `" << s.name << "` | " << cell(s.description) << " |\n";
+    os << "| type | order | also accepted (GeoViS/Motion4D names) | integrator |\n|---|---|---|---|\n";
+    for (const SolverType* s : SolverRegistry::instance().entries())
+      os << "| `" << s->name << "` | " << s->order << " | " << cell(join(s->aliases, "; ")) << " | " << cell(s->doc)
+         << " |\n";
     os << "\n";
   }
   if (c.name == "init-camera") {
-    os << "Filters (`filter` key):";
-    for (const std::string& f : filter_names()) os << " `" << f << "`";
-    os << ".\n\n";
+    os << "| filter | aliases | doc |\n|---|---|---|\n";
+    for (const FilterType* f : FilterRegistry::instance().entries())
+      os << "| `" << f->name << "` | " << cell(join(f->aliases)) << " | " << cell(f->doc) << " |\n";
+    os << "\n";
   }
   if (c.types && c.keys && c.name != "init-solver") {
     for (const std::string& type : c.types()) {
       os << "#### " << c.name << " `" << type << "`\n\n";
+      if (const TypeDescription* d = c.describe ? c.describe(type) : nullptr) {
+        os << cell(d->doc) << (d->geovis_extension ? " (geovis extension)" : "") << ".";
+        if (!d->aliases.empty()) os << " Also accepted: `" << join(d->aliases, "`, `") << "`.";
+        os << "\n\n";
+      }
       key_table(os, c.keys(type));
       if (c.changeable && c.change_rule == Changeable::Listed) {
         const auto names = c.changeable(type);

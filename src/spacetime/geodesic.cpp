@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "spacetime/integrators.h"
 #include "spacetime/metric_kernel.h"
+#include "spacetime/solver_type.h"
 
 namespace geovis {
 
@@ -27,91 +29,43 @@ GeodesicType parse_geodesic_type(const std::string& s) {
   throw Error("unknown geodesic type \"" + s + "\"" + did_you_mean(s, valid) + " (valid: " + join(valid) + ")");
 }
 
+// The integrators are registered in solver_type.cpp (one entry each, with the GeoViS names that
+// map onto it); these read that registry.
 const std::vector<SolverInfo>& solver_names() {
-  // Catalogue §13: GeoViS/Motion4D names and what they map onto here. GSL's implicit methods
-  // (Gaussian points, Gear) target stiff problems; geodesics are not stiff, so they map onto the
-  // explicit method of the same order with step control. GSL's rk8pd (Prince-Dormand 8(7)) and
-  // Motion4D's DP65 map onto the closest high-order method we have, DOP853.
-  static const std::vector<SolverInfo> names = {
-      {"RK4", SolverKind::RK4, "classical 4th-order Runge-Kutta, fixed step (Motion4D GeodesicRK4)"},
-      {"BS", SolverKind::BulirschStoer, "Bulirsch-Stoer extrapolation (Motion4D GeodesicBS)"},
-      {"GSL_RK2", SolverKind::RK2, "embedded 2nd-order Runge-Kutta (Heun-Euler 2(1))"},
-      {"GSL_RK4", SolverKind::RK4, "classical 4th-order Runge-Kutta, fixed step"},
-      {"GSL_RK_Fehlberg", SolverKind::Fehlberg45, "Runge-Kutta-Fehlberg 4(5)"},
-      {"GSL_RK_Cash-Karp", SolverKind::CashKarp45, "Runge-Kutta Cash-Karp 4(5)"},
-      {"GSL_RK_Prince-Dormand", SolverKind::DormandPrince853, "8th-order Dormand-Prince (DOP853)"},
-      {"GSL_RK_Gaussian-points", SolverKind::RK2, "mapped onto the embedded 2nd-order Runge-Kutta"},
-      {"GSL_M1_IG", SolverKind::RK2, "mapped onto the embedded 2nd-order Runge-Kutta"},
-      {"GSL_M2_IG", SolverKind::RK2, "mapped onto the embedded 2nd-order Runge-Kutta"},
-      {"DP54", SolverKind::DormandPrince54, "Dormand-Prince 5(4)"},
-      {"DP65", SolverKind::DormandPrince853, "mapped onto Dormand-Prince 8(5,3)"},
-      // Our names (solver_kind_name) and short aliases.
-      {"RK2", SolverKind::RK2, "Heun-Euler embedded 2(1)"},
-      {"CashKarp45", SolverKind::CashKarp45, "Runge-Kutta Cash-Karp 4(5)"},
-      {"CashKarp", SolverKind::CashKarp45, "Runge-Kutta Cash-Karp 4(5)"},
-      {"Fehlberg45", SolverKind::Fehlberg45, "Runge-Kutta-Fehlberg 4(5)"},
-      {"Fehlberg", SolverKind::Fehlberg45, "Runge-Kutta-Fehlberg 4(5)"},
-      {"DormandPrince54", SolverKind::DormandPrince54, "Dormand-Prince 5(4), FSAL"},
-      {"DOP853", SolverKind::DormandPrince853, "Dormand-Prince 8(5,3) (Hairer's DOP853)"},
-      {"DP853", SolverKind::DormandPrince853, "Dormand-Prince 8(5,3) (Hairer's DOP853)"},
-      {"BulirschStoer", SolverKind::BulirschStoer, "Gragg-Bulirsch-Stoer extrapolation"},
-      {"RKN86", SolverKind::RungeKuttaNystrom86,
-       "Runge-Kutta-Nystrom 8(6) (Dormand, El-Mikkawy & Prince); KerrBL and Schwarzschild geodesics only"},
-      // Motion4D full names (catalogue §13).
-      {"Runge-Kutta (fourth order)", SolverKind::RK4, "classical 4th-order Runge-Kutta"},
-      {"Bulirsch-Stoer", SolverKind::BulirschStoer, "Bulirsch-Stoer extrapolation"},
-      {"GSL: Embedded 2nd order Runge-Kutta", SolverKind::RK2, "embedded 2nd-order Runge-Kutta"},
-      {"GSL: 4th order (classical) Runge-Kutta", SolverKind::RK4, "classical 4th-order Runge-Kutta"},
-      {"GSL: Embedded 4th order Runge-Kutta-Fehlberg", SolverKind::Fehlberg45, "Runge-Kutta-Fehlberg 4(5)"},
-      {"GSL: Embedded 4th order Runge-Kutta Cash-Karp", SolverKind::CashKarp45, "Runge-Kutta Cash-Karp 4(5)"},
-      {"GSL: Embedded 8th order Runge-Kutta Prince-Dormand", SolverKind::DormandPrince853, "DOP853"},
-      {"GSL: Implicit 2nd order Runge-Kutta at Gaussian points", SolverKind::RK2, "mapped onto RK2"},
-      {"GSL: M=1 implicit Gear", SolverKind::RK2, "mapped onto RK2"},
-      {"GSL: M=2 implicit Gear", SolverKind::RK2, "mapped onto RK2"},
-      {"Dormand-Prince: RK5(4)", SolverKind::DormandPrince54, "Dormand-Prince 5(4)"},
-      {"Dormand-Prince: RK6(5)", SolverKind::DormandPrince853, "mapped onto DOP853"},
-  };
+  static const std::vector<SolverInfo> names = [] {
+    std::vector<SolverInfo> out;
+    for (const SolverType* t : SolverRegistry::instance().entries()) {
+      out.push_back({t->name, t->kind, t->doc});
+      for (const std::string& alias : t->aliases) out.push_back({alias, t->kind, t->doc});
+    }
+    return out;
+  }();
   return names;
 }
 
 SolverKind solver_kind_from_name(const std::string& name) {
-  for (const auto& s : solver_names())
-    if (s.name == name) return s.kind;
-  for (const auto& s : solver_names())
-    if (to_lower(s.name) == to_lower(name)) return s.kind;
+  const auto& registry = SolverRegistry::instance();
+  if (const SolverType* t = registry.find(name)) return t->kind;
+  // GeoViS scenes name integrators by their nicknames, so those are listed too (the full Motion4D
+  // names, with spaces, are in the scene reference).
   std::vector<std::string> valid;
-  for (const auto& s : solver_names())
-    if (s.name.find(' ') == std::string::npos) valid.push_back(s.name);
-  throw Error("unknown solver \"" + name + "\"" + did_you_mean(name, valid) + " (valid solvers: " + join(valid) + ")");
+  for (const std::string& n : registry.names_and_aliases())
+    if (n.find(' ') == std::string::npos) valid.push_back(n);
+  throw Error("unknown solver \"" + name + "\"" + did_you_mean(name, registry.names_and_aliases()) +
+              " (valid solvers: " + join(valid) + ")");
 }
 
-const char* solver_kind_name(SolverKind k) {
-  switch (k) {
-    case SolverKind::RK2: return "RK2";
-    case SolverKind::RK4: return "RK4";
-    case SolverKind::CashKarp45: return "CashKarp45";
-    case SolverKind::Fehlberg45: return "Fehlberg45";
-    case SolverKind::DormandPrince54: return "DormandPrince54";
-    case SolverKind::DormandPrince853: return "DOP853";
-    case SolverKind::BulirschStoer: return "BulirschStoer";
-    case SolverKind::RungeKuttaNystrom86: return "RKN86";
-  }
-  return "?";
+namespace {
+const SolverType& solver_type_of(SolverKind k) {
+  for (const SolverType* t : SolverRegistry::instance().entries())
+    if (t->kind == k) return *t;
+  throw std::logic_error("integrator kind without a registered SolverType");
 }
+}  // namespace
 
-int solver_order(SolverKind k) {
-  switch (k) {
-    case SolverKind::RK2: return 2;
-    case SolverKind::RK4: return 4;
-    case SolverKind::CashKarp45: return 5;
-    case SolverKind::Fehlberg45: return 4;
-    case SolverKind::DormandPrince54: return 5;
-    case SolverKind::DormandPrince853: return 8;
-    case SolverKind::BulirschStoer: return 8;
-    case SolverKind::RungeKuttaNystrom86: return 8;
-  }
-  return 0;
-}
+const char* solver_kind_name(SolverKind k) { return solver_type_of(k).name.c_str(); }
+
+int solver_order(SolverKind k) { return solver_type_of(k).order; }
 
 const char* stop_reason_name(StopReason r) {
   switch (r) {

@@ -40,7 +40,7 @@ struct SolverInfo {
   SolverKind kind;
   std::string description;
 };
-/// Every accepted solver name, GeoViS nicknames first.
+/// Every accepted solver name: each integrator of the registry (spacetime/solver_type.h), then its GeoViS names.
 const std::vector<SolverInfo>& solver_names();
 /// Looks up a solver by name (exact, then case-insensitive); unknown -> Error listing valid names
 /// with the closest one.

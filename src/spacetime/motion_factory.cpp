@@ -1,10 +1,12 @@
 #include "spacetime/motion_factory.h"
 
 #include <cmath>
+#include <limits>
 #include <fstream>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/param_reader.h"
 #include "spacetime/motion_const_velocity.h"
 #include "spacetime/motion_geodesic.h"
 #include "spacetime/motion_worldline.h"
@@ -14,21 +16,9 @@ namespace geovis {
 
 namespace {
 
-enum class MotionType { Geodesic, ConstVelocity, Worldline };
-
-MotionType parse_type(const ParamSet& ps) {
-  const std::string t = ps.get_string("type");
-  const std::string l = to_lower(t);
-  if (l == "geodesic") return MotionType::Geodesic;
-  if (l == "constvelocity") return MotionType::ConstVelocity;
-  if (l == "worldline" || l == "file") return MotionType::Worldline;
-  ps.fail("type", "unknown motion type \"" + t + "\"" + did_you_mean(t, motion_type_names()) +
-                      " (valid: " + join(motion_type_names()) + ")");
-}
-
 std::vector<ParamSpec> common_specs() {
   return {
-      {"type", ParamType::String, "motion type: Geodesic, ConstVelocity or Worldline (GeoViS: file)", true},
+      {"type", ParamType::String, "motion type: " + join(MotionRegistry::instance().names()), true},
       {"id", ParamType::String, "name of the motion"},
       {"metric", ParamType::String, "metric id (when several are defined)"},
   };
@@ -42,7 +32,7 @@ std::vector<ParamSpec> frame_specs() {
       {"e3", ParamType::Vec4, "base vector e3"},
       {"incoords", ParamType::Bool, "#t: e0..e3 are coordinate components"},
       {"localframe", ParamType::Any, "natural tetrad kind (name or 0..6)"},
-      {"tau0", ParamType::Number, "proper time at the start event"},
+      {"tau0", ParamType::Number, "proper time at the start event", false, false, 0.0},
   };
 }
 
@@ -55,26 +45,18 @@ Vec3 vec3_of(const Param& p, const ParamSet& ps, size_t n, std::vector<double>& 
   return n >= 3 ? Vec3{out[n - 3], out[n - 2], out[n - 1]} : Vec3{};
 }
 
-MotionPtr make_geodesic(const ParamSet& ps, std::shared_ptr<const Metric> metric, const SolverConfig& solver) {
+MotionPtr make_geodesic(const ParamReader& keys, std::shared_ptr<const Metric> metric, const SolverConfig& solver) {
+  const ParamSet& ps = keys.params();
   Vec4 pos;
   const Tetrad e = tetrad_from_params(ps, *metric, &pos);
-  const double tau0 = ps.get_number("tau0", 0.0);
-  const double forward = ps.get_number("forward", 0.0);
-  const double backward = ps.get_number("backward", 0.0);
-  if (forward < 0) ps.fail("forward", "expected a proper-time range >= 0, found " + std::to_string(forward));
-  if (backward < 0) ps.fail("backward", "expected a proper-time range >= 0, found " + std::to_string(backward));
+  const double forward = keys.number("forward"), backward = keys.number("backward");
   if (forward == 0 && backward == 0)
     ps.fail("forward", "a Geodesic motion needs `forward` and/or `backward` (proper-time ranges > 0)");
-  const int max_points = ps.get_int("maxnumpoints", 1000);
-  if (max_points < 2) ps.fail("maxnumpoints", "expected an integer >= 2, found " + std::to_string(max_points));
   SolverConfig cfg = solver;
-  if (ps.has("stepsize")) {
-    const double h = ps.get_number("stepsize");
-    if (!(h > 0)) ps.fail("stepsize", "expected a step size > 0, found " + std::to_string(h));
-    cfg.step_size = h;
-  }
+  if (ps.has("stepsize")) cfg.step_size = keys.number("stepsize");
   try {
-    return std::make_shared<GeodesicMotion>(metric, cfg, pos, e, tau0, forward, backward, max_points);
+    return std::make_shared<GeodesicMotion>(metric, cfg, pos, e, keys.number("tau0"), forward, backward,
+                                            keys.integer("maxnumpoints"));
   } catch (const SceneError&) {
     throw;
   } catch (const Error& err) {
@@ -82,7 +64,8 @@ MotionPtr make_geodesic(const ParamSet& ps, std::shared_ptr<const Metric> metric
   }
 }
 
-MotionPtr make_const_velocity(const ParamSet& ps) {
+MotionPtr make_const_velocity(const ParamReader& keys, std::shared_ptr<const Metric>, const SolverConfig&) {
+  const ParamSet& ps = keys.params();
   // In a metric other than Minkowski the object applies the motion to pseudo-Cartesian
   // coordinates, as GeoViS does (render/local_object.h, PseudoCartesianMotionObject).
   auto motion = std::make_shared<ConstVelocityMotion>();
@@ -128,8 +111,9 @@ std::vector<std::vector<double>> read_event_file(const ParamSet& ps, const std::
   return rows;
 }
 
-MotionPtr make_worldline(const ParamSet& ps, std::shared_ptr<const Metric> metric) {
-  const bool have_tau = ps.get_bool("havetau", false);
+MotionPtr make_worldline(const ParamReader& keys, std::shared_ptr<const Metric> metric, const SolverConfig&) {
+  const ParamSet& ps = keys.params();
+  const bool have_tau = keys.boolean("havetau");
   const size_t cols = have_tau ? 5 : 4;
   std::vector<std::vector<double>> rows;
   std::string key;
@@ -170,7 +154,7 @@ MotionPtr make_worldline(const ParamSet& ps, std::shared_ptr<const Metric> metri
   } catch (const Error& err) {
     ps.fail("e0..e3", err.what());
   }
-  const double tau0 = have_tau ? taus.front() : ps.get_number("tau0", 0.0);
+  const double tau0 = have_tau ? taus.front() : keys.number("tau0");
   try {
     return std::make_shared<WorldlineMotion>(metric, std::move(events), std::move(taus), frame, tau0);
   } catch (const SceneError&) {
@@ -180,45 +164,61 @@ MotionPtr make_worldline(const ParamSet& ps, std::shared_ptr<const Metric> metri
   }
 }
 
+// GeoViS's motions (docs/geovis-catalogue.md §8); their classes are spacetime/motion_*.h.
+const TypeRegistrar<MotionType> geodesic{
+    {{"Geodesic", {}, "free fall: a timelike geodesic from an event and a velocity, sampled in proper time", [] {
+        auto keys = frame_specs();
+        const std::vector<ParamSpec> own = {
+            {"solver", ParamType::String, "id of the (timelike) solver"},
+            {"pos", ParamType::Any, "start event (metric coordinates)", true},
+            {"vel", ParamType::Vec4, "initial coordinate four-velocity"},
+            {"localvel", ParamType::Vec3, "initial 3-velocity relative to the natural tetrad"},
+            {"forward", ParamType::Number, "proper-time range integrated forward", false, false, 0.0,
+             ParamRange::non_negative()},
+            {"backward", ParamType::Number, "proper-time range integrated backward", false, false, 0.0,
+             ParamRange::non_negative()},
+            {"maxnumpoints", ParamType::Int, "maximal number of samples per direction", false, false, 1000.0,
+             ParamRange{2, std::numeric_limits<double>::infinity(), false, true}},
+            {"stepsize", ParamType::Number, "step size (overrides the solver's step_size)", false, false, {},
+             ParamRange::positive()}};
+        keys.insert(keys.end(), own.begin(), own.end());
+        return keys;
+      }()},
+     make_geodesic, true}};
+
+const TypeRegistrar<MotionType> const_velocity{
+    {{"ConstVelocity", {}, "boosts and rotations with constant velocity (special relativity)",
+      {{"boost", ParamType::Vec3, "boost velocity #(vx vy vz)", false, true},
+       {"rotation", ParamType::Vec4, "rotation #(omega ax ay az)", false, true}}},
+     make_const_velocity, false}};
+
+const TypeRegistrar<MotionType> worldline{
+    {{"Worldline", {"file"}, "a world line through given events, its frame Fermi-Walker transported", [] {
+        auto keys = frame_specs();
+        const std::vector<ParamSpec> own = {
+            {"points", ParamType::List, "events #(x0 x1 x2 x3) (or #(tau x0 x1 x2 x3) with havetau)"},
+            {"filename", ParamType::String, "text file with one event per line"},
+            {"havetau", ParamType::Bool, "events start with their proper time", false, false, false}};
+        keys.insert(keys.end(), own.begin(), own.end());
+        return keys;
+      }()},
+     make_worldline, true}};
+
 }  // namespace
 
-std::vector<std::string> motion_type_names() { return {"Geodesic", "ConstVelocity", "Worldline", "file"}; }
+std::vector<std::string> motion_type_names() { return MotionRegistry::instance().names(); }
 
 std::vector<ParamSpec> motion_param_specs(const std::string& type) {
   std::vector<ParamSpec> s = common_specs();
-  const std::string l = to_lower(type);
-  auto add = [&](std::vector<ParamSpec> more) { s.insert(s.end(), more.begin(), more.end()); };
-  if (l == "geodesic") {
-    add(frame_specs());
-    add({{"solver", ParamType::String, "id of the (timelike) solver"},
-         {"pos", ParamType::Any, "start event (metric coordinates)", true},
-         {"vel", ParamType::Vec4, "initial coordinate four-velocity"},
-         {"localvel", ParamType::Vec3, "initial 3-velocity relative to the natural tetrad"},
-         {"forward", ParamType::Number, "proper-time range integrated forward"},
-         {"backward", ParamType::Number, "proper-time range integrated backward"},
-         {"maxnumpoints", ParamType::Int, "maximal number of samples per direction (default 1000)"},
-         {"stepsize", ParamType::Number, "step size (overrides the solver's step_size)"}});
-  } else if (l == "constvelocity") {
-    add({{"boost", ParamType::Vec3, "boost velocity #(vx vy vz)", false, true},
-         {"rotation", ParamType::Vec4, "rotation #(omega ax ay az)", false, true}});
-  } else if (l == "worldline" || l == "file") {
-    add(frame_specs());
-    add({{"points", ParamType::List, "events #(x0 x1 x2 x3) (or #(tau x0 x1 x2 x3) with havetau)"},
-         {"filename", ParamType::String, "text file with one event per line"},
-         {"havetau", ParamType::Bool, "events start with their proper time"}});
-  }
+  if (const MotionType* t = MotionRegistry::instance().find(type)) s.insert(s.end(), t->keys.begin(), t->keys.end());
   return s;
 }
 
 MotionPtr make_motion(const ParamSet& ps, std::shared_ptr<const Metric> metric, const SolverConfig& solver) {
-  const MotionType type = parse_type(ps);
-  if (!metric && type != MotionType::ConstVelocity) ps.fail("metric", "no metric is defined for this motion");
-  switch (type) {
-    case MotionType::Geodesic: return make_geodesic(ps, std::move(metric), solver);
-    case MotionType::ConstVelocity: return make_const_velocity(ps);
-    case MotionType::Worldline: return make_worldline(ps, std::move(metric));
-  }
-  return nullptr;
+  const MotionType& type = MotionRegistry::instance().get(ps, "type", ps.get_string("type"), "motion type");
+  if (!metric && type.needs_metric) ps.fail("metric", "no metric is defined for this motion");
+  const std::vector<ParamSpec> specs = motion_param_specs(type.name);
+  return type.make(ParamReader(ps, specs), std::move(metric), solver);
 }
 
 }  // namespace geovis

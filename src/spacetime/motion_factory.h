@@ -17,13 +17,25 @@
 #include <vector>
 
 #include "core/params.h"
+#include "core/type_registry.h"
 #include "spacetime/geodesic.h"
 #include "spacetime/metric.h"
 #include "spacetime/motion.h"
 
 namespace geovis {
 
-/// Valid `type` values.
+class ParamReader;
+
+/// The description of a motion type (core/type_registry.h), registered in motion_factory.cpp.
+struct MotionType : TypeDescription {
+  /// The motion from its keys (absent keys read as their defaults).
+  MotionPtr (*make)(const ParamReader& keys, std::shared_ptr<const Metric> metric, const SolverConfig& solver) =
+      nullptr;
+  bool needs_metric = true;  ///< false: defined without a spacetime (ConstVelocity acts on Minkowski coordinates)
+};
+using MotionRegistry = TypeRegistry<MotionType>;
+
+/// Valid `type` values (sorted; the alias "file" of Worldline is accepted too).
 std::vector<std::string> motion_type_names();
 
 /// Keys accepted by init-motion of the given type (for ParamSet::validate). Unknown type ->

@@ -2,6 +2,7 @@
 // the factory (keys, defaults, errors) and setparam/--res behaviour.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -223,6 +224,19 @@ TEST(CameraFactory, GeoViSDefaults) {
   EXPECT_DOUBLE_EQ(dynamic_cast<PinholeStereoCamera*>(st.get())->eye_separation(), 0.1);
   EXPECT_TRUE(st->is_stereo());
   EXPECT_TRUE(diag.warnings().empty());
+}
+
+TEST(CameraFactory, EveryGeoViSCameraAndFilterIsRegistered) {
+  // Registered by static objects in each camera's file; a link that dropped a file would lose it.
+  EXPECT_EQ(camera_type_names(),
+            (std::vector<std::string>{"2PICam", "4PICam", "PanoramaCam", "PinHoleCam", "PinHoleStereoCam"}));
+  EXPECT_EQ(filter_names(),
+            (std::vector<std::string>{"FilterIntersec", "FilterRGB", "FilterRGBjac", "FilterRGBpdz", "FilterRGBpt"}));
+  // The defaults make_camera uses are the spec's (GeoViS Parser/parse_camera.cpp).
+  const auto keys = camera_param_specs("PinHoleCam");
+  const auto fov = std::find_if(keys.begin(), keys.end(), [](const ParamSpec& k) { return k.key == "fov"; });
+  ASSERT_NE(fov, keys.end());
+  EXPECT_EQ(std::get<std::vector<double>>(fov->def->v), (std::vector<double>{60, 48}));
 }
 
 TEST(CameraFactory, KeysAndFilters) {

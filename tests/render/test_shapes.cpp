@@ -466,5 +466,13 @@ TEST(ShapesEllipsoid, DiffuseFrameIsTheUnitSphere) {
   EXPECT_NEAR(sh.shade(hit, ShadeContext{}).g, std::sqrt(3.0) / 2, 1e-12);
 }
 
+TEST(ObjectRegistry, HoldsEveryObjectCommand) {
+  // Registered by static objects beside each class (shapes, mesh, csg, compound, local_object).
+  EXPECT_EQ(object_commands(),
+            (std::vector<std::string>{"comp-object", "comp-octree-object", "csg-object", "local-comp-object", "mesh-obj",
+                                      "plane-parallelogram", "plane-ring", "plane-triangle", "solid-background",
+                                      "solid-box", "solid-cylinder", "solid-ellipsoid", "solid-ring"}));
+}
+
 }  // namespace
 }  // namespace geovis

@@ -44,6 +44,15 @@ struct ObjTextures : ::testing::Test {
   }
 };
 
+TEST(TextureRegistry, HoldsEveryGeoViSTextureWithItsDefaults) {
+  // Registered by static objects in render/textures.cpp; a link that dropped the file would lose them.
+  EXPECT_EQ(texture_types(), (std::vector<std::string>{"CheckerT2D", "ChequeredT2D", "ChequeredTimeT2D", "ColorGradTex",
+                                                       "DieT2D", "Image", "UniTex"}));
+  for (const auto& k : texture_keys("ChequeredT2D"))
+    if (k.key == "width") EXPECT_EQ(param_default_text(k), "0.25");  // GeoViS GvsChequeredT2D
+  EXPECT_TRUE(texture_keys("NoSuchTexture").empty());
+}
+
 TEST_F(ObjTextures, UniTexColorAndGray) {
   expect_color(make("UniTex", {{"color", std::vector<double>{0.8, 0.16, 0.16}}}, false)->sample(0.3, 0.7),
                {0.8, 0.16, 0.16});

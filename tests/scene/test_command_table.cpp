@@ -77,6 +77,44 @@ TEST(CommandTable, EveryTypedCommandDescribesTheKeysOfEachType) {
   }
 }
 
+TEST(CommandTable, EveryDefaultHasItsKeysTypeAndLiesInItsRange) {
+  // The factories read these defaults (core/param_reader.h): a default of the wrong shape would
+  // throw at the first scene that leaves the key out, one outside its range is a documentation lie.
+  int defaults = 0;
+  for (const SceneCommand& c : scene_commands()) {
+    if (!c.keys) continue;
+    const std::vector<std::string> types = c.types ? c.types() : std::vector<std::string>{std::string()};
+    for (const std::string& type : types) {
+      for (const ParamSpec& k : c.keys(type)) {
+        SCOPED_TRACE(std::string(c.name) + " " + type + " " + k.key);
+        if (!k.def) continue;
+        ++defaults;
+        EXPECT_FALSE(k.required) << "a required key has no use for a default";
+        EXPECT_TRUE(value_has_shape(k.type, *k.def)) << k.def->describe();
+        if (!k.range) continue;
+        std::vector<double> numbers;
+        if (k.def->is_number()) numbers.push_back(std::get<double>(k.def->v));
+        if (k.def->is_vector()) numbers = std::get<std::vector<double>>(k.def->v);
+        for (double x : numbers) EXPECT_TRUE(k.range->contains(x)) << x << " not in " << k.range->text();
+      }
+    }
+  }
+  EXPECT_GT(defaults, 20);
+}
+
+TEST(CommandTable, RegisteredTypesDescribeThemselves) {
+  for (const SceneCommand& c : scene_commands()) {
+    if (!c.describe) continue;
+    ASSERT_TRUE(c.types) << c.name;
+    for (const std::string& type : c.types()) {
+      const TypeDescription* d = c.describe(type);
+      ASSERT_NE(d, nullptr) << c.name << " " << type;
+      EXPECT_EQ(d->name, type);
+      EXPECT_FALSE(d->doc.empty()) << c.name << " " << type;
+    }
+  }
+}
+
 TEST(CommandTable, ObjectFactoriesKnowEveryObjectCommandOfTheTable) {
   std::set<std::string> table;
   for (const SceneCommand& c : scene_commands())
