@@ -4,7 +4,9 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/param_reader.h"
 #include "core/rotation.h"
+#include "spacetime/motion_factory.h"
 
 namespace geovis {
 
@@ -161,5 +163,39 @@ MotionSample ConstVelocityMotion::at_coordinate_time(double t) const {
 }
 
 void ConstVelocityMotion::update_samples() { samples_ = {at_proper_time(0.0)}; }
+
+// ---- init-motion type "ConstVelocity" (docs/geovis-catalogue.md §8) ------------------------------
+
+namespace {
+
+MotionPtr make_const_velocity(const ParamReader& keys, std::shared_ptr<const Metric>, const SolverConfig&) {
+  const ParamSet& ps = keys.params();
+  // In a metric other than Minkowski the object applies the motion to pseudo-Cartesian
+  // coordinates, as GeoViS does (render/local_object.h, PseudoCartesianMotionObject).
+  auto motion = std::make_shared<ConstVelocityMotion>();
+  for (const Param& p : ps.entries()) {
+    std::vector<double> v;
+    if (p.key == "boost") {
+      const Vec3 b = motion_vector_key(p, ps, 3, v);
+      if (!(dot(b, b) < 1.0)) ps.fail("boost", "expected a 3-velocity with |v| < 1, found " + p.value.describe());
+      motion->add_boost(b);
+    } else if (p.key == "rotation") {
+      const Vec3 axis = motion_vector_key(p, ps, 4, v);
+      if (norm(axis) == 0.0)
+        ps.fail("rotation", "rotation axis is missing: expected #(omega ax ay az) with a non-zero axis, found " +
+                                p.value.describe());
+      motion->add_rotation(v[0], axis);
+    }
+  }
+  return motion;
+}
+
+const TypeRegistrar<MotionType> const_velocity{
+    {{"ConstVelocity", {}, "boosts and rotations with constant velocity (special relativity)",
+      {{"boost", ParamType::Vec3, "boost velocity #(vx vy vz)", false, true},
+       {"rotation", ParamType::Vec4, "rotation #(omega ax ay az)", false, true}}},
+     make_const_velocity, false}};
+
+}  // namespace
 
 }  // namespace geovis

@@ -26,7 +26,8 @@ namespace geovis {
 
 class ParamReader;
 
-/// The description of a motion type (core/type_registry.h), registered in motion_factory.cpp.
+/// The description of a motion type (core/type_registry.h), registered beside its class
+/// (motion_geodesic.cpp, motion_const_velocity.cpp, motion_worldline.cpp).
 struct MotionType : TypeDescription {
   /// The motion from its keys (absent keys read as their defaults).
   MotionPtr (*make)(const ParamReader& keys, std::shared_ptr<const Metric> metric, const SolverConfig& solver) =
@@ -34,6 +35,13 @@ struct MotionType : TypeDescription {
   bool needs_metric = true;  ///< false: defined without a spacetime (ConstVelocity acts on Minkowski coordinates)
 };
 using MotionRegistry = TypeRegistry<MotionType>;
+
+/// Keys of a motion's local frame at its start: e0..e3, incoords, localframe, tau0 (Geodesic and
+/// Worldline).
+std::vector<ParamSpec> motion_frame_specs();
+/// The last three components of vector key p, which must have n finite numbers (all n in `out`);
+/// otherwise a SceneError naming the key.
+Vec3 motion_vector_key(const Param& p, const ParamSet& ps, size_t n, std::vector<double>& out);
 
 /// Valid `type` values (sorted; the alias "file" of Worldline is accepted too).
 std::vector<std::string> motion_type_names();

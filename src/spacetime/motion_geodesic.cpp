@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/error.h"
+#include "core/param_reader.h"
+#include "spacetime/motion_factory.h"
 #include "spacetime/tetrad.h"
 #include "spacetime/transport.h"
 
@@ -76,5 +79,51 @@ GeodesicMotion::GeodesicMotion(std::shared_ptr<const Metric> metric, const Solve
   for (const MotionNode& n : fwd) nodes.push_back(n);
   set_nodes(std::move(nodes));
 }
+
+// ---- init-motion type "Geodesic" (docs/geovis-catalogue.md §8) -----------------------------------
+
+namespace {
+
+MotionPtr make_geodesic(const ParamReader& keys, std::shared_ptr<const Metric> metric, const SolverConfig& solver) {
+  const ParamSet& ps = keys.params();
+  Vec4 pos;
+  const Tetrad e = tetrad_from_params(ps, *metric, &pos);
+  const double forward = keys.number("forward"), backward = keys.number("backward");
+  if (forward == 0 && backward == 0)
+    ps.fail("forward", "a Geodesic motion needs `forward` and/or `backward` (proper-time ranges > 0)");
+  SolverConfig cfg = solver;
+  if (ps.has("stepsize")) cfg.step_size = keys.number("stepsize");
+  try {
+    return std::make_shared<GeodesicMotion>(metric, cfg, pos, e, keys.number("tau0"), forward, backward,
+                                            keys.integer("maxnumpoints"));
+  } catch (const SceneError&) {
+    throw;
+  } catch (const Error& err) {
+    ps.fail("pos", err.what());
+  }
+}
+
+const TypeRegistrar<MotionType> geodesic{
+    {{"Geodesic", {}, "free fall: a timelike geodesic from an event and a velocity, sampled in proper time", [] {
+        auto keys = motion_frame_specs();
+        const std::vector<ParamSpec> own = {
+            {"solver", ParamType::String, "id of the (timelike) solver"},
+            {"pos", ParamType::Any, "start event (metric coordinates)", true},
+            {"vel", ParamType::Vec4, "initial coordinate four-velocity"},
+            {"localvel", ParamType::Vec3, "initial 3-velocity relative to the natural tetrad"},
+            {"forward", ParamType::Number, "proper-time range integrated forward", false, false, 0.0,
+             ParamRange::non_negative()},
+            {"backward", ParamType::Number, "proper-time range integrated backward", false, false, 0.0,
+             ParamRange::non_negative()},
+            {"maxnumpoints", ParamType::Int, "maximal number of samples per direction", false, false, 1000.0,
+             ParamRange{2, std::numeric_limits<double>::infinity(), false, true}},
+            {"stepsize", ParamType::Number, "step size (overrides the solver's step_size)", false, false, {},
+             ParamRange::positive()}};
+        keys.insert(keys.end(), own.begin(), own.end());
+        return keys;
+      }()},
+     make_geodesic, true}};
+
+}  // namespace
 
 }  // namespace geovis

@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "core/error.h"
+#include "core/param_reader.h"
+#include "spacetime/motion_factory.h"
 #include "spacetime/tetrad.h"
 
 namespace geovis {
@@ -203,5 +207,101 @@ double WorldlineMotion::param_at(double tau) const {
 }
 
 WorldlineState WorldlineMotion::state_at(double tau) const { return state_at_param(param_at(tau)); }
+
+// ---- init-motion type "Worldline" (GeoViS "file"; docs/geovis-catalogue.md §8) -------------------
+
+namespace {
+
+std::vector<std::vector<double>> read_event_file(const ParamSet& ps, const std::string& file) {
+  std::ifstream in(file);
+  if (!in) ps.fail("filename", "cannot open worldline file \"" + file + "\"");
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  int lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    std::istringstream ls(line);
+    std::vector<double> row;
+    std::string tok;
+    while (ls >> tok) {
+      char* end = nullptr;
+      const double d = std::strtod(tok.c_str(), &end);
+      if (end == tok.c_str() || *end != '\0' || !std::isfinite(d))
+        ps.fail("filename", file + ":" + std::to_string(lineno) + ": expected a number, found \"" + tok + "\"");
+      row.push_back(d);
+    }
+    if (!row.empty()) rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+MotionPtr make_worldline(const ParamReader& keys, std::shared_ptr<const Metric> metric, const SolverConfig&) {
+  const ParamSet& ps = keys.params();
+  const bool have_tau = keys.boolean("havetau");
+  const size_t cols = have_tau ? 5 : 4;
+  std::vector<std::vector<double>> rows;
+  std::string key;
+  if (ps.has("points") && ps.has("filename")) ps.fail("points", "give either `points` or `filename`, not both");
+  if (ps.has("points")) {
+    key = "points";
+    const Param* p = ps.find("points");
+    if (!p->value.is_list()) ps.fail("points", "expected a list of event vectors, found " + p->value.describe());
+    for (const Value& v : std::get<ValueList>(p->value.v)) {
+      if (!v.is_vector())
+        ps.fail("points", "expected a list of event vectors #(x0 x1 x2 x3), found an entry " + v.describe());
+      rows.push_back(std::get<std::vector<double>>(v.v));
+    }
+  } else if (ps.has("filename")) {
+    key = "filename";
+    rows = read_event_file(ps, ps.get_string("filename"));
+  } else {
+    ps.fail("points", "a Worldline motion needs its events: `points` (list of #(x0 x1 x2 x3)) or `filename`");
+  }
+  std::vector<Vec4> events;
+  std::vector<double> taus;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i].size() != cols)
+      ps.fail(key, "event " + std::to_string(i) + ": expected " + std::to_string(cols) + " numbers (" +
+                       (have_tau ? "tau x0 x1 x2 x3" : "x0 x1 x2 x3") + "), found " + std::to_string(rows[i].size()));
+    const double* r = rows[i].data() + (have_tau ? 1 : 0);
+    events.push_back(Vec4{{r[0], r[1], r[2], r[3]}});
+    if (have_tau) taus.push_back(rows[i][0]);
+  }
+  if (events.size() < 2) ps.fail(key, "a Worldline motion needs at least 2 events, found " + std::to_string(events.size()));
+  if (ps.has("localvel") || ps.has("vel"))
+    ps.fail(ps.has("vel") ? "vel" : "localvel", "the velocity of a Worldline motion follows from its events; remove this key");
+  TetradSpec spec = tetrad_spec_from_params(ps, false, events[0]);
+  if (ps.has("pos")) ps.fail("pos", "the start of a Worldline motion is its first event; remove this key");
+  Tetrad frame{};
+  try {
+    frame = build_tetrad(*metric, spec);
+  } catch (const Error& err) {
+    ps.fail("e0..e3", err.what());
+  }
+  const double tau0 = have_tau ? taus.front() : keys.number("tau0");
+  try {
+    return std::make_shared<WorldlineMotion>(metric, std::move(events), std::move(taus), frame, tau0);
+  } catch (const SceneError&) {
+    throw;
+  } catch (const Error& err) {
+    ps.fail(key, err.what());
+  }
+}
+
+const TypeRegistrar<MotionType> worldline{
+    {{"Worldline", {"file"}, "a world line through given events, its frame Fermi-Walker transported", [] {
+        auto keys = motion_frame_specs();
+        const std::vector<ParamSpec> own = {
+            {"points", ParamType::List, "events #(x0 x1 x2 x3) (or #(tau x0 x1 x2 x3) with havetau)"},
+            {"filename", ParamType::String, "text file with one event per line"},
+            {"havetau", ParamType::Bool, "events start with their proper time", false, false, false}};
+        keys.insert(keys.end(), own.begin(), own.end());
+        return keys;
+      }()},
+     make_worldline, true}};
+
+}  // namespace
 
 }  // namespace geovis
