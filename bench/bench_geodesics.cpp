@@ -325,8 +325,9 @@ void BM_Accuracy(benchmark::State& state) {
   state.counters["dt_median"] = quantile(dt, 0.5);
   state.counters["dt_max"] = quantile(dt, 1.0);
   state.counters["ref_spread"] = spread;
-  state.SetLabel(std::string(state.range(0) == 0 ? "Schwarzschild " : "KerrBL a=0.9 ") +
-                 (method == 0 ? "GSL rkck" : std::string(solver_kind_name(kind)) + (method == 2 ? " Mino" : " coordinates")));
+  state.SetLabel(
+      std::string(state.range(0) == 0 ? "Schwarzschild " : "KerrBL a=0.9 ") +
+      (method == 0 ? "GSL rkck" : std::string(solver_kind_name(kind)) + (method == 2 ? " Mino" : " coordinates")));
 }
 
 void ours_args(benchmark::internal::Benchmark* b) {
@@ -367,7 +368,10 @@ BENCHMARK(BM_Ours)
     ->Args({1, static_cast<int>(SolverKind::RungeKuttaNystrom86), 1, 7})
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VersusGsl)
-    ->ArgsProduct({{0, 1}, {static_cast<int>(SolverKind::CashKarp45), static_cast<int>(SolverKind::DormandPrince853)}, {0, 1}, {0}})
+    ->ArgsProduct({{0, 1},
+                   {static_cast<int>(SolverKind::CashKarp45), static_cast<int>(SolverKind::DormandPrince853)},
+                   {0, 1},
+                   {0}})
     ->Args({0, static_cast<int>(SolverKind::RungeKuttaNystrom86), 1, 0})
     ->Args({1, static_cast<int>(SolverKind::RungeKuttaNystrom86), 1, 0})
     ->Args({0, static_cast<int>(SolverKind::RungeKuttaNystrom86), 1, 6})

@@ -32,8 +32,10 @@ ParamSet params(const char* cmd, std::initializer_list<std::pair<const char*, Va
 
 /// Two uniform SurfShaders ("disk", "sky") in ctx.
 void add_shaders(BuildContext& ctx) {
-  ctx.textures["tdisk"] = make_texture(params("init-texture", {{"type", "UniTex"}, {"color", std::vector<double>{0.8, 0.16, 0.16}}}), ctx);
-  ctx.textures["tsky"] = make_texture(params("init-texture", {{"type", "UniTex"}, {"color", std::vector<double>{0.3, 0.3, 0.6}}}), ctx);
+  ctx.textures["tdisk"] =
+      make_texture(params("init-texture", {{"type", "UniTex"}, {"color", std::vector<double>{0.8, 0.16, 0.16}}}), ctx);
+  ctx.textures["tsky"] =
+      make_texture(params("init-texture", {{"type", "UniTex"}, {"color", std::vector<double>{0.3, 0.3, 0.6}}}), ctx);
   ctx.shaders["disk"] = make_shader(params("init-shader", {{"type", "SurfShader"}, {"objcolor", "tdisk"}}), ctx);
   ctx.shaders["sky"] = make_shader(params("init-shader", {{"type", "SurfShader"}, {"objcolor", "tsky"}}), ctx);
 }
@@ -136,12 +138,30 @@ void BM_Render(benchmark::State& state, RenderJob (*make)(), int threads, bool s
   state.counters["rhs/ray"] = double(stats.rhs_evals) / double(stats.rays);
 }
 
-BENCHMARK_CAPTURE(BM_Render, schwarzschild_1thread, &schwarzschild_scene, 1, true)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Render, schwarzschild_2threads, &schwarzschild_scene, 2, true)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Render, schwarzschild_1thread_coordinates, &schwarzschild_scene, 1, false)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Render, kerr_1thread, &kerr_scene, 1, true)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Render, kerr_2threads, &kerr_scene, 2, true)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
-BENCHMARK_CAPTURE(BM_Render, kerr_1thread_coordinates, &kerr_scene, 1, false)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, schwarzschild_1thread, &schwarzschild_scene, 1, true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, schwarzschild_2threads, &schwarzschild_scene, 2, true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, schwarzschild_1thread_coordinates, &schwarzschild_scene, 1, false)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, kerr_1thread, &kerr_scene, 1, true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, kerr_2threads, &kerr_scene, 2, true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK_CAPTURE(BM_Render, kerr_1thread_coordinates, &kerr_scene, 1, false)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
 
 }  // namespace
 }  // namespace geovis

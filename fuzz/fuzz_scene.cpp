@@ -15,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   geovis::SchemeOptions opts;
   opts.diag = &diag;
   opts.max_calls = 2000;
-  opts.time_limit_seconds = 2.0;  // endless Scheme loops are the scene's problem, not a finding
+  opts.time_limit_seconds = 2.0;                // endless Scheme loops are the scene's problem, not a finding
   opts.memory_limit_bytes = size_t{256} << 20;  // so is an unbounded allocation
   opts.print_output = false;
   try {

@@ -114,8 +114,8 @@ int main(int argc, char** argv) {
   const std::vector<std::string> search = {tex.string(), (data / "fidelity" / "textures").string()};
   const int div = quick ? 2 : 1;
 
-  std::printf("%-24s %9s %12s %12s %8s %10s %10s\n", "scene", "res", "ours px/s", "GeoViS px/s", "ratio",
-              "steps/ray", "GeoViS");
+  std::printf("%-24s %9s %12s %12s %8s %10s %10s\n", "scene", "res", "ours px/s", "GeoViS px/s", "ratio", "steps/ray",
+              "GeoViS");
   double log_sum = 0;
   int n = 0;
   double worst = 1e300;
@@ -138,8 +138,9 @@ int main(int argc, char** argv) {
     }
     std::fflush(stdout);
   }
-  if (n) std::printf("geometric mean %.2fx GeoViS per core (goal 30x), worst scene %.2fx (goal 10x)\n",
-                     std::exp(log_sum / n), worst);
+  if (n)
+    std::printf("geometric mean %.2fx GeoViS per core (goal 30x), worst scene %.2fx (goal 10x)\n",
+                std::exp(log_sum / n), worst);
 
   // Data filters on the Kerr disk (quarter of the pixels of the table: RGBjac is the costly one).
   const fs::path kerr = data / "geovis/scenes/kerrAccretionDisk.scm";
@@ -148,8 +149,9 @@ int main(int argc, char** argv) {
   const Measured m_rgb = render_scene(kerr, search, fw, fh, 0, 1, &rgb);
   const Measured m_pdz = render_scene(kerr, search, fw, fh, 0, 1, &pdz);
   const Measured m_jac = render_scene(kerr, search, fw, fh, 0, 1, &jac);
-  std::printf("kerrAccretionDisk %dx%d CPU s: RGB %.2f, RGBpdz %.2f (%.2fx, goal <= 1.1x), RGBjac %.2f (%.1fx, goal <= 3x)\n",
-              fw, fh, m_rgb.cpu, m_pdz.cpu, m_pdz.cpu / m_rgb.cpu, m_jac.cpu, m_jac.cpu / m_rgb.cpu);
+  std::printf(
+      "kerrAccretionDisk %dx%d CPU s: RGB %.2f, RGBpdz %.2f (%.2fx, goal <= 1.1x), RGBjac %.2f (%.1fx, goal <= 3x)\n",
+      fw, fh, m_rgb.cpu, m_pdz.cpu, m_pdz.cpu / m_rgb.cpu, m_jac.cpu, m_jac.cpu / m_rgb.cpu);
   std::printf("  steps/ray: RGB %.0f, RGBpdz %.0f, RGBjac %.0f\n", double(m_rgb.steps) / m_rgb.rays,
               double(m_pdz.steps) / m_pdz.rays, double(m_jac.steps) / m_jac.rays);
 

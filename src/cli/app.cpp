@@ -56,8 +56,8 @@ int run(int argc, const char* const* argv) {
     if (!std::filesystem::exists(word, ec) && to_lower(std::filesystem::path(word).extension().string()) != ".scm") {
       std::vector<std::string> names;
       for (auto& [name, setup] : cmds) names.emplace_back(name);
-      std::cerr << "geovis: error: \"" << word << "\" is neither a subcommand (" << join(names)
-                << ") nor a scene file" << did_you_mean(word, names) << "\n";
+      std::cerr << "geovis: error: \"" << word << "\" is neither a subcommand (" << join(names) << ") nor a scene file"
+                << did_you_mean(word, names) << "\n";
       return 1;
     }
   }

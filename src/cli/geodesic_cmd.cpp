@@ -63,8 +63,7 @@ bool parse_number(const std::string& text, double& out) {
   return *end == '\0' && std::isfinite(out);
 }
 
-std::vector<double> parse_vector(const std::string& option, const std::string& text, size_t n,
-                                 const char* layout) {
+std::vector<double> parse_vector(const std::string& option, const std::string& text, size_t n, const char* layout) {
   std::vector<double> v;
   std::stringstream ss(text);
   std::string item;
@@ -101,8 +100,7 @@ int run_geodesic(const GeodesicArgs& a) {
 
   // ---- options ----
   const GeodesicType type = parse_geodesic_type(a.type);
-  if (type == GeodesicType::Spacelike)
-    throw Error("--type: expected lightlike or timelike, found \"" + a.type + "\"");
+  if (type == GeodesicType::Spacelike) throw Error("--type: expected lightlike or timelike, found \"" + a.type + "\"");
   SolverConfig cfg;
   cfg.kind = solver_kind_from_name(a.solver);
   cfg.type = type;
@@ -132,8 +130,9 @@ int run_geodesic(const GeodesicArgs& a) {
   const Vec4 x{{pv[0], pv[1], pv[2], pv[3]}};
   const auto& c = m->info().coords;
   if (!m->is_valid(x))
-    throw Error("--pos: (" + (a.pos.empty() ? fmt(x[0]) + "," + fmt(x[1]) + "," + fmt(x[2]) + "," + fmt(x[3]) : a.pos) + ") is outside the validity domain of the " + m->name() + " coordinates (" +
-                c[0] + ", " + c[1] + ", " + c[2] + ", " + c[3] + ")");
+    throw Error("--pos: (" + (a.pos.empty() ? fmt(x[0]) + "," + fmt(x[1]) + "," + fmt(x[2]) + "," + fmt(x[3]) : a.pos) +
+                ") is outside the validity domain of the " + m->name() + " coordinates (" + c[0] + ", " + c[1] + ", " +
+                c[2] + ", " + c[3] + ")");
   const Tetrad e = m->natural_tetrad(x, TetradKind::Default);
   const Vec3 d{dv[0], dv[1], dv[2]};
   Vec4 k;
@@ -144,8 +143,7 @@ int run_geodesic(const GeodesicArgs& a) {
                   ") overflows in double precision; give components of moderate size (only the direction counts)");
     k = local_null_direction(e, d, /*past_directed=*/!a.forward);
   } else {
-    if (!(norm(d) < 1.0))
-      throw Error("--dir: expected a local 3-velocity with |v| < 1, found |v| = " + fmt(norm(d)));
+    if (!(norm(d) < 1.0)) throw Error("--dir: expected a local 3-velocity with |v| < 1, found |v| = " + fmt(norm(d)));
     k = local_four_velocity(e, d);
   }
 
@@ -166,8 +164,9 @@ int run_geodesic(const GeodesicArgs& a) {
     const double target = constraint_target(type);
     if (!finite || !(std::fabs(gkk - target) <= 1e-8 * std::max(size, 1.0)))
       throw Error(std::string("--dir: the start vector k = (") + fmt(k[0]) + ", " + fmt(k[1]) + ", " + fmt(k[2]) +
-                  ", " + fmt(k[3]) + ") is not " + (type == GeodesicType::Lightlike ? "null" : "a unit timelike vector") +
-                  ": g(k,k) = " + fmt(gkk) + " instead of " + fmt(target) + " (direction \"" + dir + "\")");
+                  ", " + fmt(k[3]) + ") is not " +
+                  (type == GeodesicType::Lightlike ? "null" : "a unit timelike vector") + ": g(k,k) = " + fmt(gkk) +
+                  " instead of " + fmt(target) + " (direction \"" + dir + "\")");
   }
 
   // ---- integrate, collecting points ----
@@ -230,7 +229,8 @@ int run_geodesic(const GeodesicArgs& a) {
     os << ',' << fmt(p.constraint) << '\n';
   }
   os << "# stop: " << stop_reason_name(res.reason);
-  if (res.reason == StopReason::Escaped) os << " at radius " << fmt(res.escape_radius) << ", lambda " << fmt(res.lambda);
+  if (res.reason == StopReason::Escaped)
+    os << " at radius " << fmt(res.escape_radius) << ", lambda " << fmt(res.lambda);
   os << '\n';
   std::cout << os.str();
   return 0;

@@ -64,11 +64,10 @@ void print_text(const Metric& m, std::ostream& os) {
   std::vector<std::string> tetrads;
   for (TetradKind k : info.tetrads) tetrads.push_back(tetrad_kind_name(k));
   os << "  tetrads:     " << join(tetrads) << "\n";
-  os << "  christoffel: " << (m.has_closed_form_christoffel() ? "closed form" : "automatic differentiation")
-     << "\n";
+  os << "  christoffel: " << (m.has_closed_form_christoffel() ? "closed form" : "automatic differentiation") << "\n";
   const Vec4& x = info.sample_pos;
-  os << "  sample position: (" << number(x[0]) << ", " << number(x[1]) << ", " << number(x[2]) << ", "
-     << number(x[3]) << ")\n";
+  os << "  sample position: (" << number(x[0]) << ", " << number(x[1]) << ", " << number(x[2]) << ", " << number(x[3])
+     << ")\n";
   if (info.params.empty()) {
     os << "  parameters:  none\n";
     return;

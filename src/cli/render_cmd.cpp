@@ -138,8 +138,7 @@ std::string format_frame(const std::string& s, const FramePattern& fp, int frame
 std::pair<std::string, std::string> split_ext(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   const size_t dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot == slash + 1)
-    return {path, ""};
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot == slash + 1) return {path, ""};
   return {path.substr(0, dot), path.substr(dot)};
 }
 
@@ -147,8 +146,8 @@ void check_image_extension(const std::string& path) {
   const std::string ext = to_lower(split_ext(path).second);
   static const std::vector<std::string> ok = {".png", ".tif", ".tiff", ".ppm", ".exr", ".jpg", ".jpeg"};
   if (std::find(ok.begin(), ok.end(), ext) == ok.end())
-    throw Error("-o: \"" + path + "\": " +
-                (ext.empty() ? std::string("no file extension") : "unsupported image format \"" + ext + "\"") +
+    throw Error("-o: \"" + path +
+                "\": " + (ext.empty() ? std::string("no file extension") : "unsupported image format \"" + ext + "\"") +
                 "; use .png, .tif or .ppm (also .exr, .jpg)");
 }
 
@@ -214,7 +213,9 @@ std::pair<int, int> parse_frames(const std::string& s, int count) {
 
 std::pair<int, int> parse_res(const std::string& s) {
   const size_t x = s.find_first_of("xX");
-  auto bad = [&]() -> std::pair<int, int> { throw Error("--res: expected WIDTHxHEIGHT (e.g. 640x480), found \"" + s + "\""); };
+  auto bad = [&]() -> std::pair<int, int> {
+    throw Error("--res: expected WIDTHxHEIGHT (e.g. 640x480), found \"" + s + "\"");
+  };
   if (x == std::string::npos) return bad();
   const std::string w = s.substr(0, x), h = s.substr(x + 1);
   if (w.empty() || h.empty() || w.find_first_not_of("0123456789") != std::string::npos ||
@@ -273,15 +274,28 @@ int run_program(const std::vector<std::string>& args, bool quiet) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-void make_movie(const RenderArgs& a, const std::string& ffmpeg, const std::string& pattern, int first,
-                bool quiet) {
+void make_movie(const RenderArgs& a, const std::string& ffmpeg, const std::string& pattern, int first, bool quiet) {
   // ffmpeg writes a temporary file (same extension, so it picks the same container), which
   // replaces the movie only when complete.
   AtomicFile movie(a.movie);
   // yuv420p needs even dimensions: pad by one pixel when needed.
-  const std::vector<std::string> args = {ffmpeg, "-y", "-loglevel", "error", "-framerate", "25", "-start_number",
-                                         std::to_string(first), "-f", "image2", "-i", pattern, "-vf",
-                                         "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", movie.temp_path()};
+  const std::vector<std::string> args = {ffmpeg,
+                                         "-y",
+                                         "-loglevel",
+                                         "error",
+                                         "-framerate",
+                                         "25",
+                                         "-start_number",
+                                         std::to_string(first),
+                                         "-f",
+                                         "image2",
+                                         "-i",
+                                         pattern,
+                                         "-vf",
+                                         "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+                                         "-pix_fmt",
+                                         "yuv420p",
+                                         movie.temp_path()};
   const int rc = run_program(args, false);
   if (rc != 0)
     throw Error("--movie: ffmpeg failed (exit status " + std::to_string(rc) + ") making \"" + a.movie +
@@ -380,9 +394,9 @@ void report_tiles(const RenderArgs& a, const TileRenderSession& session, bool ve
     std::ostringstream csv;
     csv << "frame,eye,tile,x0,y0,x1,y1,rank,order_cost,cpu_seconds,steps,done_at\n";
     for (const TileLogEntry& e : log)
-      csv << e.frame << ',' << e.eye << ',' << e.tile << ',' << e.rect.x0 << ',' << e.rect.y0 << ',' << e.rect.x1
-          << ',' << e.rect.y1 << ',' << e.rank << ',' << e.order_cost << ',' << e.cost.cpu_seconds << ','
-          << e.cost.steps << ',' << e.done_at << '\n';
+      csv << e.frame << ',' << e.eye << ',' << e.tile << ',' << e.rect.x0 << ',' << e.rect.y0 << ',' << e.rect.x1 << ','
+          << e.rect.y1 << ',' << e.rank << ',' << e.order_cost << ',' << e.cost.cpu_seconds << ',' << e.cost.steps
+          << ',' << e.done_at << '\n';
     write_file_atomic(a.tile_stats, csv.str());
   }
   if (!verbose || !mpi) return;
@@ -426,19 +440,21 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
   // Check the arguments that need no scene first (fail fast, before a long evaluation).
   std::optional<std::pair<int, int>> res;
   if (!a.res.empty()) res = parse_res(a.res);
-  if (a.threads < 0) throw Error("--threads: expected 0 (all cores) or a positive number, found " + std::to_string(a.threads));
+  if (a.threads < 0)
+    throw Error("--threads: expected 0 (all cores) or a positive number, found " + std::to_string(a.threads));
   if (a.tile_size < 1 || a.tile_size > 4096)
     throw Error("--tile-size: expected 1 to 4096 pixels, found " + std::to_string(a.tile_size));
   if (a.supersample < 1 || a.supersample > kMaxSupersample)
-    throw Error("--supersample: expected 1 to " + std::to_string(kMaxSupersample) +
-                " samples per pixel side, found " + std::to_string(a.supersample));
+    throw Error("--supersample: expected 1 to " + std::to_string(kMaxSupersample) + " samples per pixel side, found " +
+                std::to_string(a.supersample));
   if (!a.movie.empty() && to_lower(split_ext(a.movie).second).empty())
     throw Error("--movie: \"" + a.movie + "\": expected a file name with an extension such as .mp4");
   // Look for ffmpeg before rendering, so that a long render does not fail at its very end.
   std::string ffmpeg;
   if (!a.movie.empty() && (ffmpeg = find_program("ffmpeg")).empty())
-    throw Error("--movie: ffmpeg is not installed (not found in PATH); install it (Debian: apt-get install "
-                "ffmpeg) or render without --movie and assemble the frames yourself");
+    throw Error(
+        "--movie: ffmpeg is not installed (not found in PATH); install it (Debian: apt-get install "
+        "ffmpeg) or render without --movie and assemble the frames yourself");
   for (const auto& dir : a.texture_paths)
     if (!fs::is_directory(dir)) throw Error("--texture-path: \"" + dir + "\" is not a directory");
 

@@ -35,7 +35,8 @@ ResumeCheck check_resume(const std::string& path, int width, int height, const s
   if (c.description.rfind("geovis-settings ", 0) != 0)
     return {false, "\"" + path + "\" has no geovis settings hash (not written by geovis render)"};
   if (c.description != description)
-    return {false, "\"" + path + "\" was written with other settings (scene file, --define, --res or --supersample changed)"};
+    return {false,
+            "\"" + path + "\" was written with other settings (scene file, --define, --res or --supersample changed)"};
   return {true, {}};
 }
 

@@ -37,7 +37,8 @@ SchemeOptions scheme_options(const SceneArgs& args, Diagnostics* diag, bool quie
     if (!std::filesystem::is_directory(dir, ec)) throw Error("--scene-path: \"" + dir + "\" is not a directory");
   }
   if (!(args.time_limit_seconds >= 0) || !std::isfinite(args.time_limit_seconds))
-    throw Error("--scene-time-limit: expected a number of seconds >= 0, found " + std::to_string(args.time_limit_seconds));
+    throw Error("--scene-time-limit: expected a number of seconds >= 0, found " +
+                std::to_string(args.time_limit_seconds));
   if (!(args.memory_limit_mib >= 0) || !(args.memory_limit_mib < 1e9))
     throw Error("--scene-memory-limit: expected a number of MiB >= 0, found " + std::to_string(args.memory_limit_mib));
   opts.load_paths = args.scene_paths;

@@ -56,7 +56,8 @@ std::vector<ViewFrame> find_view_frames(const std::string& data) {
   if (!fs::exists(data, ec)) throw Error("\"" + data + "\" does not exist");
   if (!fs::is_directory(data, ec)) {
     if (!is_data_extension(fs::path(data).extension().string()))
-      throw Error("\"" + data + "\" is not a data file: expected an OpenEXR data file (.exr of geovis render --data or a "
+      throw Error("\"" + data +
+                  "\" is not a data file: expected an OpenEXR data file (.exr of geovis render --data or a "
                   "data filter), a GeoViS .pdz, .jac, .pt or .dat file, or a folder of them");
     return {ViewFrame{fs::path(data).filename().string(), data}};
   }

@@ -28,12 +28,10 @@ std::string format_diagnostic(const SourceLoc& loc, std::string_view command, st
 ParameterError::ParameterError(std::string_view owner, std::string_view key, std::string_view message)
     : Error(std::string(owner) + ": " + std::string(key) + ": " + std::string(message)), key_(key), message_(message) {}
 
-SceneError::SceneError(const SourceLoc& loc, std::string_view command, std::string_view key,
-                       std::string_view message)
+SceneError::SceneError(const SourceLoc& loc, std::string_view command, std::string_view key, std::string_view message)
     : Error(format_diagnostic(loc, command, key, message)), loc_(loc) {}
 
-void Diagnostics::warn(const SourceLoc& loc, std::string_view command, std::string_view key,
-                       std::string_view message) {
+void Diagnostics::warn(const SourceLoc& loc, std::string_view command, std::string_view key, std::string_view message) {
   if (strict) throw SceneError(loc, command, key, message);
   warnings_.push_back("warning: " + format_diagnostic(loc, command, key, message));
 }

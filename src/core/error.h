@@ -39,8 +39,7 @@ class ParameterError : public Error {
 /// An error in a scene or parameter set: "file:line: command: key: message".
 class SceneError : public Error {
  public:
-  SceneError(const SourceLoc& loc, std::string_view command, std::string_view key,
-             std::string_view message);
+  SceneError(const SourceLoc& loc, std::string_view command, std::string_view key, std::string_view message);
   const SourceLoc& loc() const { return loc_; }
 
  private:
@@ -56,8 +55,7 @@ std::string format_diagnostic(const SourceLoc& loc, std::string_view command, st
 class Diagnostics {
  public:
   bool strict = false;
-  void warn(const SourceLoc& loc, std::string_view command, std::string_view key,
-            std::string_view message);
+  void warn(const SourceLoc& loc, std::string_view command, std::string_view key, std::string_view message);
   const std::vector<std::string>& warnings() const { return warnings_; }
   void clear() { warnings_.clear(); }
 

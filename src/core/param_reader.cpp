@@ -19,8 +19,8 @@ void check_range(const ParamSet& ps, const ParamSpec& s, const std::vector<doubl
     if (!s.range->contains(x)) {
       std::string found;
       for (double y : numbers) found += (found.empty() ? "" : " ") + Value(y).describe();
-      ps.fail(s.key, "expected " + std::string(numbers.size() > 1 ? "numbers" : "a number") + " in " +
-                         s.range->text() + ", found " + found);
+      ps.fail(s.key, "expected " + std::string(numbers.size() > 1 ? "numbers" : "a number") + " in " + s.range->text() +
+                         ", found " + found);
     }
 }
 }  // namespace
@@ -61,8 +61,8 @@ size_t ParamReader::choice_index(std::string_view key, const std::vector<std::st
   const std::string name = string(key);
   for (size_t i = 0; i < valid.size(); ++i)
     if (to_lower(valid[i]) == to_lower(name)) return i;
-  ps_.fail(key, "unknown " + std::string(what) + " \"" + name + "\"" + did_you_mean(name, valid) + " (valid: " +
-                    join(valid) + ")");
+  ps_.fail(key, "unknown " + std::string(what) + " \"" + name + "\"" + did_you_mean(name, valid) +
+                    " (valid: " + join(valid) + ")");
 }
 
 std::string ParamReader::choice(std::string_view key, const std::vector<std::string>& valid,

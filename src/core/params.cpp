@@ -200,8 +200,7 @@ int ParamSet::get_int(std::string_view key, std::optional<int> def) const {
     require(key);
   }
   const double d = get_number(key);
-  if (d != std::floor(d) || std::fabs(d) > 2e9)
-    fail(key, "expected an integer, found " + p->value.describe());
+  if (d != std::floor(d) || std::fabs(d) > 2e9) fail(key, "expected an integer, found " + p->value.describe());
   return static_cast<int>(d);
 }
 
@@ -221,14 +220,12 @@ std::vector<std::string> ParamSet::get_strings(std::string_view key) const {
     if (auto* s = std::get_if<std::string>(&p->value.v))
       out.push_back(*s);
     else
-      throw SceneError(p->loc.line ? p->loc : loc_, command_, key,
-                       "expected a string, found " + p->value.describe());
+      throw SceneError(p->loc.line ? p->loc : loc_, command_, key, "expected a string, found " + p->value.describe());
   }
   return out;
 }
 
-std::vector<double> ParamSet::get_vector(std::string_view key, size_t n,
-                                         std::optional<std::vector<double>> def) const {
+std::vector<double> ParamSet::get_vector(std::string_view key, size_t n, std::optional<std::vector<double>> def) const {
   return get_vector_any(key, {n}, std::move(def));
 }
 
@@ -266,8 +263,7 @@ Transform ParamSet::get_transform(std::string_view key, std::optional<Transform>
     require(key);
   }
   if (auto* t = std::get_if<Transform>(&p->value.v)) return *t;
-  fail(key, "expected a transform matrix (from scale-obj, rotate-obj or translate-obj), found " +
-                p->value.describe());
+  fail(key, "expected a transform matrix (from scale-obj, rotate-obj or translate-obj), found " + p->value.describe());
 }
 
 bool value_has_shape(ParamType t, const Value& v) {

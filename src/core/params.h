@@ -39,8 +39,7 @@ using ValueList = std::vector<Value>;
 /// One scene value: #t/#f, a number, a string (also object ids), a numeric vector #(...), a
 /// transform matrix, or a list (e.g. setparam's ("objID" "param" value)).
 struct Value {
-  std::variant<std::monostate, bool, double, std::string, std::vector<double>, Transform, ValueList>
-      v;
+  std::variant<std::monostate, bool, double, std::string, std::vector<double>, Transform, ValueList> v;
   Value() = default;
   Value(bool b) : v(b) {}
   Value(double d) : v(d) {}
@@ -74,7 +73,7 @@ struct ParamRange {
   double max;
   bool open_min = false;
   bool open_max = false;
-  static ParamRange positive() { return {0, std::numeric_limits<double>::infinity(), true, true}; }      ///< (0, inf)
+  static ParamRange positive() { return {0, std::numeric_limits<double>::infinity(), true, true}; }       ///< (0, inf)
   static ParamRange non_negative() { return {0, std::numeric_limits<double>::infinity(), false, true}; }  ///< [0, inf)
   [[nodiscard]] bool contains(double x) const;
   /// "[0, 1]", "(0, 0.5)", "(0, inf)": the interval as the scene reference prints it.
@@ -132,8 +131,7 @@ class ParamSet {
   std::string get_string(std::string_view key, std::optional<std::string> def = {}) const;
   std::vector<std::string> get_strings(std::string_view key) const;  ///< all entries of a repeatable key
   /// A numeric vector of exactly n entries (n=1 also accepts a plain number).
-  std::vector<double> get_vector(std::string_view key, size_t n,
-                                 std::optional<std::vector<double>> def = {}) const;
+  std::vector<double> get_vector(std::string_view key, size_t n, std::optional<std::vector<double>> def = {}) const;
   /// A numeric vector whose size is one of `sizes`.
   std::vector<double> get_vector_any(std::string_view key, std::initializer_list<size_t> sizes,
                                      std::optional<std::vector<double>> def = {}) const;

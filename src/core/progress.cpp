@@ -7,8 +7,7 @@
 
 namespace geovis {
 
-Progress::Progress(long total, std::string label, bool enabled, std::FILE* out, std::string unit,
-                   int force_terminal)
+Progress::Progress(long total, std::string label, bool enabled, std::FILE* out, std::string unit, int force_terminal)
     : total_(total < 0 ? 0 : total),
       label_(std::move(label)),
       enabled_(enabled && out != nullptr),
@@ -76,8 +75,8 @@ std::string Progress::format_bar(const std::string& label, long done, long total
   const double rate = seconds > 0 ? double(done) / seconds : 0.0;
   const double eta = rate > 0 ? double(total - done) / rate : NAN;
   char buf[160];
-  std::snprintf(buf, sizeof buf, " [%s] %5.1f%%  %.0f %s/s  ETA %s", bar.c_str(), 100.0 * frac, rate,
-                unit.c_str(), done >= total ? "0:00" : format_duration(eta).c_str());
+  std::snprintf(buf, sizeof buf, " [%s] %5.1f%%  %.0f %s/s  ETA %s", bar.c_str(), 100.0 * frac, rate, unit.c_str(),
+                done >= total ? "0:00" : format_duration(eta).c_str());
   return label.empty() ? std::string(buf + 1) : label + buf;
 }
 

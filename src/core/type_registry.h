@@ -29,10 +29,10 @@ namespace geovis {
 
 /// What every entry holds, whatever its kind.
 struct TypeDescription {
-  std::string name;                  ///< canonical name, as scenes and listings spell it
-  std::vector<std::string> aliases;  ///< other accepted spellings (GeoViS names)
-  std::string doc;                   ///< one line
-  std::vector<ParamSpec> keys;       ///< the type's own keys (common keys are added by its kind)
+  std::string name;                          ///< canonical name, as scenes and listings spell it
+  std::vector<std::string> aliases;          ///< other accepted spellings (GeoViS names)
+  std::string doc;                           ///< one line
+  std::vector<ParamSpec> keys;               ///< the type's own keys (common keys are added by its kind)
   std::vector<std::string> changeable = {};  ///< keys a per-frame setparam/set-parameter may set
   bool geovis_extension = false;             ///< not a GeoViS type
 };

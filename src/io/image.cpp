@@ -120,8 +120,7 @@ DecodedImage decode_image(const std::string& path, bool as_stored, const std::ve
       throw Error("cannot read image \"" + path + "\": the file is empty");
   }
   auto in = OIIO::ImageInput::open(path, &config);
-  if (!in)
-    throw Error("cannot read image \"" + path + "\": " + first_line(OIIO::geterror(), "not an image file"));
+  if (!in) throw Error("cannot read image \"" + path + "\": " + first_line(OIIO::geterror(), "not an image file"));
   const OIIO::ImageSpec& spec = in->spec();
   DecodedImage d;
   d.width = spec.width;
@@ -152,15 +151,16 @@ std::string checksum(const Pixels& p) { return fnv1a64_text(fnv1a64(p.bytes.data
 Pixels stored_pixels(const Image& img, const std::string& ext, int bits) {
   const bool jpeg = ext == ".jpg" || ext == ".jpeg";
   Pixels p;
-  p.type = ext == ".exr" ? OIIO::TypeDesc::HALF
-                         : ((bits == 16 && !jpeg) ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+  p.type =
+      ext == ".exr" ? OIIO::TypeDesc::HALF : ((bits == 16 && !jpeg) ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
   const size_t n = img.pixels.size();
   p.bytes.resize(n * p.type.size());
   const auto clamp01 = [](float v) { return std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f); };
   if (p.type == OIIO::TypeDesc::HALF) {
     OIIO::convert_pixel_values(OIIO::TypeDesc::FLOAT, img.pixels.data(), p.type, p.bytes.data(), int(n));
   } else if (p.type == OIIO::TypeDesc::UINT8) {
-    for (size_t i = 0; i < n; ++i) p.bytes[i] = static_cast<unsigned char>(std::lround(clamp01(img.pixels[i]) * 255.0f));
+    for (size_t i = 0; i < n; ++i)
+      p.bytes[i] = static_cast<unsigned char>(std::lround(clamp01(img.pixels[i]) * 255.0f));
   } else {
     auto* o = reinterpret_cast<std::uint16_t*>(p.bytes.data());
     for (size_t i = 0; i < n; ++i) o[i] = static_cast<std::uint16_t>(std::lround(clamp01(img.pixels[i]) * 65535.0f));
@@ -188,7 +188,8 @@ std::vector<unsigned char> encode(const std::string& path, const std::string& ex
     ok = out->open(path, spec) && out->write_image(pixels.type, pixels.bytes.data());
     ok = out->close() && ok;
   }
-  if (!ok) throw Error("cannot write \"" + path + "\": " + first_line(out->geterror(), "the image could not be encoded"));
+  if (!ok)
+    throw Error("cannot write \"" + path + "\": " + first_line(out->geterror(), "the image could not be encoded"));
   if (is_pnm(ext) && !description.empty()) {
     // "P6\n..." -> "P6\n# description\n...": a header comment every PNM reader skips.
     const auto eol = std::find(bytes.begin(), bytes.end(), '\n');
@@ -252,7 +253,8 @@ ImageFileCheck check_image_file(const std::string& path) {
     if (tag != std::string::npos) {
       c.description.resize(tag);
       if (d.description.substr(tag + kPixelsTag.size()) != checksum(d.pixels)) {
-        c.problem = "cannot read image \"" + path + "\": the pixels do not match the checksum stored in the file "
+        c.problem = "cannot read image \"" + path +
+                    "\": the pixels do not match the checksum stored in the file "
                     "(the file is truncated or damaged)";
         return c;
       }
@@ -268,12 +270,13 @@ void write_image(const std::string& path, const Image& img, int bits, const std:
   if (img.width <= 0 || img.height <= 0 || img.channels <= 0 ||
       img.pixels.size() != size_t(img.width) * img.height * img.channels)
     throw Error("cannot write \"" + path + "\": the image is empty or inconsistent");
-  if (bits != 8 && bits != 16) throw Error("cannot write \"" + path + "\": bits: expected 8 or 16, found " + std::to_string(bits));
+  if (bits != 8 && bits != 16)
+    throw Error("cannot write \"" + path + "\": bits: expected 8 or 16, found " + std::to_string(bits));
   const std::string ext = lower_extension(path);
   static const std::vector<std::string> kExts = {".png", ".tif", ".tiff", ".ppm", ".exr", ".jpg", ".jpeg"};
   if (std::find(kExts.begin(), kExts.end(), ext) == kExts.end())
-    throw Error("cannot write \"" + path + "\": unknown image extension \"" + ext + "\"" +
-                did_you_mean(ext, kExts) + " (valid: " + join(kExts) + ")");
+    throw Error("cannot write \"" + path + "\": unknown image extension \"" + ext + "\"" + did_you_mean(ext, kExts) +
+                " (valid: " + join(kExts) + ")");
   const std::vector<unsigned char> bytes = encode_image(path, ext, img, bits, description);
   write_file_atomic(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
@@ -314,7 +317,8 @@ void write_channel_image(const std::string& path, const ChannelImage& img) {
     ok = out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, img.pixels.data());
     ok = out->close() && ok;
   }
-  if (!ok) throw Error("cannot write \"" + path + "\": " + first_line(out->geterror(), "the image could not be encoded"));
+  if (!ok)
+    throw Error("cannot write \"" + path + "\": " + first_line(out->geterror(), "the image could not be encoded"));
   write_file_atomic(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
@@ -350,15 +354,15 @@ void draw_text(Image& img, int x, int y, const std::string& text, int size, cons
   const std::string font = fs::exists(kFont) ? kFont : "";
   // Wraps the pixels (no copy): render_text blends into them in place.
   OIIO::ImageBuf buf(OIIO::ImageSpec(img.width, img.height, 3, OIIO::TypeDesc::FLOAT), img.pixels.data());
-  const auto ax = align == 1 ? OIIO::ImageBufAlgo::TextAlignX::Center
-                             : (align == 2 ? OIIO::ImageBufAlgo::TextAlignX::Right : OIIO::ImageBufAlgo::TextAlignX::Left);
+  const auto ax = align == 1
+                      ? OIIO::ImageBufAlgo::TextAlignX::Center
+                      : (align == 2 ? OIIO::ImageBufAlgo::TextAlignX::Right : OIIO::ImageBufAlgo::TextAlignX::Left);
   if (!OIIO::ImageBufAlgo::render_text(buf, x, y, text, size, font, {rgb, 3}, ax))
     throw Error("cannot draw text \"" + text + "\": " + buf.geterror() +
                 " (install a font: Debian package fonts-dejavu-core)");
 }
 
-std::string find_file(const std::string& name, const std::vector<std::string>& search_dirs,
-                      const std::string& what) {
+std::string find_file(const std::string& name, const std::vector<std::string>& search_dirs, const std::string& what) {
   std::error_code ec;
   std::vector<std::string> tried;
   const fs::path p(name);

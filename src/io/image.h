@@ -70,7 +70,6 @@ ChannelImage read_channel_image(const std::string& path);
 /// no font can be found.
 void draw_text(Image& img, int x, int y, const std::string& text, int size, const float rgb[3], int align = 0);
 
-
 /// Finds a file: as given (absolute, or relative to the working directory), then relative to each
 /// of `search_dirs`. Returns the path found or throws Error naming the file and every place
 /// searched.

@@ -34,16 +34,15 @@ bool within(const int* a, const int* b) {
 
 std::string ImageMatch::summary() const {
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%dx%d: %.3f %% of pixels differ, %.3f %% have no match in 3x3: %s", width,
-                height, 100.0 * differ, 100.0 * no_neighbour, matches ? "match" : "NO MATCH");
+  std::snprintf(buf, sizeof buf, "%dx%d: %.3f %% of pixels differ, %.3f %% have no match in 3x3: %s", width, height,
+                100.0 * differ, 100.0 * no_neighbour, matches ? "match" : "NO MATCH");
   return buf;
 }
 
 ImageMatch match_images(const Image& image, const Image& reference) {
   if (image.width != reference.width || image.height != reference.height)
-    throw Error("image comparison: the image is " + std::to_string(image.width) + "x" +
-                std::to_string(image.height) + ", the reference " + std::to_string(reference.width) + "x" +
-                std::to_string(reference.height));
+    throw Error("image comparison: the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                ", the reference " + std::to_string(reference.width) + "x" + std::to_string(reference.height));
   ImageMatch m;
   m.width = image.width;
   m.height = image.height;

@@ -65,8 +65,8 @@ class Bvh {
   }
 
  private:
-  int32_t build_node(std::vector<int32_t>& idx, const std::vector<Bounds3>& b, const std::vector<Vec3>& c,
-                     int32_t lo, int32_t hi, int leaf_size, int depth);
+  int32_t build_node(std::vector<int32_t>& idx, const std::vector<Bounds3>& b, const std::vector<Vec3>& c, int32_t lo,
+                     int32_t hi, int leaf_size, int depth);
   std::vector<Node> nodes_;
   std::vector<int32_t> items_;
 };

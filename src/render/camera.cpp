@@ -8,8 +8,8 @@ namespace geovis {
 
 void Camera::set_resolution(int width, int height) {
   if (width <= 0 || height <= 0)
-    throw Error(std::string("camera ") + type_name() + ": resolution must be positive, found " +
-                std::to_string(width) + "x" + std::to_string(height));
+    throw Error(std::string("camera ") + type_name() + ": resolution must be positive, found " + std::to_string(width) +
+                "x" + std::to_string(height));
   width_ = width;
   height_ = height;
 }
@@ -17,8 +17,8 @@ void Camera::set_resolution(int width, int height) {
 void Camera::unknown_param(std::string_view name) const {
   const auto names = param_names();
   throw Error(std::string("camera ") + type_name() + ": unknown parameter \"" + std::string(name) + "\"" +
-              did_you_mean(name, names) + (names.empty() ? " (it has no settable parameters)"
-                                                         : " (settable: " + join(names) + ")"));
+              did_you_mean(name, names) +
+              (names.empty() ? " (it has no settable parameters)" : " (settable: " + join(names) + ")"));
 }
 
 CameraFrame CameraFrame::from(const Vec3& dir, const Vec3& vup, std::string_view camera) {

@@ -50,8 +50,8 @@ std::shared_ptr<Camera> make_camera(const ParamSet& ps, BuildContext& ctx) {
   const auto res = keys.vector("res", 2);
   for (double r : res)
     if (r != double(long(r)))
-      ps.fail("res", "expected two positive integers, found #(" + std::to_string(res[0]) + " " +
-                         std::to_string(res[1]) + ")");
+      ps.fail("res",
+              "expected two positive integers, found #(" + std::to_string(res[0]) + " " + std::to_string(res[1]) + ")");
   std::shared_ptr<Camera> cam;
   try {
     cam = type.make(keys, int(res[0]), int(res[1]));

@@ -129,34 +129,42 @@ std::vector<SceneObjectPtr> group_children(const ParamSet& ps, BuildContext& ctx
   return out;
 }
 
-const TypeRegistrar<ObjectType> comp_object{
-    {{"comp-object", {}, "a group of objects",
-      {{"obj", ParamType::String, "object id", false, true},
-       {"transform", ParamType::Transform, "transform of the whole group"},
-       {"id", ParamType::String, "object id"}}},
-     [](const ParamReader& keys, BuildContext& ctx) -> SceneObjectPtr {
-       const ParamSet& ps = keys.params();
-       auto comp = std::make_shared<CompoundObject>(group_children(ps, ctx));
-       if (ps.has("transform")) {
-         try {
-           comp->set_transform(ps.get_transform("transform"));
-         } catch (const SceneError&) {
-           throw;
-         } catch (const Error& e) {
-           ps.fail("transform", e.what());
-         }
-       }
-       comp->id = ps.get_string("id", "");
-       return comp;
-     },
-     true}};
+const TypeRegistrar<ObjectType> comp_object{{{"comp-object",
+                                              {},
+                                              "a group of objects",
+                                              {{"obj", ParamType::String, "object id", false, true},
+                                               {"transform", ParamType::Transform, "transform of the whole group"},
+                                               {"id", ParamType::String, "object id"}}},
+                                             [](const ParamReader& keys, BuildContext& ctx) -> SceneObjectPtr {
+                                               const ParamSet& ps = keys.params();
+                                               auto comp = std::make_shared<CompoundObject>(group_children(ps, ctx));
+                                               if (ps.has("transform")) {
+                                                 try {
+                                                   comp->set_transform(ps.get_transform("transform"));
+                                                 } catch (const SceneError&) {
+                                                   throw;
+                                                 } catch (const Error& e) {
+                                                   ps.fail("transform", e.what());
+                                                 }
+                                               }
+                                               comp->id = ps.get_string("id", "");
+                                               return comp;
+                                             },
+                                             true}};
 
 const TypeRegistrar<ObjectType> comp_octree_object{
-    {{"comp-octree-object", {}, "a group of objects in an octree (a BVH is used instead)",
+    {{"comp-octree-object",
+      {},
+      "a group of objects in an octree (a BVH is used instead)",
       {{"obj", ParamType::String, "object id", false, true},
        {"lower", ParamType::Vec3, "octree box corner (a BVH is used instead)"},
        {"upper", ParamType::Vec3, "octree box corner (a BVH is used instead)"},
-       {"subdivs", ParamType::Int, "octree subdivisions (a BVH is used instead)", false, false, {},
+       {"subdivs",
+        ParamType::Int,
+        "octree subdivisions (a BVH is used instead)",
+        false,
+        false,
+        {},
         ParamRange::non_negative()},
        {"id", ParamType::String, "object id"}}},
      [](const ParamReader& keys, BuildContext& ctx) -> SceneObjectPtr {

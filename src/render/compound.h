@@ -28,8 +28,8 @@ class CompoundObject final : public SceneObject {
   void rebuild();
   bool intersect_children(const Segment& seg, Hit& hit) const;
   std::vector<SceneObjectPtr> children_;
-  std::vector<SceneObjectPtr> merged_;  ///< children moving with one motion, grouped (owned here)
-  std::vector<const SceneObject*> bounded_;    ///< indexed by BVH item
+  std::vector<SceneObjectPtr> merged_;       ///< children moving with one motion, grouped (owned here)
+  std::vector<const SceneObject*> bounded_;  ///< indexed by BVH item
   std::vector<const SceneObject*> unbounded_;
   Bvh bvh_;
   Bounds3 bounds_;

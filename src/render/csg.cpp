@@ -40,8 +40,10 @@ void csg_intersection(const SpanList& a, const SpanList& b, SpanList& out) {
     const Crossing& in = x.in.t >= y.in.t ? x.in : y.in;
     const Crossing& o = x.out.t <= y.out.t ? x.out : y.out;
     if (in.t < o.t) out.push({in, o});
-    if (x.out.t < y.out.t) ++i;
-    else ++j;
+    if (x.out.t < y.out.t)
+      ++i;
+    else
+      ++j;
   }
 }
 
@@ -53,11 +55,13 @@ void csg_difference(const SpanList& a, const SpanList& b, SpanList& out) {
     bool open = true;  // [cur_in, cur_out] still has a remainder to emit
     for (int j = 0; j < b.n && open; ++j) {
       const Span& y = b.s[j];
-      if (y.out.t <= cur_in.t) continue;   // removed part lies before
-      if (y.in.t >= cur_out.t) break;      // and all further ones after
+      if (y.out.t <= cur_in.t) continue;  // removed part lies before
+      if (y.in.t >= cur_out.t) break;     // and all further ones after
       if (y.in.t > cur_in.t) out.push({cur_in, flipped(y.in)});
-      if (y.out.t < cur_out.t) cur_in = flipped(y.out);
-      else open = false;
+      if (y.out.t < cur_out.t)
+        cur_in = flipped(y.out);
+      else
+        open = false;
     }
     if (open) out.push({cur_in, cur_out});
   }
@@ -147,13 +151,16 @@ SceneObjectPtr make_csg(const ParamReader& keys, BuildContext& ctx) {
 // GeoViS lets a per-frame change set a CSG object's transform; ours has none yet (its solids'
 // normals are computed in their own parent frame), so such a change is an error, not ignored.
 const TypeRegistrar<ObjectType> registrar{
-    {{"csg-object", {}, "union, difference or intersection of two solids",
+    {{"csg-object",
+      {},
+      "union, difference or intersection of two solids",
       {{"csgtype", ParamType::Int, "1 difference, 2 union, 3 intersection (0: difference, with a warning)", false,
         false, 0.0},
        {"obj1", ParamType::String, "first solid", true},
        {"obj2", ParamType::String, "second solid", true},
        {"id", ParamType::String, "object id"}}},
-     make_csg, true}};
+     make_csg,
+     true}};
 
 }  // namespace
 

@@ -58,8 +58,8 @@ std::vector<std::pair<std::string, std::string>> header(const RenderJob& job, co
   add("frame", std::to_string(info.frame));
   const Metric& m = *job.metric;
   add("metric", m.name());
-  add("metric.coords", m.info().coords[0] + " " + m.info().coords[1] + " " + m.info().coords[2] + " " +
-                           m.info().coords[3]);
+  add("metric.coords",
+      m.info().coords[0] + " " + m.info().coords[1] + " " + m.info().coords[2] + " " + m.info().coords[3]);
   add("metric.coordtype", coord_type_name(m.info().coord_type));
   for (size_t i = 0; i < m.info().params.size(); ++i)
     add("metric." + m.info().params[i].name, num(m.param_values()[i]));
@@ -108,7 +108,9 @@ Filter filter_of_extension(const std::string& ext) {
 /// A GeoViS data file as channels (names as in the EXR data file).
 ChannelImage from_geovis_file(const std::string& path, Filter f) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot read \"" + path + "\": " + (std::filesystem::exists(path) ? "permission denied" : "no such file"));
+  if (!in)
+    throw Error("cannot read \"" + path +
+                "\": " + (std::filesystem::exists(path) ? "permission denied" : "no such file"));
   std::stringstream ss;
   ss << in.rdbuf();
   int W = 0, H = 0;
@@ -134,9 +136,9 @@ ChannelImage from_geovis_file(const std::string& path, Filter f) {
   for (size_t i = 0; i < data.size(); ++i) {
     const PixelData& p = data[i];
     // GeoViS stores a zero record where nothing was hit (objID 0 = no object).
-    const bool hit = f == Filter::RGBIntersec
-                         ? (p.pos[0] != 0 || p.pos[1] != 0 || p.pos[2] != 0 || p.pos[3] != 0 || p.uv[0] != 0 || p.uv[1] != 0)
-                         : p.object_id != 0;
+    const bool hit = f == Filter::RGBIntersec ? (p.pos[0] != 0 || p.pos[1] != 0 || p.pos[2] != 0 || p.pos[3] != 0 ||
+                                                 p.uv[0] != 0 || p.uv[1] != 0)
+                                              : p.object_id != 0;
     if (!hit) continue;
     float* o = &img.pixels[i * nc];
     size_t n = 0;
@@ -261,11 +263,13 @@ ChannelImage read_data_file(const std::string& path) {
   const Filter f = filter_of_extension(ext);
   if (f != Filter::RGB) return from_geovis_file(path, f);
   if (ext != ".exr")
-    throw Error("\"" + path + "\" is not a data file: expected an OpenEXR data file (.exr, written by geovis render "
+    throw Error("\"" + path +
+                "\" is not a data file: expected an OpenEXR data file (.exr, written by geovis render "
                 "--data or a data filter) or a GeoViS .pdz, .jac, .pt or .dat file");
   ChannelImage img = read_channel_image(path);
   if (img.meta("geovis:format").rfind("geovis data", 0) != 0 || img.channel("x1") < 0)
-    throw Error("\"" + path + "\" is an OpenEXR image but not a geovis data file (no geovis:format header or no "
+    throw Error("\"" + path +
+                "\" is an OpenEXR image but not a geovis data file (no geovis:format header or no "
                 "hit channels); render with --data or a data filter to make one");
   return img;
 }

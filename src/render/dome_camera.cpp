@@ -41,7 +41,8 @@ DomeCamera::DomeCamera(double heading_deg, double pitch_deg, int size)
     : Camera(size, size), heading_deg_(heading_deg), pitch_deg_(pitch_deg) {
   Camera::set_resolution(size, size);
   if (!std::isfinite(heading_deg) || !std::isfinite(pitch_deg))
-    throw ParameterError("2PICam", std::isfinite(heading_deg) ? "pitch" : "heading", "expected a finite angle in degrees");
+    throw ParameterError("2PICam", std::isfinite(heading_deg) ? "pitch" : "heading",
+                         "expected a finite angle in degrees");
   install();
 }
 
@@ -80,7 +81,9 @@ void DomeCamera::set_param(std::string_view name, const Value& value) {
 namespace {
 // GeoViS 2PICam (docs/geovis-catalogue.md §2): square, only res[0] is used.
 const TypeRegistrar<CameraType> registrar{
-    {{"2PICam", {}, "dome (fisheye) camera: the half sky around heading and pitch on a square image",
+    {{"2PICam",
+      {},
+      "dome (fisheye) camera: the half sky around heading and pitch on a square image",
       {camera_resolution_key(100, 100),
        {"heading", ParamType::Number, "heading of the dome centre in degrees", false, false, 0.0},
        {"pitch", ParamType::Number, "pitch of the dome centre in degrees", false, false, 0.0}}},

@@ -14,10 +14,11 @@ const TypeRegistrar<FilterType> rgb_jac{
     {{"FilterRGBjac", {}, "image + .jac: as .pdz plus the Jacobi (lensing) parameters", {}}, Filter::RGBjac}};
 const TypeRegistrar<FilterType> rgb_pt{
     {{"FilterRGBpt", {}, "image + .pt: per pixel hit event, texture coordinates, object id", {}}, Filter::RGBpt}};
-const TypeRegistrar<FilterType> rgb_intersec{
-    {{"FilterIntersec", {"FilterRGBIntersec"}, "image + .dat: GeoViS gvsData records (hit event, texture coordinates)",
-      {}},
-     Filter::RGBIntersec}};
+const TypeRegistrar<FilterType> rgb_intersec{{{"FilterIntersec",
+                                               {"FilterRGBIntersec"},
+                                               "image + .dat: GeoViS gvsData records (hit event, texture coordinates)",
+                                               {}},
+                                              Filter::RGBIntersec}};
 
 }  // namespace
 

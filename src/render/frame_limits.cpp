@@ -52,12 +52,12 @@ std::string format_bytes(std::uint64_t bytes) {
   return buf;
 }
 
-void check_frame_size(const std::string& what, long long width, long long height, bool with_data,
-                      std::uint64_t limit) {
+void check_frame_size(const std::string& what, long long width, long long height, bool with_data, std::uint64_t limit) {
   const std::string res = std::to_string(width) + "x" + std::to_string(height);
   if (width < 1 || height < 1) throw Error(what + ": width and height must be positive, found " + res);
   if (width > kMaxImageSide || height > kMaxImageSide)
-    throw Error(what + ": the " + (width > kMaxImageSide ? "width " + std::to_string(width) : "height " + std::to_string(height)) +
+    throw Error(what + ": the " +
+                (width > kMaxImageSide ? "width " + std::to_string(width) : "height " + std::to_string(height)) +
                 " is larger than the limit of " + std::to_string(kMaxImageSide) + " pixels per side");
   const std::uint64_t buffer = frame_buffer_bytes(int(width), int(height), with_data);
   const std::uint64_t encoding = image_encoding_bytes(int(width), int(height));

@@ -36,7 +36,9 @@ void FullSkyCamera::set_param(std::string_view name, const Value& value) {
 namespace {
 // GeoViS 4PICam (docs/geovis-catalogue.md §2).
 const TypeRegistrar<CameraType> registrar{
-    {{"4PICam", {}, "full-sky camera: equirectangular image of all directions",
+    {{"4PICam",
+      {},
+      "full-sky camera: equirectangular image of all directions",
       {camera_resolution_key(720, 576),
        {"angle", ParamType::Number, "rotation about the local z axis in degrees", false, false, 0.0}}},
      [](const ParamReader& keys, int width, int height) -> std::shared_ptr<Camera> {

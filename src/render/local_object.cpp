@@ -37,8 +37,7 @@ double segment_point_dist2(const Vec3& p0, const Vec3& p1, const Vec3& c) {
 
 // ---- LocalFrame ---------------------------------------------------------------------------------
 
-LocalFrame::LocalFrame(std::shared_ptr<const Metric> metric, const LocalTetrad& tetrad)
-    : metric_(std::move(metric)) {
+LocalFrame::LocalFrame(std::shared_ptr<const Metric> metric, const LocalTetrad& tetrad) : metric_(std::move(metric)) {
   if (!metric_) throw Error("local frame: no metric");
   fixed_.x = tetrad.pos;
   fixed_.e = tetrad.e;
@@ -261,8 +260,10 @@ bool LocalObject::world_tube_test(const Segment& seg, double& s0, double& s1) co
     Bounds3 box;
     for (double t : {ta, tb}) {
       Vec3 p;
-      if (inertial_origin_) p = origin_at_t0_ + t * origin_velocity_;
-      else frame_.metric().to_pseudo_cartesian(m.at_coordinate_time(t).x, p);
+      if (inertial_origin_)
+        p = origin_at_t0_ + t * origin_velocity_;
+      else
+        frame_.metric().to_pseudo_cartesian(m.at_coordinate_time(t).x, p);
       box.expand(p);
     }
     const double w = radius_pc_;
@@ -445,17 +446,18 @@ SceneObjectPtr make_local_comp(const ParamReader& keys, BuildContext& ctx) {
     const SceneObjectPtr& o = ctx.lookup(ctx.objects, id, ps, "obj", "object");
     if (object_type_of(*o) != ObjType::Local)
       ctx.diagnostics().warn(ps.loc(), ps.command(), "obj",
-                             "object \"" + id + "\" has objtype gpObjTypeInCoords; inside local-comp-object it is "
-                             "interpreted in the local frame");
+                             "object \"" + id +
+                                 "\" has objtype gpObjTypeInCoords; inside local-comp-object it is "
+                                 "interpreted in the local frame");
     children.push_back(o);
   }
   SceneObjectPtr child = children.size() == 1 ? children[0] : std::make_shared<CompoundObject>(children);
   auto metric = require_metric(ps, ctx, has_motion ? "motion" : "localtetrad");
   try {
-    auto obj = has_motion
-                   ? std::make_shared<LocalObject>(child, LocalFrame(metric, ctx.ref(ctx.motions, ps, "motion", "motion")))
-                   : std::make_shared<LocalObject>(
-                         child, LocalFrame(metric, ctx.ref(ctx.tetrads, ps, "localtetrad", "local tetrad")));
+    auto obj = has_motion ? std::make_shared<LocalObject>(
+                                child, LocalFrame(metric, ctx.ref(ctx.motions, ps, "motion", "motion")))
+                          : std::make_shared<LocalObject>(
+                                child, LocalFrame(metric, ctx.ref(ctx.tetrads, ps, "localtetrad", "local tetrad")));
     obj->id = ps.get_string("id", "");
     return obj;
   } catch (const SceneError&) {
@@ -466,14 +468,16 @@ SceneObjectPtr make_local_comp(const ParamReader& keys, BuildContext& ctx) {
 }
 
 const TypeRegistrar<ObjectType> registrar{
-    {{"local-comp-object", {}, "objects given in a local tetrad frame, riding on a motion",
+    {{"local-comp-object",
+      {},
+      "objects given in a local tetrad frame, riding on a motion",
       {{"obj", ParamType::String, "object of gpObjTypeLocal", true, true},
        {"localtetrad", ParamType::String, "static local tetrad id"},
        {"motion", ParamType::String, "motion id"},
-       {"timeboxsize", ParamType::Number,
-        "accepted for GeoViS compatibility (world tube from the motion's samples)"},
+       {"timeboxsize", ParamType::Number, "accepted for GeoViS compatibility (world tube from the motion's samples)"},
        {"id", ParamType::String, "object id"}}},
-     make_local_comp, true}};
+     make_local_comp,
+     true}};
 
 }  // namespace
 

@@ -22,8 +22,10 @@ std::shared_ptr<MeshObject> MeshObject::load(const std::string& path) {
   }
   const auto& attrib = reader.GetAttrib();
   std::vector<Vec3> v(attrib.vertices.size() / 3), n(attrib.normals.size() / 3);
-  for (size_t i = 0; i < v.size(); ++i) v[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
-  for (size_t i = 0; i < n.size(); ++i) n[i] = {attrib.normals[3 * i], attrib.normals[3 * i + 1], attrib.normals[3 * i + 2]};
+  for (size_t i = 0; i < v.size(); ++i)
+    v[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
+  for (size_t i = 0; i < n.size(); ++i)
+    n[i] = {attrib.normals[3 * i], attrib.normals[3 * i + 1], attrib.normals[3 * i + 2]};
   std::vector<double> vt(attrib.texcoords.begin(), attrib.texcoords.end());
   std::vector<Tri> tris;
   for (const auto& shape : reader.GetShapes()) {
@@ -50,14 +52,17 @@ std::shared_ptr<MeshObject> MeshObject::load(const std::string& path) {
       const bool bad_vn = t.vn[k] >= 0 && static_cast<size_t>(t.vn[k]) >= n.size();
       if (bad_v || bad_vt || bad_vn)
         throw Error("OBJ mesh \"" + path + "\": a face refers to a " +
-                    std::string(bad_v ? "vertex" : (bad_vt ? "texture coordinate" : "normal")) + " that does not exist");
+                    std::string(bad_v ? "vertex" : (bad_vt ? "texture coordinate" : "normal")) +
+                    " that does not exist");
     }
   return std::make_shared<MeshObject>(std::move(v), std::move(vt), std::move(n), std::move(tris));
 }
 
 MeshObject::MeshObject(std::vector<Vec3> vertices, std::vector<double> texcoords, std::vector<Vec3> normals,
                        std::vector<Tri> tris)
-    : vertices_(std::move(vertices)), texcoords_(std::move(texcoords)), normals_(std::move(normals)),
+    : vertices_(std::move(vertices)),
+      texcoords_(std::move(texcoords)),
+      normals_(std::move(normals)),
       tris_(std::move(tris)) {
   finalize();
 }
@@ -131,7 +136,9 @@ bool MeshObject::intersect(const Segment& seg, Hit& hit) const {
 namespace {
 
 const TypeRegistrar<ObjectType> registrar{
-    {{"mesh-obj", {}, "a triangle mesh from a Wavefront OBJ file",
+    {{"mesh-obj",
+      {},
+      "a triangle mesh from a Wavefront OBJ file",
       primitive_keys_and({{"filename", ParamType::String, "Wavefront OBJ file", true},
                           {"pathname", ParamType::String, "folder of the file", false, false, std::string()},
                           {"rotate", ParamType::Vec4, "#(angle_deg ax ay az) rotation before transform"}}),

@@ -202,7 +202,7 @@ struct MpiTileDispatcher::State {
   TileRenderSession& session;
   std::thread comm;
   std::atomic<bool> stop{false};
-  std::mutex mutex;  // guards everything below
+  std::mutex mutex;                         // guards everything below
   std::deque<std::pair<int, int>> waiting;  ///< (rank, slot) asking for work while there is none
   struct Lent {
     int rank, frame, eye, tile;
@@ -283,7 +283,8 @@ void MpiTileDispatcher::State::handle_request(int source, const std::vector<char
     const int doubles_per_px = int(sizeof(PixelData) / sizeof(double));
     if (h.n_floats != 3 * px || (h.n_doubles != 0 && h.n_doubles != px * doubles_per_px) ||
         msg.size() != sizeof h + size_t(h.n_floats) * sizeof(float) + size_t(h.n_doubles) * sizeof(double))
-      throw Error("MPI: tile " + std::to_string(h.tile) + " from rank " + std::to_string(source) + " has the wrong size");
+      throw Error("MPI: tile " + std::to_string(h.tile) + " from rank " + std::to_string(source) +
+                  " has the wrong size");
     // Copied out of the message: the byte buffer gives no alignment guarantee for float/double.
     std::vector<float> pixels(size_t(h.n_floats));
     std::memcpy(pixels.data(), msg.data() + sizeof h, pixels.size() * sizeof(float));
@@ -395,8 +396,7 @@ class WorkerTiles final : public TileSchedule {
       bool any_finished = false, any_tile = false;
       for (const Assignment& a : stash_) {
         any_finished = any_finished || a.kind == Assignment::kFinished;
-        if (a.kind == Assignment::kTile &&
-            (!any_tile || std::make_pair(a.frame, a.eye) < std::make_pair(frame, eye))) {
+        if (a.kind == Assignment::kTile && (!any_tile || std::make_pair(a.frame, a.eye) < std::make_pair(frame, eye))) {
           frame = a.frame;
           eye = a.eye;
           any_tile = true;
@@ -531,8 +531,9 @@ void run_mpi_worker(MpiContext& mpi, const RenderOptions& options,
 
 std::unique_ptr<MpiContext> MpiContext::from_environment() {
   if (launcher_world_size() > 1)
-    throw Error("geovis was built without MPI, so every rank would render the whole job; run it without "
-                "mpirun, or rebuild with Open MPI (Debian: libopenmpi-dev)");
+    throw Error(
+        "geovis was built without MPI, so every rank would render the whole job; run it without "
+        "mpirun, or rebuild with Open MPI (Debian: libopenmpi-dev)");
   return nullptr;
 }
 MpiContext::~MpiContext() = default;

@@ -66,19 +66,19 @@ struct Segment {
 /// 0 <= s < hit.s.
 struct Hit {
   double s = std::numeric_limits<double>::infinity();  ///< fraction along the segment
-  Vec3 point;          ///< hit point, pseudo-Cartesian (or object-local for local objects)
-  Vec3 normal;         ///< unit outward surface normal, same frame as `point`
-  Vec3 ray_dir;        ///< unit ray direction (p1 - p0) in the same frame as `normal`
+  Vec3 point;    ///< hit point, pseudo-Cartesian (or object-local for local objects)
+  Vec3 normal;   ///< unit outward surface normal, same frame as `point`
+  Vec3 ray_dir;  ///< unit ray direction (p1 - p0) in the same frame as `normal`
   /// Normal (unit, outward) and unit ray direction in the primitive's normalised local frame
   /// (GeoViS's "standard object system": unit sphere, unit cube [0,1]³, unit cylinder; the plane of
   /// a planar surface; a mesh's own frame), in which the diffuse term is computed (GeoViS
   /// GvsSurfaceShader::reflArtifColor). Not changed by the transforms of enclosing compounds.
   Vec3 shade_normal;
   Vec3 shade_dir;
-  double u = 0, v = 0; ///< surface texture coordinates in [0,1]
+  double u = 0, v = 0;  ///< surface texture coordinates in [0,1]
   const Shader* shader = nullptr;
-  int object_id = 0;   ///< GeoViS objID: primitive counter, 1 = first primitive created; 0 = none
-  double time = 0;     ///< coordinate time of the hit (x^0)
+  int object_id = 0;  ///< GeoViS objID: primitive counter, 1 = first primitive created; 0 = none
+  double time = 0;    ///< coordinate time of the hit (x^0)
   /// Four-velocity of the emitting surface (coordinates), zero when the object is at rest in the
   /// natural static frame; used for the frequency shift.
   Vec4 emitter_u{{0, 0, 0, 0}};

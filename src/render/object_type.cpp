@@ -72,8 +72,8 @@ SceneObjectPtr finish_primitive(const ParamReader& keys, BuildContext& ctx, std:
     const MotionPtr& motion = ctx.ref(ctx.motions, ps, "motion", "motion");
     auto metric = require_metric(ps, ctx, "motion");
     try {
-      const bool pseudo_cartesian = std::string_view(motion->type_name()) == "ConstVelocity" &&
-                                    !metric->info().inertial_cartesian;
+      const bool pseudo_cartesian =
+          std::string_view(motion->type_name()) == "ConstVelocity" && !metric->info().inertial_cartesian;
       if (pseudo_cartesian) {
         ctx.diagnostics().warn(ps.loc(), ps.command(), "motion",
                                "the ConstVelocity motion \"" + ps.get_string("motion") +

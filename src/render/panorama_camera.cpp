@@ -22,8 +22,9 @@ PanoramaCamera::PanoramaCamera(const Vec3& dir, const Vec3& vup, double fov_h_de
       fov_v_rad_(fov_v_deg * std::numbers::pi / 180.0) {
   Camera::set_resolution(width, height);
   if (!(fov_h_deg > 0 && fov_h_deg <= 360) || !(fov_v_deg > 0 && fov_v_deg <= 360))
-    throw ParameterError("PanoramaCam", "fov", "expected two angles in (0, 360] degrees, found #(" +
-                                                   std::to_string(fov_h_deg) + " " + std::to_string(fov_v_deg) + ")");
+    throw ParameterError("PanoramaCam", "fov",
+                         "expected two angles in (0, 360] degrees, found #(" + std::to_string(fov_h_deg) + " " +
+                             std::to_string(fov_v_deg) + ")");
   frame_ = CameraFrame::from(dir_, vup_, type_name());
 }
 
@@ -42,7 +43,8 @@ void PanoramaCamera::set_param(std::string_view name, const Value& value) {
   if (n != "dir" && n != "vup") unknown_param(name);
   const auto v = value_as_vector(value, 3, type_name(), n);
   const Vec3 nv{v[0], v[1], v[2]};
-  const CameraFrame f = n == "dir" ? CameraFrame::from(nv, vup_, type_name()) : CameraFrame::from(dir_, nv, type_name());
+  const CameraFrame f =
+      n == "dir" ? CameraFrame::from(nv, vup_, type_name()) : CameraFrame::from(dir_, nv, type_name());
   (n == "dir" ? dir_ : vup_) = nv;
   frame_ = f;
 }
@@ -50,7 +52,10 @@ void PanoramaCamera::set_param(std::string_view name, const Value& value) {
 namespace {
 // GeoViS PanoramaCam (docs/geovis-catalogue.md §2).
 const TypeRegistrar<CameraType> registrar{
-    {{"PanoramaCam", {}, "panorama camera: cylindrical mapping of longitude and latitude around dir", [] {
+    {{"PanoramaCam",
+      {},
+      "panorama camera: cylindrical mapping of longitude and latitude around dir",
+      [] {
         auto keys = camera_view_keys(ParamRange{0, 360, true, false});
         keys.insert(keys.begin(), camera_resolution_key(720, 576));
         return keys;

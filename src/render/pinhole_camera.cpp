@@ -16,8 +16,9 @@ namespace geovis {
 namespace {
 void check_fov(double h, double v, const char* cam) {
   if (!(h > 0 && h < 180) || !(v > 0 && v < 180))
-    throw ParameterError(cam, "fov", "expected two angles in (0, 180) degrees, found #(" + std::to_string(h) + " " +
-                                         std::to_string(v) + ")");
+    throw ParameterError(
+        cam, "fov",
+        "expected two angles in (0, 180) degrees, found #(" + std::to_string(h) + " " + std::to_string(v) + ")");
 }
 Vec3 to_vec3(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 }  // namespace
@@ -48,11 +49,23 @@ void PinholeCamera::set_param(std::string_view name, const Value& value) {
   if (n == "dir") {
     const Vec3 old = dir_;
     dir_ = to_vec3(value_as_vector(value, 3, type_name(), n));
-    try { install(); } catch (...) { dir_ = old; install(); throw; }
+    try {
+      install();
+    } catch (...) {
+      dir_ = old;
+      install();
+      throw;
+    }
   } else if (n == "vup") {
     const Vec3 old = vup_;
     vup_ = to_vec3(value_as_vector(value, 3, type_name(), n));
-    try { install(); } catch (...) { vup_ = old; install(); throw; }
+    try {
+      install();
+    } catch (...) {
+      vup_ = old;
+      install();
+      throw;
+    }
   } else if (n == "fov") {
     const auto f = value_as_vector(value, 2, type_name(), n);
     check_fov(f[0], f[1], type_name());
@@ -67,7 +80,10 @@ void PinholeCamera::set_param(std::string_view name, const Value& value) {
 namespace {
 // GeoViS PinHoleCam (docs/geovis-catalogue.md §2).
 const TypeRegistrar<CameraType> registrar{
-    {{"PinHoleCam", {}, "pinhole camera: perspective image of the viewing direction dir", [] {
+    {{"PinHoleCam",
+      {},
+      "pinhole camera: perspective image of the viewing direction dir",
+      [] {
         auto keys = camera_view_keys(ParamRange{0, 180, true, true});
         keys.insert(keys.begin(), camera_resolution_key(720, 576));
         return keys;

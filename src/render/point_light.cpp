@@ -7,7 +7,9 @@ namespace geovis {
 namespace {
 
 const TypeRegistrar<LightType> registrar{
-    {{"PointLight", {}, "a point light at an event, with colour and distance attenuation",
+    {{"PointLight",
+      {},
+      "a point light at an event, with colour and distance attenuation",
       {{"pos", ParamType::Any, "event #(t x y z) (or position #(x y z) at t = 0)", true},
        {"color", ParamType::Vec3, "RGB colour", false, false, std::vector<double>{1, 1, 1}},
        {"atten", ParamType::Vec3, "constant, linear, quadratic attenuation (all 0: none)", false, false,

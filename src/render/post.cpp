@@ -19,9 +19,12 @@ int need(const ChannelImage& d, const std::string& channel, const std::string& s
   const int c = d.channel(channel);
   if (c < 0) {
     std::string why = "shader \"" + shader + "\" needs channel \"" + channel + "\", which the data file does not have";
-    if (channel == "jac.mu") why += " (render with the FilterRGBjac camera filter)";
-    else if (channel == "stop") why += " (GeoViS files have no stop reasons; use the EXR data file)";
-    else if (channel == "z") why += " (GeoViS .pt files have no frequency shift; use .pdz, .jac or the EXR data file)";
+    if (channel == "jac.mu")
+      why += " (render with the FilterRGBjac camera filter)";
+    else if (channel == "stop")
+      why += " (GeoViS files have no stop reasons; use the EXR data file)";
+    else if (channel == "z")
+      why += " (GeoViS .pt files have no frequency shift; use .pdz, .jac or the EXR data file)";
     throw Error(why + "; channels: " + join(d.names));
   }
   return c;
@@ -85,8 +88,8 @@ void draw_colorbar(Image& img, const PostField& f, const std::string& cmap, doub
     }
     // Left-aligned at the first tick, right-aligned at the last, centred between.
     const int align = i == 0 ? 0 : (i == ticks - 1 ? 2 : 1);
-    draw_text(img, i == 0 ? x0 : (i == ticks - 1 ? x1 : x), y0 + bar + pad + text, number_label(v), text * 3 / 4,
-              white, align);
+    draw_text(img, i == 0 ? x0 : (i == ticks - 1 ? x1 : x), y0 + bar + pad + text, number_label(v), text * 3 / 4, white,
+              align);
   }
   draw_text(img, pad, y0 + bar + 2 * text + pad, f.label + (log ? " (log scale)" : ""), text, white);
 }
@@ -211,7 +214,9 @@ std::string post_csv(const ChannelImage& d, const std::vector<std::string>& chan
   const std::vector<std::string>& names = channels.empty() ? d.names : channels;
   for (const auto& c : names) {
     const int i = d.channel(c);
-    if (i < 0) throw Error("--channels: unknown channel \"" + c + "\"" + did_you_mean(c, d.names) + " (channels: " + join(d.names) + ")");
+    if (i < 0)
+      throw Error("--channels: unknown channel \"" + c + "\"" + did_you_mean(c, d.names) +
+                  " (channels: " + join(d.names) + ")");
     cols.push_back(i);
   }
   std::string out = "x,y";
@@ -223,8 +228,10 @@ std::string post_csv(const ChannelImage& d, const std::vector<std::string>& chan
     for (int c : cols) {
       const double v = at(d, pixel, c);
       char buf[40];
-      if (std::isnan(v)) std::snprintf(buf, sizeof buf, "nan");
-      else std::snprintf(buf, sizeof buf, "%.9g", v);
+      if (std::isnan(v))
+        std::snprintf(buf, sizeof buf, "nan");
+      else
+        std::snprintf(buf, sizeof buf, "%.9g", v);
       out += ",";
       out += buf;
     }

@@ -37,12 +37,12 @@ PostField post_field(const ChannelImage& data, const std::string& shader, std::o
 
 struct PostOptions {
   std::string shader;
-  std::string colormap;                          ///< "" = the shader's default
+  std::string colormap;                            ///< "" = the shader's default
   std::optional<std::pair<double, double>> range;  ///< value range mapped to the colour map
-  bool log = false;                              ///< map log10 of the value
-  bool colorbar = false;                         ///< draw a labelled colour bar below the image
+  bool log = false;                                ///< map log10 of the value
+  bool colorbar = false;                           ///< draw a labelled colour bar below the image
   std::optional<double> mass;
-  float nan_color[3] = {0, 0, 0};                ///< pixels without a value
+  float nan_color[3] = {0, 0, 0};  ///< pixels without a value
 };
 
 /// The picture; `range_used` receives the value range that was mapped (the data's finite

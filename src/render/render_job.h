@@ -49,10 +49,10 @@ struct RenderJob {
 };
 
 struct RenderOptions {
-  int threads = 0;      ///< 0 = all cores
+  int threads = 0;  ///< 0 = all cores
   int tile_size = 16;
-  bool progress = true; ///< progress bar (only shown on a terminal)
-  std::string label;    ///< shown in the progress line (e.g. frame number)
+  bool progress = true;  ///< progress bar (only shown on a terminal)
+  std::string label;     ///< shown in the progress line (e.g. frame number)
   /// When set (e.g. by a SIGINT handler), the workers stop before their next tile and render()
   /// throws RenderInterrupted (render/renderer.h).
   const std::atomic<bool>* cancel = nullptr;
@@ -62,16 +62,16 @@ struct RenderOptions {
 /// data file). GeoViS fills pixels without a hit with zeros; `hit`, `stop` and `lambda` say what
 /// happened to the ray, so that the EXR file can tell a miss from a hit at the origin.
 struct PixelData {
-  double pos[4] = {0, 0, 0, 0};   ///< hit event (coordinates)
-  double dir[4] = {0, 0, 0, 0};   ///< future-directed light direction at the hit (coordinates)
+  double pos[4] = {0, 0, 0, 0};  ///< hit event (coordinates)
+  double dir[4] = {0, 0, 0, 0};  ///< future-directed light direction at the hit (coordinates)
   double object_id = 0;
-  double freqshift = 0;           ///< 1+z = ω_src/ω_obs (paper eq. 15); 0 when unknown
+  double freqshift = 0;                ///< 1+z = ω_src/ω_obs (paper eq. 15); 0 when unknown
   double jacobi[5] = {0, 0, 0, 0, 0};  ///< d+, d-, μ, angle, ellipticity (jacobi_params)
   double uv[2] = {0, 0};
-  bool traced = false;            ///< false where the camera has no ray (dome corner)
+  bool traced = false;  ///< false where the camera has no ray (dome corner)
   bool hit = false;
-  StopReason stop = StopReason::None;  ///< why the integration ended (Callback for a hit)
-  double lambda = 0;              ///< affine parameter at the hit or at the end of the ray
+  StopReason stop = StopReason::None;      ///< why the integration ended (Callback for a hit)
+  double lambda = 0;                       ///< affine parameter at the hit or at the end of the ray
   double jacobi_matrix[4] = {0, 0, 0, 0};  ///< J11 J12 J21 J22 at the hit (RGBjac only)
 };
 

@@ -16,7 +16,7 @@ namespace geovis {
 struct PointLight {
   Vec4 pos{{0, 0, 0, 0}};  ///< event (t, x, y, z); position in pseudo-Cartesian coordinates
   Color color{1, 1, 1};
-  Vec3 atten{0, 0, 0};     ///< constant, linear, quadratic attenuation (GeoViS atten)
+  Vec3 atten{0, 0, 0};  ///< constant, linear, quadratic attenuation (GeoViS atten)
 };
 
 struct LightManager {

@@ -67,7 +67,8 @@ Bounds3 Affine3::bounds(const Bounds3& b) const {
   for (int i = 0; i < 3; ++i)
     if (!std::isfinite(b.lo[i]) || !std::isfinite(b.hi[i])) return Bounds3::infinite();
   Bounds3 r;
-  for (int k = 0; k < 8; ++k) r.expand(point({(k & 1) ? b.hi.x : b.lo.x, (k & 2) ? b.hi.y : b.lo.y, (k & 4) ? b.hi.z : b.lo.z}));
+  for (int k = 0; k < 8; ++k)
+    r.expand(point({(k & 1) ? b.hi.x : b.lo.x, (k & 2) ? b.hi.y : b.lo.y, (k & 4) ? b.hi.z : b.lo.z}));
   return r;
 }
 
@@ -107,8 +108,10 @@ bool Solid::intersect(const Segment& seg, Hit& hit) const {
   for (int i = 0; i < list.n; ++i) {
     const Span& sp = list.s[i];
     const Crossing* c = nullptr;
-    if (sp.in.t >= 0) c = &sp.in;
-    else if (sp.out.t >= 0) c = &sp.out;
+    if (sp.in.t >= 0)
+      c = &sp.in;
+    else if (sp.out.t >= 0)
+      c = &sp.out;
     if (!c) continue;
     if (c->t >= tmax) return false;  // sorted: nothing closer follows
     fill_hit_from_crossing(*c, seg, hit);
@@ -125,9 +128,7 @@ void SolidPrimitive::spans(const Vec3& a, const Vec3& d, SpanList& out) const {
   local_spans(to_local.point(a), to_local.dir(d), out);
 }
 
-Bounds3 SolidPrimitive::bounds() const {
-  return transformed ? to_parent.bounds(local_bounds()) : local_bounds();
-}
+Bounds3 SolidPrimitive::bounds() const { return transformed ? to_parent.bounds(local_bounds()) : local_bounds(); }
 
 Vec3 SolidPrimitive::parent_normal(const Vec3& p_local, int part) const {
   const Vec3 n = local_normal(p_local, part);
@@ -252,9 +253,12 @@ void unit_cylinder_uv(const Vec3& l, bool cap, double& u, double& v) {
 /// unit cylinder, frame direction dq): caps ∓ẑ, side (x, y, 0)/|…|.
 void unit_cylinder_shading(const Vec3& l, const Vec3& dq, double r1, double r2, double h, int part, Vec3& n,
                            Vec3& dir) {
-  if (part == 1) n = {0, 0, -1};
-  else if (part == 2) n = {0, 0, 1};
-  else n = normalize(Vec3{l.x, l.y, 0});
+  if (part == 1)
+    n = {0, 0, -1};
+  else if (part == 2)
+    n = {0, 0, 1};
+  else
+    n = normalize(Vec3{l.x, l.y, 0});
   dir = normalize(Vec3{dq.x / r1, dq.y / r2, dq.z / h});
 }
 
@@ -337,8 +341,8 @@ void Cylinder::uv(const Vec3& p, int part, double& u, double& v) const {
 
 void Cylinder::shading_frame(const Vec3& p, const Vec3& d, int part, Vec3& n, Vec3& dir) const {
   const Vec3 q = frame.to_frame(p);
-  unit_cylinder_shading({q.x / r1, q.y / r2, q.z / frame.height}, frame.dir_to_frame(d), r1, r2, frame.height, part,
-                        n, dir);
+  unit_cylinder_shading({q.x / r1, q.y / r2, q.z / frame.height}, frame.dir_to_frame(d), r1, r2, frame.height, part, n,
+                        dir);
 }
 
 Ring::Ring(const Vec3& base, const Vec3& top, double r1, double r2, double ri1, double ri2)
@@ -452,8 +456,8 @@ double PlaneRing::inner_radius() const {
   return std::max(box, std::sqrt(cn * cn + in_plane * in_plane));
 }
 
-bool segment_triangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c, double tmax,
-                      double& t, double& b1, double& b2, bool parallelogram) {
+bool segment_triangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c, double tmax, double& t,
+                      double& b1, double& b2, bool parallelogram) {
   const Vec3 e1 = b - a, e2 = c - a;
   const Vec3 pv = cross(d, e2);
   const double det = dot(e1, pv);
@@ -502,13 +506,16 @@ namespace {
 using T = ParamType;
 
 const TypeRegistrar<ObjectType> ellipsoid{
-    {{"solid-ellipsoid", {}, "an ellipsoid (sphere)",
-      primitive_keys_and({{"center", T::Vec3, "centre", false, false, std::vector<double>{0, 0, 0}},
-                          {"axlen", T::Vec3, "semi-axes", false, false, std::vector<double>{1, 1, 1},
-                           ParamRange::positive()}}),
+    {{"solid-ellipsoid",
+      {},
+      "an ellipsoid (sphere)",
+      primitive_keys_and(
+          {{"center", T::Vec3, "centre", false, false, std::vector<double>{0, 0, 0}},
+           {"axlen", T::Vec3, "semi-axes", false, false, std::vector<double>{1, 1, 1}, ParamRange::positive()}}),
       {"axlen", "transform"}},
      [](const ParamReader& keys, BuildContext& ctx) {
-       return finish_primitive(keys, ctx, std::make_shared<Ellipsoid>(vec3_key(keys, "center"), vec3_key(keys, "axlen")));
+       return finish_primitive(keys, ctx,
+                               std::make_shared<Ellipsoid>(vec3_key(keys, "center"), vec3_key(keys, "axlen")));
      }}};
 
 const TypeRegistrar<ObjectType> background{
@@ -518,7 +525,9 @@ const TypeRegistrar<ObjectType> background{
      }}};
 
 const TypeRegistrar<ObjectType> box{
-    {{"solid-box", {}, "a box",
+    {{"solid-box",
+      {},
+      "a box",
       primitive_keys_and({{"cornerll", T::Vec3, "first corner", true}, {"cornerur", T::Vec3, "opposite corner", true}}),
       {"transform"}},
      [](const ParamReader& keys, BuildContext& ctx) {
@@ -544,7 +553,10 @@ const TypeRegistrar<ObjectType> cylinder{
      }}};
 
 const TypeRegistrar<ObjectType> ring{
-    {{"solid-ring", {}, "a thick ring (hollow cylinder)", [] {
+    {{"solid-ring",
+      {},
+      "a thick ring (hollow cylinder)",
+      [] {
         auto keys = primitive_keys_and(cylinder_keys());
         keys.push_back({"innerradii", T::Vec2, "inner radii", true, false, {}, ParamRange::positive()});
         return keys;
@@ -559,7 +571,9 @@ const TypeRegistrar<ObjectType> ring{
      }}};
 
 const TypeRegistrar<ObjectType> plane_ring{
-    {{"plane-ring", {}, "a flat ring (disk with a hole)",
+    {{"plane-ring",
+      {},
+      "a flat ring (disk with a hole)",
       primitive_keys_and(
           {{"center", T::Vec3, "centre", false, false, std::vector<double>{0, 0, 0}},
            {"normal", T::Vec3, "normal", false, false, std::vector<double>{0, 0, 1}},
@@ -584,8 +598,9 @@ const TypeRegistrar<ObjectType> plane_ring{
            keys.fail("emitter", "\"keplerian\" needs a metric in spherical coordinates (t, r, theta, phi)" +
                                     (ctx.metric ? std::string(", found ") + ctx.metric->name() : std::string()));
          if (norm(center) != 0 || n.x != 0 || n.y != 0 || keys.has("transform"))
-           keys.fail("emitter", "\"keplerian\" needs a ring in the equatorial plane: centre #(0 0 0), normal along z, "
-                                "no transform");
+           keys.fail("emitter",
+                     "\"keplerian\" needs a ring in the equatorial plane: centre #(0 0 0), normal along z, "
+                     "no transform");
          ring->keplerian_disk = true;
        }
        return finish_primitive(keys, ctx, ring);
@@ -609,13 +624,17 @@ const TypeRegistrar<ObjectType> triangle{
        return finish_primitive(keys, ctx, std::make_shared<Triangle>(p[0], p[1], p[2]));
      }}};
 
-const TypeRegistrar<ObjectType> parallelogram{
-    {{"plane-parallelogram", {}, "a parallelogram with corners p1, p2, p3 and p2 + p3 - p1",
-      primitive_keys_and(three_points()), {"transform"}, true},
-     [](const ParamReader& keys, BuildContext& ctx) {
-       const auto p = non_collinear_points(keys);
-       return finish_primitive(keys, ctx, std::make_shared<Parallelogram>(p[0], p[1], p[2]));
-     }}};
+const TypeRegistrar<ObjectType> parallelogram{{{"plane-parallelogram",
+                                                {},
+                                                "a parallelogram with corners p1, p2, p3 and p2 + p3 - p1",
+                                                primitive_keys_and(three_points()),
+                                                {"transform"},
+                                                true},
+                                               [](const ParamReader& keys, BuildContext& ctx) {
+                                                 const auto p = non_collinear_points(keys);
+                                                 return finish_primitive(
+                                                     keys, ctx, std::make_shared<Parallelogram>(p[0], p[1], p[2]));
+                                               }}};
 
 }  // namespace
 

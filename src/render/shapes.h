@@ -61,9 +61,9 @@ class SolidPrimitive;
 struct Crossing {
   double t = 0;
   const SolidPrimitive* prim = nullptr;  ///< whose surface (computes normal and uv on demand)
-  Vec3 p_local;  ///< the point in the primitive's local frame
-  Vec3 d_local;  ///< the line's direction in the primitive's local frame
-  int part = 0;  ///< face index
+  Vec3 p_local;                          ///< the point in the primitive's local frame
+  Vec3 d_local;                          ///< the line's direction in the primitive's local frame
+  int part = 0;                          ///< face index
   bool flip = false;  ///< normal reversed (boundary taken from the subtracted solid of a CSG difference)
 };
 /// Inside the solid between `in` and `out` (in.t <= out.t).
@@ -250,8 +250,8 @@ class Parallelogram final : public PlanarPrimitive {
 /// Segment o -> o + d against triangle (a, b, c) (Möller & Trumbore, J. Graphics Tools 2 (1997)
 /// 21): fraction t in [0, tmax), barycentric weights (b1, b2) of b and c. `parallelogram`: accept
 /// b1, b2 in [0,1] independently (the parallelogram a, b, c, b + c − a).
-bool segment_triangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c, double tmax,
-                      double& t, double& b1, double& b2, bool parallelogram = false);
+bool segment_triangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c, double tmax, double& t,
+                      double& b1, double& b2, bool parallelogram = false);
 
 /// Slab test of the segment o + t d, t in [t0, t1], against a box; narrows [t0, t1].
 inline bool segment_box(const Vec3& o, const Vec3& inv_d, const Bounds3& b, double& t0, double& t1) {

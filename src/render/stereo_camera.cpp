@@ -38,7 +38,10 @@ Vec3 PinholeStereoCamera::eye_offset(Eye eye) const {
 namespace {
 // GeoViS PinHoleStereoCam (docs/geovis-catalogue.md §2): two images, eyes at -+sep/2.
 const TypeRegistrar<CameraType> registrar{
-    {{"PinHoleStereoCam", {}, "two pinhole cameras (left and right eye), one image each", [] {
+    {{"PinHoleStereoCam",
+      {},
+      "two pinhole cameras (left and right eye), one image each",
+      [] {
         auto keys = camera_view_keys(ParamRange{0, 180, true, true});
         keys.insert(keys.begin(), camera_resolution_key(720, 576));
         keys.push_back({"sep", ParamType::Number, "eye separation (per-frame change: eyesep)", false, false, 0.1,

@@ -9,8 +9,8 @@ namespace geovis {
 /// axis (GeoViS GetLeft/RightEyePos). Setparam name of the separation: `eyesep`.
 class PinholeStereoCamera : public PinholeCamera {
  public:
-  PinholeStereoCamera(const Vec3& dir, const Vec3& vup, double fov_h_deg, double fov_v_deg, int width,
-                      int height, double eye_separation);
+  PinholeStereoCamera(const Vec3& dir, const Vec3& vup, double fov_h_deg, double fov_v_deg, int width, int height,
+                      double eye_separation);
   const char* type_name() const override { return "PinHoleStereoCam"; }
   void set_param(std::string_view name, const Value& value) override;
   std::vector<std::string> param_names() const override { return {"dir", "vup", "fov", "eyesep"}; }

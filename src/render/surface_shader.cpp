@@ -50,7 +50,9 @@ namespace {
 
 // GeoViS SurfShader (docs/geovis-catalogue.md §6).
 const TypeRegistrar<ShaderType> registrar{
-    {{"SurfShader", {}, "object colour from a texture, ambient and diffuse reflection, point lights",
+    {{"SurfShader",
+      {},
+      "object colour from a texture, ambient and diffuse reflection, point lights",
       {{"objcolor", ParamType::String, "texture id of the object colour (none: black)"},
        {"normalmap", ParamType::String, "texture id of a normal map"},
        {"ambient", ParamType::Number, "ambient reflectance ka", false, false, 1.0},

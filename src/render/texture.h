@@ -15,9 +15,7 @@ class Texture {
   virtual Color sample(double u, double v, double time = 0.0) const = 0;
   /// As sample(), knowing which part of the primitive was hit (Hit::part; DieT2D shows a
   /// different face of a die on each box face). Default: the part is irrelevant.
-  virtual Color sample_part(double u, double v, double time, int /*part*/) const {
-    return sample(u, v, time);
-  }
+  virtual Color sample_part(double u, double v, double time, int /*part*/) const { return sample(u, v, time); }
 };
 using TexturePtr = std::shared_ptr<Texture>;
 

@@ -60,13 +60,10 @@ Color ChequeredTimeTexture::sample_part(double u, double v, double time, int par
 
 namespace {
 // Eye centres of the faces with 1..6 eyes (GeoViS GvsDieT2D table), n eyes start at n(n-1)/2.
-constexpr double kEyes[21][2] = {
-    {0.5, 0.5},
-    {0.25, 0.25}, {0.75, 0.75},
-    {0.25, 0.75}, {0.5, 0.5}, {0.75, 0.25},
-    {0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75},
-    {0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}, {0.5, 0.5},
-    {0.25, 0.25}, {0.25, 0.5}, {0.25, 0.75}, {0.75, 0.27}, {0.75, 0.5}, {0.75, 0.75}};
+constexpr double kEyes[21][2] = {{0.5, 0.5},   {0.25, 0.25}, {0.75, 0.75}, {0.25, 0.75}, {0.5, 0.5},   {0.75, 0.25},
+                                 {0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}, {0.25, 0.25}, {0.75, 0.25},
+                                 {0.25, 0.75}, {0.75, 0.75}, {0.5, 0.5},   {0.25, 0.25}, {0.25, 0.5},  {0.25, 0.75},
+                                 {0.75, 0.27}, {0.75, 0.5},  {0.75, 0.75}};
 constexpr double kEyeRadius = 0.1;
 }  // namespace
 
@@ -108,12 +105,18 @@ Color hsv_to_rgb(double h, double s, double v) {
   const double hp = h / 60.0;
   const double x = c * (1.0 - std::fabs(std::fmod(hp, 2.0) - 1.0));
   double r = 0, g = 0, b = 0;
-  if (hp < 1) r = c, g = x;
-  else if (hp < 2) r = x, g = c;
-  else if (hp < 3) g = c, b = x;
-  else if (hp < 4) g = x, b = c;
-  else if (hp < 5) r = x, b = c;
-  else r = c, b = x;
+  if (hp < 1)
+    r = c, g = x;
+  else if (hp < 2)
+    r = x, g = c;
+  else if (hp < 3)
+    g = c, b = x;
+  else if (hp < 4)
+    g = x, b = c;
+  else if (hp < 5)
+    r = x, b = c;
+  else
+    r = c, b = x;
   const double m = v - c;
   return {r + m, g + m, b + m};
 }
@@ -167,7 +170,10 @@ Color ImageTexture::sample(double u, double v, double) const {
   uv_transform.apply(u, v, ut, vt);
   const Image& img = *image;
   const int w = img.width, h = img.height;
-  auto wrap = [](long long i, int n) { long long r = i % n; return static_cast<int>(r < 0 ? r + n : r); };
+  auto wrap = [](long long i, int n) {
+    long long r = i % n;
+    return static_cast<int>(r < 0 ? r + n : r);
+  };
   auto px = [&](long long i, long long j) {
     const float* p = img.at(wrap(i, w), wrap(j, h));
     return img.channels >= 3 ? Color{p[0], p[1], p[2]} : Color{p[0], p[0], p[0]};
@@ -210,7 +216,9 @@ namespace {
 Color color_of(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
 const TypeRegistrar<TextureType> uni_texture{
-    {{"UniTex", {}, "one colour everywhere",
+    {{"UniTex",
+      {},
+      "one colour everywhere",
       {{"color", ParamType::Vec3, "RGB colour", false, false, std::vector<double>{0, 0, 0}},
        {"colorgray", ParamType::Number, "grey value (instead of color)"}},
       {"color"}},
@@ -237,7 +245,9 @@ const TypeRegistrar<TextureType> die_texture{
      }}};
 
 const TypeRegistrar<TextureType> chequered_texture{
-    {{"ChequeredT2D", {}, "squares of the first texture with a border of the second",
+    {{"ChequeredT2D",
+      {},
+      "squares of the first texture with a border of the second",
       {two_textures_key(),
        {"width", ParamType::Number, "border width", false, false, 0.25, ParamRange{0, 0.5, true, true}}}},
      [](const ParamReader& keys, BuildContext& ctx) -> std::shared_ptr<Texture2D> {
@@ -246,7 +256,9 @@ const TypeRegistrar<TextureType> chequered_texture{
      }}};
 
 const TypeRegistrar<TextureType> chequered_time_texture{
-    {{"ChequeredTimeT2D", {}, "alternates between two textures in coordinate time",
+    {{"ChequeredTimeT2D",
+      {},
+      "alternates between two textures in coordinate time",
       {two_textures_key(),
        {"deltat", ParamType::Number, "period in coordinate time", false, false, 1.0, ParamRange::positive()}}},
      [](const ParamReader& keys, BuildContext& ctx) -> std::shared_ptr<Texture2D> {
@@ -255,7 +267,9 @@ const TypeRegistrar<TextureType> chequered_time_texture{
      }}};
 
 const TypeRegistrar<TextureType> color_grad_texture{
-    {{"ColorGradTex", {}, "colour gradient in (u, v): linear, radial, hsv, or the texture coordinates",
+    {{"ColorGradTex",
+      {},
+      "colour gradient in (u, v): linear, radial, hsv, or the texture coordinates",
       {{"color1", ParamType::Vec3, "start colour", false, false, std::vector<double>{0, 0, 0}},
        {"color2", ParamType::Vec3, "end colour", false, false, std::vector<double>{1, 1, 1}},
        {"start", ParamType::Vec2, "start point in (u, v)", false, false, std::vector<double>{0, 0.5}},
@@ -271,11 +285,12 @@ const TypeRegistrar<TextureType> color_grad_texture{
      }}};
 
 const TypeRegistrar<TextureType> image_texture{
-    {{"Image", {}, "an image file mapped onto [0,1)^2 with periodic wrap",
+    {{"Image",
+      {},
+      "an image file mapped onto [0,1)^2 with periodic wrap",
       {{"file", ParamType::String, "image file", true},
-       {"sampling", ParamType::String,
-        "geovis extension: nearest (as GeoViS), bilinear or bicubic texel interpolation", false, false,
-        std::string("nearest")}}},
+       {"sampling", ParamType::String, "geovis extension: nearest (as GeoViS), bilinear or bicubic texel interpolation",
+        false, false, std::string("nearest")}}},
      [](const ParamReader& keys, BuildContext& ctx) -> std::shared_ptr<Texture2D> {
        const std::string file = keys.string("file");
        const auto sampling = static_cast<ImageTexture::Sampling>(

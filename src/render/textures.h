@@ -67,7 +67,8 @@ class ChequeredTexture final : public Texture2D {
 /// the second), colour = fac·tex0 + (1 − fac)·tex1.
 class ChequeredTimeTexture final : public Texture2D {
  public:
-  ChequeredTimeTexture(TexturePtr t0, TexturePtr t1, double dt) : tex0(std::move(t0)), tex1(std::move(t1)), delta_t(dt) {}
+  ChequeredTimeTexture(TexturePtr t0, TexturePtr t1, double dt)
+      : tex0(std::move(t0)), tex1(std::move(t1)), delta_t(dt) {}
   Color sample(double u, double v, double time) const override { return sample_part(u, v, time, 0); }
   Color sample_part(double u, double v, double time, int part) const override;
   TexturePtr tex0, tex1;

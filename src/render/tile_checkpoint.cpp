@@ -93,7 +93,8 @@ bool TileCheckpoint::load(RenderResult& result) {
   }
   const std::string header = header_bytes(key_);
   if (bytes.compare(0, header.size(), header) != 0) {
-    note_ = "checkpoint \"" + path_ + "\" was made for a different scene, options or resolution; ignored, "
+    note_ = "checkpoint \"" + path_ +
+            "\" was made for a different scene, options or resolution; ignored, "
             "starting the frame from scratch";
     return false;
   }
@@ -162,8 +163,7 @@ void TileCheckpoint::append(int tile, const RenderResult& result) {
   // torn record is dropped on reading), a killed process loses none.
   const auto now = std::chrono::steady_clock::now();
   if (now - last_sync_ >= kSyncInterval) {
-    if (::fdatasync(fd_) != 0)
-      throw Error("checkpoint \"" + path_ + "\": fdatasync failed: " + std::strerror(errno));
+    if (::fdatasync(fd_) != 0) throw Error("checkpoint \"" + path_ + "\": fdatasync failed: " + std::strerror(errno));
     last_sync_ = now;
   }
   ++tiles_written_;

@@ -29,8 +29,8 @@ class LocalTiles final : public TileSchedule {
 }  // namespace
 
 ImageInProgress::ImageInProgress(int frame_, int eye_, const TileGrid& grid_, const RenderJob& job_,
-                                 RenderResult& result, TileCheckpoint* checkpoint, std::vector<int> todo,
-                                 bool progress, const std::string& label)
+                                 RenderResult& result, TileCheckpoint* checkpoint, std::vector<int> todo, bool progress,
+                                 const std::string& label)
     : frame(frame_),
       eye(eye_),
       grid(grid_),
@@ -55,7 +55,8 @@ void ImageInProgress::order(std::vector<double> cost, int stripes) {
   // Rank r gets the tile rows [r ty / N, (r+1) ty / N), in tile order (all costs equal).
   std::vector<std::vector<int>> band(static_cast<size_t>(stripes));
   for (int t : todo_tiles_) band[size_t((t / grid.tiles_x) * int64_t(stripes) / grid.tiles_y)].push_back(t);
-  for (auto& tiles : band) queues_.push_back(std::make_unique<CostOrderedTiles>(std::move(tiles), std::vector<double>()));
+  for (auto& tiles : band)
+    queues_.push_back(std::make_unique<CostOrderedTiles>(std::move(tiles), std::vector<double>()));
 }
 
 int ImageInProgress::remaining() const {
@@ -71,9 +72,9 @@ int ImageInProgress::remaining(int rank) const {
 }
 
 int ImageInProgress::pop(int rank) {
-  const int tile = queues_.size() == 1 ? queues_[0]->pop()
+  const int tile = queues_.size() == 1             ? queues_[0]->pop()
                    : size_t(rank) < queues_.size() ? queues_[size_t(rank)]->pop()
-                                                    : -1;
+                                                   : -1;
   if (tile >= 0) {
     std::lock_guard lock(mutex_);
     handed_out_.push_back(std::chrono::steady_clock::now());

@@ -117,7 +117,7 @@ class ImageInProgress {
 
 struct CheckpointSpec {
   std::string path;
-  uint64_t hash = 0;   ///< of the scene and every option that changes pixels
+  uint64_t hash = 0;  ///< of the scene and every option that changes pixels
   bool resume = false;
 };
 
@@ -193,7 +193,7 @@ class TileRenderSession {
   const int max_in_flight_, stripes_;
   mutable std::mutex mutex_;  // guards everything below
   std::condition_variable work_;
-  std::deque<std::unique_ptr<Slot>> slots_;  ///< submitted, not taken back; oldest first
+  std::deque<std::unique_ptr<Slot>> slots_;       ///< submitted, not taken back; oldest first
   std::map<int, std::vector<double>> last_cost_;  ///< per eye, expected CPU seconds per tile of the next frame
   std::vector<TileLogEntry> log_;
   std::atomic<bool> closing_{false};  ///< also read by the local render threads, without the lock

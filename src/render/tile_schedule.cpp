@@ -31,8 +31,7 @@ TileRect TileGrid::rect(int tile) const {
   return r;
 }
 
-CostOrderedTiles::CostOrderedTiles(std::vector<int> tiles, const std::vector<double>& cost)
-    : order_(std::move(tiles)) {
+CostOrderedTiles::CostOrderedTiles(std::vector<int> tiles, const std::vector<double>& cost) : order_(std::move(tiles)) {
   auto c = [&](int t) { return size_t(t) < cost.size() ? cost[size_t(t)] : 0.0; };
   // Cheapest first in the vector, so that pop_back() yields the most expensive tile.
   std::sort(order_.begin(), order_.end(), [&](int a, int b) { return c(a) != c(b) ? c(a) < c(b) : a > b; });

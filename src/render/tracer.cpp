@@ -31,7 +31,7 @@ struct RayState {
   const SceneObject* scene;
   bool hit = false;
   Hit best;
-  double frac = 0;          ///< refined hit position as fraction of the step
+  double frac = 0;  ///< refined hit position as fraction of the step
   double lambda0 = 0, lambda1 = 0;
   double y0[kMaxSystemDim], y1[kMaxSystemDim], dy0[kMaxSystemDim], dy1[kMaxSystemDim];
   int dim = 8;
@@ -308,9 +308,7 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   point_lights_ = job.metric->info().inertial_cartesian && job.lights.shadows && !job.lights.lights.empty();
 }
 
-TraceResult Tracer::trace_direction(const Vec3& d, TraceStats& stats) const {
-  return trace_direction(d, stats, {});
-}
+TraceResult Tracer::trace_direction(const Vec3& d, TraceStats& stats) const { return trace_direction(d, stats, {}); }
 
 TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats,
                                     FunctionRef<void(const StepView&)> observe_step) const {

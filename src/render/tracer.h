@@ -29,7 +29,7 @@ struct TraceResult {
   bool traced = false;  ///< false: the camera has no ray there (dome corner)
   bool hit = false;
   StopReason reason = StopReason::None;
-  Hit hit_info;         ///< the refined hit (valid when hit)
+  Hit hit_info;            ///< the refined hit (valid when hit)
   Vec4 pos{{0, 0, 0, 0}};  ///< hit event in metric coordinates (or the end of the ray)
   Vec4 k{{0, 0, 0, 0}};    ///< past-directed tangent there
   double lambda = 0;       ///< affine parameter there (0 at the observer)

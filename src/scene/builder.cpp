@@ -25,7 +25,8 @@ namespace geovis {
 SceneBuilder::SceneBuilder(SceneDescription scene, BuildOptions opts)
     : impl_(std::make_unique<Impl>(std::move(scene), std::move(opts))) {
   if (impl_->opts.supersample < 1)
-    throw Error("--supersample: expected a positive number of samples, found " + std::to_string(impl_->opts.supersample));
+    throw Error("--supersample: expected a positive number of samples, found " +
+                std::to_string(impl_->opts.supersample));
   impl_->process();
 }
 SceneBuilder::~SceneBuilder() = default;

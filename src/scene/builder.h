@@ -24,10 +24,10 @@
 namespace geovis {
 
 struct BuildOptions {
-  std::vector<std::string> search_paths;           ///< texture/mesh folders (scene dir, --texture-path, cwd)
+  std::vector<std::string> search_paths;          ///< texture/mesh folders (scene dir, --texture-path, cwd)
   std::optional<std::pair<int, int>> resolution;  ///< --res: overrides every camera's resolution
-  int supersample = 1;                             ///< n x n samples per pixel
-  Diagnostics* diag = nullptr;                     ///< warnings (unknown keys, ...); may be null
+  int supersample = 1;                            ///< n x n samples per pixel
+  Diagnostics* diag = nullptr;                    ///< warnings (unknown keys, ...); may be null
   /// Folder of the files gvs-print-motion, calc-ray and calc-proj-ray write ("" = the current
   /// folder); a relative file name is relative to it.
   std::string output_dir;

@@ -28,7 +28,7 @@ struct SceneBuilder::Impl {
   SceneDescription scene;
   BuildOptions opts;
 
-  DefMap defs;  ///< current definitions while the calls are processed
+  DefMap defs;                             ///< current definitions while the calls are processed
   std::shared_ptr<const DefMap> snapshot;  ///< shared copy of `defs`, reset when defs change
   std::vector<DeviceDef> devices;
   std::vector<ActionDef> actions;
@@ -205,8 +205,9 @@ struct SceneBuilder::Impl {
     for (const auto& [k, v] : m)
       if (!kind || v->kind == *kind) ids.push_back(k);
     const std::string what = kind ? definition_kind_name(*kind) : "object";
-    ps.fail(key, "unknown " + what + " id \"" + id + "\"" + did_you_mean(id, ids) +
-                     (ids.empty() ? " (no " + what + " is defined before this command)" : " (defined: " + join(ids) + ")"));
+    ps.fail(key,
+            "unknown " + what + " id \"" + id + "\"" + did_you_mean(id, ids) +
+                (ids.empty() ? " (no " + what + " is defined before this command)" : " (defined: " + join(ids) + ")"));
   }
 
   /// The last definition of `kind` created before call `before` (nullptr when none).

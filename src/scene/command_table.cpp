@@ -78,12 +78,11 @@ std::vector<ParamSpec> keys_init_solver(const std::string&) {
 
 std::vector<ParamSpec> keys_init_raygen(const std::string&) {
   using T = ParamType;
-  std::vector<ParamSpec> keys = {
-      {"type", T::String, "RayGenSimple", false, false, std::string("RayGenSimple")},
-      {"id", T::String, "id"},
-      {"solver", T::String, "solver id"},
-      {"maxnumpoints", T::Int, "maximal number of ray points", false, false, 3000.0,
-       ParamRange{2, std::numeric_limits<double>::infinity(), false, true}}};
+  std::vector<ParamSpec> keys = {{"type", T::String, "RayGenSimple", false, false, std::string("RayGenSimple")},
+                                 {"id", T::String, "id"},
+                                 {"solver", T::String, "solver id"},
+                                 {"maxnumpoints", T::Int, "maximal number of ray points", false, false, 3000.0,
+                                  ParamRange{2, std::numeric_limits<double>::infinity(), false, true}}};
   const auto box = bounding_box_keys();
   keys.insert(keys.end(), box.begin(), box.end());
   return keys;
@@ -92,48 +91,48 @@ std::vector<ParamSpec> keys_init_raygen(const std::string&) {
 std::vector<ParamSpec> keys_local_tetrad(const std::string&) {
   using T = ParamType;
   return {{"id", T::String, "id"},
-        {"pos", T::Any, "position #(t x1 x2 x3)"},
-        {"vel", T::Vec4, "coordinate four-velocity"},
-        {"localvel", T::Vec3, "3-velocity relative to the natural tetrad"},
-        {"e0", T::Vec4, "base vector e0"},
-        {"e1", T::Vec4, "base vector e1"},
-        {"e2", T::Vec4, "base vector e2"},
-        {"e3", T::Vec4, "base vector e3"},
-        {"incoords", T::Bool, "#t: e0..e3 in coordinates; #f: relative to the natural tetrad"},
-        {"metric", T::String, "metric id"},
-        {"localframe", T::Any, "natural tetrad kind (gpTetrad* constant)"}};
+          {"pos", T::Any, "position #(t x1 x2 x3)"},
+          {"vel", T::Vec4, "coordinate four-velocity"},
+          {"localvel", T::Vec3, "3-velocity relative to the natural tetrad"},
+          {"e0", T::Vec4, "base vector e0"},
+          {"e1", T::Vec4, "base vector e1"},
+          {"e2", T::Vec4, "base vector e2"},
+          {"e3", T::Vec4, "base vector e3"},
+          {"incoords", T::Bool, "#t: e0..e3 in coordinates; #f: relative to the natural tetrad"},
+          {"metric", T::String, "metric id"},
+          {"localframe", T::Any, "natural tetrad kind (gpTetrad* constant)"}};
 }
 
 std::vector<ParamSpec> keys_init_projector(const std::string&) {
   using T = ParamType;
   return {{"id", T::String, "id"},
-        {"raygen", T::String, "ray generator id"},
-        {"localtetrad", T::String, "observer's local tetrad id"},
-        {"motion", T::String, "observer's motion id"},
-        {"actualpos", T::Int, "point of the motion the observer is at"},
-        {"color", T::Vec3, "background colour"},
-        {"errcolor", T::Vec3, "colour of rays stopped by an integration error"},
-        {"cstrcolor", T::Vec3, "colour of rays stopped by the constraint check"},
-        {"breakcolor", T::Vec3, "colour of rays stopped by the metric's break condition"},
-        {"pos", T::Any, "observer position (instead of localtetrad)"},
-        {"e0", T::Vec4, "base vector e0"},
-        {"e1", T::Vec4, "base vector e1"},
-        {"e2", T::Vec4, "base vector e2"},
-        {"e3", T::Vec4, "base vector e3"},
-        {"incoords", T::Bool, "#t: e0..e3 in coordinates"},
-        {"localframe", T::Any, "natural tetrad kind"}};
+          {"raygen", T::String, "ray generator id"},
+          {"localtetrad", T::String, "observer's local tetrad id"},
+          {"motion", T::String, "observer's motion id"},
+          {"actualpos", T::Int, "point of the motion the observer is at"},
+          {"color", T::Vec3, "background colour"},
+          {"errcolor", T::Vec3, "colour of rays stopped by an integration error"},
+          {"cstrcolor", T::Vec3, "colour of rays stopped by the constraint check"},
+          {"breakcolor", T::Vec3, "colour of rays stopped by the metric's break condition"},
+          {"pos", T::Any, "observer position (instead of localtetrad)"},
+          {"e0", T::Vec4, "base vector e0"},
+          {"e1", T::Vec4, "base vector e1"},
+          {"e2", T::Vec4, "base vector e2"},
+          {"e3", T::Vec4, "base vector e3"},
+          {"incoords", T::Bool, "#t: e0..e3 in coordinates"},
+          {"localframe", T::Any, "natural tetrad kind"}};
 }
 
 std::vector<ParamSpec> keys_init_device(const std::string&) {
   using T = ParamType;
   return {{"type", T::String, "standard or standard_manual"},
-        {"id", T::String, "id"},
-        {"camera", T::String, "camera id"},
-        {"projector", T::String, "projector id"},
-        {"metric", T::String, "metric id"},
-        {"lightmgr", T::String, "light manager id"},
-        {"obj", T::String, "scene object id"},
-        {"setparam", T::List, "(\"objID\" \"param\" value)", false, true}};
+          {"id", T::String, "id"},
+          {"camera", T::String, "camera id"},
+          {"projector", T::String, "projector id"},
+          {"metric", T::String, "metric id"},
+          {"lightmgr", T::String, "light manager id"},
+          {"obj", T::String, "scene object id"},
+          {"setparam", T::List, "(\"objID\" \"param\" value)", false, true}};
 }
 
 std::vector<ParamSpec> keys_set_changeobj(const std::string&) {
@@ -149,19 +148,19 @@ std::vector<ParamSpec> keys_add_object(const std::string&) {
 std::vector<ParamSpec> keys_calc_ray(const std::string&) {
   using T = ParamType;
   return {{"filename", T::String, "output file", true},
-        {"raygen", T::String, "ray generator id"},
-        {"locted", T::String, "local tetrad id"},
-        {"pos", T::Any, "start position"},
-        {"dir", T::Vec2, "direction (ksi, chi) in degrees"}};
+          {"raygen", T::String, "ray generator id"},
+          {"locted", T::String, "local tetrad id"},
+          {"pos", T::Any, "start position"},
+          {"dir", T::Vec2, "direction (ksi, chi) in degrees"}};
 }
 
 std::vector<ParamSpec> keys_calc_proj_ray(const std::string&) {
   using T = ParamType;
   return {{"filename", T::String, "output file", true},
-        {"raygen", T::String, "ray generator id"},
-        {"projector", T::String, "projector id"},
-        {"dir", T::Vec3, "local direction"},
-        {"cartesian", T::Bool, "write Cartesian coordinates"}};
+          {"raygen", T::String, "ray generator id"},
+          {"projector", T::String, "projector id"},
+          {"dir", T::Vec3, "local direction"},
+          {"cartesian", T::Bool, "write Cartesian coordinates"}};
 }
 
 std::vector<ParamSpec> keys_gvs_print_motion(const std::string&) {
@@ -173,7 +172,6 @@ std::vector<ParamSpec> keys_gvs_print(const std::string&) {
   using T = ParamType;
   return {{"id", T::String, "id", true}};
 }
-
 
 // ---- keys and types that live with their factories ----------------------------------------------
 
@@ -200,7 +198,9 @@ std::vector<std::string> registry_changeable(const std::string& type) {
   return e ? e->changeable : std::vector<std::string>{};
 }
 
-std::vector<ParamSpec> keys_init_camera(const std::string& type) { return camera_param_specs(type.empty() ? "PinHoleCam" : type); }
+std::vector<ParamSpec> keys_init_camera(const std::string& type) {
+  return camera_param_specs(type.empty() ? "PinHoleCam" : type);
+}
 std::vector<std::string> camera_types() { return camera_type_names(); }
 std::vector<ParamSpec> keys_init_texture(const std::string& type) { return texture_keys(type); }
 std::vector<ParamSpec> keys_init_shader(const std::string& type) { return shader_keys(type); }
@@ -236,51 +236,53 @@ const std::vector<SceneCommand>& scene_commands() {
   using C = Changeable;
   static const std::vector<SceneCommand> commands = [] {
     std::vector<SceneCommand> list = {
-      {"init-metric", R::Definition, K::Metric, false, "the spacetime: `type` names a metric, its parameters are keys",
-       keys_init_metric, metric_names, C::TypeParameters},
-      {"init-solver", R::Definition, K::Solver, false, "the geodesic integrator and its step control",
-       keys_init_solver, solver_types, C::Listed, nullptr, registry_entry<SolverRegistry>},
-      {"init-camera", R::Definition, K::Camera, false, "the camera: type, resolution, field of view, filter",
-       keys_init_camera, camera_types, C::TypeParameters, nullptr, registry_entry<CameraRegistry>},
-      {"init-raygen", R::Definition, K::RayGen, false, "the ray generator: solver, bounding box, maximal points",
-       keys_init_raygen, raygen_types},
-      {"init-projector", R::Definition, K::Projector, false, "the observer: local tetrad or motion, background colours",
-       keys_init_projector, nullptr, C::Listed, projector_changeable},
-      {"local-tetrad", R::Definition, K::Tetrad, false, "a local tetrad (observer frame) at an event",
-       keys_local_tetrad, nullptr, C::Listed, tetrad_changeable},
-      {"init-light-mgr", R::Definition, K::LightMgr, false, "ambient and diffuse light, point lights, shadows",
-       keys_init_light_mgr},
-      {"init-light", R::Definition, K::Light, false, "a point light", keys_init_light, light_type_list, C::Listed,
-       nullptr, registry_entry<LightRegistry>},
-      {"init-texture", R::Definition, K::Texture, false, "a texture (colour, checker, gradient, image, ...)",
-       keys_init_texture, texture_types, C::Listed, registry_changeable<TextureRegistry>,
-       registry_entry<TextureRegistry>},
-      {"init-shader", R::Definition, K::Shader, false, "a surface shader: object colour, normal map, reflectances",
-       keys_init_shader, shader_type_list, C::Listed, nullptr, registry_entry<ShaderRegistry>},
-      {"add-object", R::Modifier, K::Object, false, "adds objects to a comp-object or comp-octree-object",
-       keys_add_object},
-      {"init-motion", R::Definition, K::Motion, false, "a motion: geodesic, constant velocity or world line",
-       keys_init_motion, motion_type_names, C::Listed, nullptr, registry_entry<MotionRegistry>},
-      {"init-device", R::Device, K::Object, false, "one image or sequence: camera, projector, scene, per-frame changes",
-       keys_init_device, device_types},
-      {"set-parameter", R::Modifier, K::Object, false,
-       "changes parameters of the definition `id`: every other key is a parameter name and its new value"},
-      {"set-changeobj", R::Modifier, K::Object, false, "adds per-frame changes to an earlier device",
-       keys_set_changeobj},
-      {"gvs-print-motion", R::Action, K::Object, false, "writes a motion's points to a file", keys_gvs_print_motion},
-      {"calc-ray", R::Action, K::Object, false, "writes one light ray from a tetrad and direction to a file",
-       keys_calc_ray},
-      {"calc-proj-ray", R::Action, K::Object, false, "writes the light ray of a projector's local direction to a file",
-       keys_calc_proj_ray},
-      {"gvs-print", R::Action, K::Object, false, "prints a definition", keys_gvs_print},
-      {"get-parameter", R::Immediate, K::Object, false, "the value of a definition's parameter"},
-      {"vec3", R::Immediate, K::Object, false, "a 3-vector #(x y z)"},
-      {"vec4", R::Immediate, K::Object, false, "a 4-vector #(t x y z)"},
-      {"translate-obj", R::Immediate, K::Object, false, "a translation matrix"},
-      {"rotate-obj", R::Immediate, K::Object, false, "a rotation matrix (axis, angle in degrees)"},
-      {"scale-obj", R::Immediate, K::Object, false, "a scaling matrix"},
-      {"m4d-metriclist", R::Immediate, K::Object, false, "prints the metric names"},
-      {"m4d-solverlist", R::Immediate, K::Object, false, "prints the integrator names"},
+        {"init-metric", R::Definition, K::Metric, false,
+         "the spacetime: `type` names a metric, its parameters are keys", keys_init_metric, metric_names,
+         C::TypeParameters},
+        {"init-solver", R::Definition, K::Solver, false, "the geodesic integrator and its step control",
+         keys_init_solver, solver_types, C::Listed, nullptr, registry_entry<SolverRegistry>},
+        {"init-camera", R::Definition, K::Camera, false, "the camera: type, resolution, field of view, filter",
+         keys_init_camera, camera_types, C::TypeParameters, nullptr, registry_entry<CameraRegistry>},
+        {"init-raygen", R::Definition, K::RayGen, false, "the ray generator: solver, bounding box, maximal points",
+         keys_init_raygen, raygen_types},
+        {"init-projector", R::Definition, K::Projector, false,
+         "the observer: local tetrad or motion, background colours", keys_init_projector, nullptr, C::Listed,
+         projector_changeable},
+        {"local-tetrad", R::Definition, K::Tetrad, false, "a local tetrad (observer frame) at an event",
+         keys_local_tetrad, nullptr, C::Listed, tetrad_changeable},
+        {"init-light-mgr", R::Definition, K::LightMgr, false, "ambient and diffuse light, point lights, shadows",
+         keys_init_light_mgr},
+        {"init-light", R::Definition, K::Light, false, "a point light", keys_init_light, light_type_list, C::Listed,
+         nullptr, registry_entry<LightRegistry>},
+        {"init-texture", R::Definition, K::Texture, false, "a texture (colour, checker, gradient, image, ...)",
+         keys_init_texture, texture_types, C::Listed, registry_changeable<TextureRegistry>,
+         registry_entry<TextureRegistry>},
+        {"init-shader", R::Definition, K::Shader, false, "a surface shader: object colour, normal map, reflectances",
+         keys_init_shader, shader_type_list, C::Listed, nullptr, registry_entry<ShaderRegistry>},
+        {"add-object", R::Modifier, K::Object, false, "adds objects to a comp-object or comp-octree-object",
+         keys_add_object},
+        {"init-motion", R::Definition, K::Motion, false, "a motion: geodesic, constant velocity or world line",
+         keys_init_motion, motion_type_names, C::Listed, nullptr, registry_entry<MotionRegistry>},
+        {"init-device", R::Device, K::Object, false,
+         "one image or sequence: camera, projector, scene, per-frame changes", keys_init_device, device_types},
+        {"set-parameter", R::Modifier, K::Object, false,
+         "changes parameters of the definition `id`: every other key is a parameter name and its new value"},
+        {"set-changeobj", R::Modifier, K::Object, false, "adds per-frame changes to an earlier device",
+         keys_set_changeobj},
+        {"gvs-print-motion", R::Action, K::Object, false, "writes a motion's points to a file", keys_gvs_print_motion},
+        {"calc-ray", R::Action, K::Object, false, "writes one light ray from a tetrad and direction to a file",
+         keys_calc_ray},
+        {"calc-proj-ray", R::Action, K::Object, false,
+         "writes the light ray of a projector's local direction to a file", keys_calc_proj_ray},
+        {"gvs-print", R::Action, K::Object, false, "prints a definition", keys_gvs_print},
+        {"get-parameter", R::Immediate, K::Object, false, "the value of a definition's parameter"},
+        {"vec3", R::Immediate, K::Object, false, "a 3-vector #(x y z)"},
+        {"vec4", R::Immediate, K::Object, false, "a 4-vector #(t x y z)"},
+        {"translate-obj", R::Immediate, K::Object, false, "a translation matrix"},
+        {"rotate-obj", R::Immediate, K::Object, false, "a rotation matrix (axis, angle in degrees)"},
+        {"scale-obj", R::Immediate, K::Object, false, "a scaling matrix"},
+        {"m4d-metriclist", R::Immediate, K::Object, false, "prints the metric names"},
+        {"m4d-solverlist", R::Immediate, K::Object, false, "prints the integrator names"},
     };
     // The object commands, after the other definitions they refer to (catalogue §1 order).
     auto at = std::find_if(list.begin(), list.end(), [](const SceneCommand& c) { return c.name == "init-shader"; }) + 1;
@@ -305,20 +307,34 @@ std::vector<std::string> scene_command_list() {
 const std::vector<std::pair<std::string, std::string>>& scene_constant_bindings() {
   // Defined in scheme_prelude.cpp (GeoViS Parser/init.scm), bound under these names in a scene.
   static const std::vector<std::pair<std::string, std::string>> bindings = {
-      {"gpobjtypelocal", "gpobjtypelocal"},     {"gpobjtypeincoords", "gpobjtypeincoords"},
-      {"gpcsgdifferobj", "gpcsgdifferobj"},     {"gpcsgunifiedobj", "gpcsgunifiedobj"},
-      {"gpcsgintersecobj", "gpcsgintersecobj"}, {"gptetraddefault", "gptetraddefault"},
-      {"gptetradstatic", "gptetradstatic"},     {"gptetradlnrf", "gptetradlnrf"},
-      {"gptetradfreefall", "gptetradfreefall"}, {"gptetradcomoving", "gptetradcomoving"},
-      {"gptetradcylinder", "gptetradcylinder"}, {"gptetradcartesian", "gptetradcartesian"},
-      {"pi", "pi"},                             {"pihalf", "pihalf"},
-      {"pi2", "pi2"},                           {"gpdblmax", "gpdblmax"},
-      {"deg_to_rad", "deg_to_rad"},             {"rad_to_deg", "rad_to_deg"},
-      {"radians", "radians"},                   {"degrees", "degrees"},
-      {"calchfov", "calchfov"},                 {"do", "gv-do"},
-      {"load", "gv-load"},                      {"exit", "gv-exit"},
-      {"quit", "gv-quit"},                      {"primitive-exit", "gv-exit"},
-      {"primitive-_exit", "gv-exit"},           {"getenv", "gv-getenv"},
+      {"gpobjtypelocal", "gpobjtypelocal"},
+      {"gpobjtypeincoords", "gpobjtypeincoords"},
+      {"gpcsgdifferobj", "gpcsgdifferobj"},
+      {"gpcsgunifiedobj", "gpcsgunifiedobj"},
+      {"gpcsgintersecobj", "gpcsgintersecobj"},
+      {"gptetraddefault", "gptetraddefault"},
+      {"gptetradstatic", "gptetradstatic"},
+      {"gptetradlnrf", "gptetradlnrf"},
+      {"gptetradfreefall", "gptetradfreefall"},
+      {"gptetradcomoving", "gptetradcomoving"},
+      {"gptetradcylinder", "gptetradcylinder"},
+      {"gptetradcartesian", "gptetradcartesian"},
+      {"pi", "pi"},
+      {"pihalf", "pihalf"},
+      {"pi2", "pi2"},
+      {"gpdblmax", "gpdblmax"},
+      {"deg_to_rad", "deg_to_rad"},
+      {"rad_to_deg", "rad_to_deg"},
+      {"radians", "radians"},
+      {"degrees", "degrees"},
+      {"calchfov", "calchfov"},
+      {"do", "gv-do"},
+      {"load", "gv-load"},
+      {"exit", "gv-exit"},
+      {"quit", "gv-quit"},
+      {"primitive-exit", "gv-exit"},
+      {"primitive-_exit", "gv-exit"},
+      {"getenv", "gv-getenv"},
   };
   return bindings;
 }

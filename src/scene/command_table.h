@@ -1,10 +1,10 @@
 // The commands of the scene language, described once (docs/geovis-catalogue.md §1).
 //
 // This table is the only list of command names (the object commands come from the registry of
-// object types, render/object_type.h, where each object registers itself): the Scheme bindings (scheme_prelude.cpp's command
-// macros and scene bindings), the evaluator's "did you mean", the builder's dispatch and key checks,
-// and the generated scene reference (docs/scene-reference.md, `geovis reference`) all read it.
-// Adding a command is adding its entry here and its handling where its role says.
+// object types, render/object_type.h, where each object registers itself): the Scheme bindings (scheme_prelude.cpp's
+// command macros and scene bindings), the evaluator's "did you mean", the builder's dispatch and key checks, and the
+// generated scene reference (docs/scene-reference.md, `geovis reference`) all read it. Adding a command is adding its
+// entry here and its handling where its role says.
 #pragma once
 
 #include <functional>
@@ -18,7 +18,20 @@
 namespace geovis {
 
 /// What a definition command defines (the kind of thing its `id` names).
-enum class DefinitionKind { Metric, Solver, Camera, RayGen, Tetrad, Projector, Light, LightMgr, Texture, Shader, Object, Motion };
+enum class DefinitionKind {
+  Metric,
+  Solver,
+  Camera,
+  RayGen,
+  Tetrad,
+  Projector,
+  Light,
+  LightMgr,
+  Texture,
+  Shader,
+  Object,
+  Motion
+};
 
 /// Human-readable name of a kind ("local tetrad", "scene object", ...), for error messages.
 const char* definition_kind_name(DefinitionKind k);

@@ -36,9 +36,9 @@ std::optional<std::vector<ParamSpec>> builder_checked_keys(const SceneCommand& c
 
 const std::vector<RefKey>& ref_keys(Kind k) {
   static const std::vector<RefKey> none;
-  static const std::vector<RefKey> object = {{"shader", Kind::Shader},   {"motion", Kind::Motion},
+  static const std::vector<RefKey> object = {{"shader", Kind::Shader},      {"motion", Kind::Motion},
                                              {"localtetrad", Kind::Tetrad}, {"obj", Kind::Object},
-                                             {"obj1", Kind::Object},     {"obj2", Kind::Object}};
+                                             {"obj1", Kind::Object},        {"obj2", Kind::Object}};
   static const std::vector<RefKey> shader = {{"objcolor", Kind::Texture}, {"normalmap", Kind::Texture}};
   static const std::vector<RefKey> texture = {{"texture", Kind::Texture}};
   static const std::vector<RefKey> lightmgr = {{"light", Kind::Light}};

@@ -49,8 +49,8 @@ using DefMap = std::map<std::string, DefPtr>;
 
 struct DeviceDef {
   int seq = 0;
-  ParamSet ps;                     ///< the init-device call
-  std::vector<Param> setparams;    ///< its setparam entries plus set-changeobj additions
+  ParamSet ps;                   ///< the init-device call
+  std::vector<Param> setparams;  ///< its setparam entries plus set-changeobj additions
   std::shared_ptr<const DefMap> defs;
 };
 
@@ -59,7 +59,6 @@ struct ActionDef {
   CommandCall call;
   std::shared_ptr<const DefMap> defs;
 };
-
 
 /// Rethrows `e` as a SceneError at `key` of `ps` (a SceneError passes unchanged).
 [[noreturn]] void rethrow_at(const ParamSet& ps, std::string_view key, const std::exception& e);

@@ -70,8 +70,10 @@ class DeviceBuild {
       const DefPtr& light_mgr_def = Impl::resolve(defs_, device_ps, "lightmgr", Kind::LightMgr, dev_.seq);
       for (const auto& ref : ref_keys(Kind::LightMgr))
         for (const Param* p : light_mgr_def->ps.find_all(ref.key)) {
-          if (!p->value.is_string()) light_mgr_def->ps.fail(ref.key, "expected a string (an id), found " + p->value.describe());
-          Impl::lookup(defs_, light_mgr_def->ps, ref.key, std::get<std::string>(p->value.v), ref.kind, light_mgr_def->seq);
+          if (!p->value.is_string())
+            light_mgr_def->ps.fail(ref.key, "expected a string (an id), found " + p->value.describe());
+          Impl::lookup(defs_, light_mgr_def->ps, ref.key, std::get<std::string>(p->value.v), ref.kind,
+                       light_mgr_def->seq);
         }
       try {
         job.lights = make_light_manager(light_mgr_def->ps, ctx_);
@@ -91,8 +93,9 @@ class DeviceBuild {
     job.observer = observer_of(proj, observer_kind);
     if (!metric_->is_valid(job.observer.pos))
       projector_ps.fail(projector_ps.has("motion") ? "motion" : "localtetrad",
-               "the observer position " + fmt_vec(job.observer.pos.c, 4) + " is outside the validity domain of the " +
-                   metric_->name() + " metric (e.g. inside a horizon or on a coordinate singularity)");
+                        "the observer position " + fmt_vec(job.observer.pos.c, 4) +
+                            " is outside the validity domain of the " + metric_->name() +
+                            " metric (e.g. inside a horizon or on a coordinate singularity)");
 
     const DefPtr& raygen_def = Impl::resolve(defs_, projector_ps, "raygen", Kind::RayGen, proj->seq);
     job.solver = raygen_config(raygen_def);
@@ -125,18 +128,19 @@ class DeviceBuild {
         (!metric_->has_separable_geodesics() || !job.solver.separable || job.filter == Filter::RGBjac)) {
       const DefPtr& solver_def = Impl::resolve(defs_, raygen_def->ps, "solver", Kind::Solver, raygen_def->seq);
       solver_def->ps.fail("type", std::string("RKN86 integrates only the separated geodesic equations of KerrBL and "
-                                        "Schwarzschild (") +
-                                (job.filter == Filter::RGBjac ? "not the Jacobi equation of the RGBjac filter"
-                                 : !job.solver.separable       ? "here switched off by 'separable #f'"
-                                                               : "this scene's metric is " + metric_->name()) +
-                                "); use DOP853");
+                                              "Schwarzschild (") +
+                                      (job.filter == Filter::RGBjac ? "not the Jacobi equation of the RGBjac filter"
+                                       : !job.solver.separable      ? "here switched off by 'separable #f'"
+                                                                    : "this scene's metric is " + metric_->name()) +
+                                      "); use DOP853");
     }
 
     if (info) {
       std::ostringstream m;
       m << metric_->name();
       const auto& ps = metric_->info().params;
-      for (size_t i = 0; i < ps.size(); ++i) m << (i ? ", " : " (") << ps[i].name << " = " << metric_->param_values()[i];
+      for (size_t i = 0; i < ps.size(); ++i)
+        m << (i ? ", " : " (") << ps[i].name << " = " << metric_->param_values()[i];
       if (!ps.empty()) m << ")";
       info->metric_line = m.str();
       info->observer_line = "position " + fmt_vec(job.observer.pos.c, 4) + ", " + observer_kind;
@@ -200,7 +204,7 @@ class DeviceBuild {
     const std::string type = raygen_ps.get_string("type", std::string("RayGenSimple"));
     if (type != "RayGenSimple")
       raygen_ps.fail("type", "unknown ray generator \"" + type + "\"" + did_you_mean(type, {"RayGenSimple"}) +
-                           " (valid: RayGenSimple)");
+                                 " (valid: RayGenSimple)");
     const DefPtr& solver_def = Impl::resolve(defs_, raygen_ps, "solver", Kind::Solver, raygen_def->seq);
     SolverConfig c = Impl::solver_config(solver_def->ps);
     // A solver used by a ray generator integrates light rays backwards (catalogue §1): the
@@ -270,9 +274,9 @@ class DeviceBuild {
       const auto& samples = mo->samples();
       const int n = projector_ps.get_int("actualpos", 0);
       if (n < 0 || n >= static_cast<int>(samples.size()))
-        projector_ps.fail("actualpos", "point " + std::to_string(n) + " does not exist: motion \"" + motion_def->id + "\" has " +
-                                  std::to_string(samples.size()) + " points (0 to " +
-                                  std::to_string(samples.size() - 1) + ")");
+        projector_ps.fail("actualpos", "point " + std::to_string(n) + " does not exist: motion \"" + motion_def->id +
+                                           "\" has " + std::to_string(samples.size()) + " points (0 to " +
+                                           std::to_string(samples.size() - 1) + ")");
       obs.pos = samples[n].x;
       obs.e = samples[n].e;
       kind = "moving with motion \"" + motion_def->id + "\" (point " + std::to_string(n) + " of " +
@@ -283,11 +287,11 @@ class DeviceBuild {
       // The tetrad given inline (pos has 4 or 5 components; GeoViS reads the first four).
       ParamSet tetrad_ps = projector_ps;
       tetrad_ps.set("pos", Value(std::vector<double>([&] {
-                auto v = projector_ps.get_vector_any("pos", {4, 5});
-                v.resize(4);
-                return v;
-              }())),
-              projector_ps.find("pos")->loc);
+                      auto v = projector_ps.get_vector_any("pos", {4, 5});
+                      v.resize(4);
+                      return v;
+                    }())),
+                    projector_ps.find("pos")->loc);
       auto d = std::make_shared<Def>(*proj);
       d->ps = tetrad_ps;
       const LocalTetrad t = tetrad_of(d);
@@ -301,12 +305,13 @@ class DeviceBuild {
     obs.pos = t.pos;
     obs.e = t.e;
     kind = "static local tetrad \"" + tetrad_def->id + "\"" +
-           (tetrad_def->ps.get_bool("incoords", false) ? " (coordinate components)"
-                                               : std::string(" (relative to the ") +
-                                                     tetrad_kind_name(static_cast<TetradKind>(
-                                                         tetrad_def->ps.get_int("localframe", 0))) +
-                                                     " natural tetrad)");
-    if (tetrad_def->ps.has("localvel")) kind += ", boosted by localvel " + fmt_vec(tetrad_def->ps.get_vector("localvel", 3).data(), 3);
+           (tetrad_def->ps.get_bool("incoords", false)
+                ? " (coordinate components)"
+                : std::string(" (relative to the ") +
+                      tetrad_kind_name(static_cast<TetradKind>(tetrad_def->ps.get_int("localframe", 0))) +
+                      " natural tetrad)");
+    if (tetrad_def->ps.has("localvel"))
+      kind += ", boosted by localvel " + fmt_vec(tetrad_def->ps.get_vector("localvel", 3).data(), 3);
     return obs;
   }
 
@@ -410,9 +415,7 @@ class DeviceBuild {
         case Kind::Shader:
           ctx_.shaders[d->id] = impl_.cached<Shader>(key, [&] { return make_shader(d->ps, ctx_); });
           break;
-        case Kind::Light:
-          ctx_.lights[d->id] = make_point_light(d->ps, ctx_);
-          break;
+        case Kind::Light: ctx_.lights[d->id] = make_point_light(d->ps, ctx_); break;
         case Kind::Object: {
           // Objects live in the metric's pseudo-Cartesian coordinates; primitives consume objIDs
           // from the counter, so both are part of the key.

@@ -42,8 +42,7 @@ DefPtr apply_change(const DefPtr& d, const std::string& name, const Value& value
     } catch (const SceneError&) {
       throw;
     } catch (const std::exception& e) {
-      throw SceneError(loc.line ? loc : where.loc(), where.command(), key_for_errors,
-                       "\"" + d->id + "\": " + e.what());
+      throw SceneError(loc.line ? loc : where.loc(), where.command(), key_for_errors, "\"" + d->id + "\": " + e.what());
     }
   }
   if (d->kind == Kind::Metric || d->kind == Kind::Camera) {
@@ -57,8 +56,7 @@ DefPtr apply_change(const DefPtr& d, const std::string& name, const Value& value
     throw SceneError(l, where.command(), key_for_errors,
                      "\"" + d->id + "\" (" + d->ps.command() + ") has no parameter \"" + name +
                          "\" that can be changed" + did_you_mean(n, names) +
-                         (names.empty() ? " (it has no changeable parameters)"
-                                        : " (changeable: " + join(names) + ")"));
+                         (names.empty() ? " (it has no changeable parameters)" : " (changeable: " + join(names) + ")"));
   }
   if (n == "calc") return nd;  // GeoViS: recompute the tetrad; ours is always computed on build
   if (d->kind == Kind::Tetrad && n == "time") {

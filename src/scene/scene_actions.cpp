@@ -28,8 +28,8 @@ std::string action_output_path(const ParamSet& ps, const std::string& key, const
     std::error_code ec;
     const fs::path root = fs::weakly_canonical(opts.output_dir.empty() ? fs::path(".") : fs::path(opts.output_dir), ec);
     const fs::path target = fs::weakly_canonical(fs::absolute(p, ec), ec);
-    const bool below = std::mismatch(root.begin(), root.end(), target.begin(), target.end()).first == root.end() &&
-                       target != root;
+    const bool below =
+        std::mismatch(root.begin(), root.end(), target.begin(), target.end()).first == root.end() && target != root;
     if (ec || !below)
       ps.fail(key, "\"" + name + "\" is outside the output folder " + root.string() +
                        ": a scene may write its files only below it (they run sandboxed; --trust-scene lifts this)");
@@ -67,8 +67,9 @@ void SceneBuilder::run_actions(std::ostream& out) const {
     }
     if (cmd == "gvs-print-motion") {
       const DefPtr& motion_def = Impl::resolve(*a.defs, ps, "id", Kind::Motion, a.seq);
-      with_metric(motion_def->ps.has("metric") ? &Impl::resolve(*a.defs, motion_def->ps, "metric", Kind::Metric, motion_def->seq)
-                                       : Impl::last_of(*a.defs, Kind::Metric, motion_def->seq));
+      with_metric(motion_def->ps.has("metric")
+                      ? &Impl::resolve(*a.defs, motion_def->ps, "metric", Kind::Metric, motion_def->seq)
+                      : Impl::last_of(*a.defs, Kind::Metric, motion_def->seq));
       const MotionPtr mo = b.motion_of(motion_def);
       std::ostringstream data;
       mo->write(data);
@@ -115,12 +116,13 @@ void SceneBuilder::run_actions(std::ostream& out) const {
       }
       if (!m.is_valid(start))
         ps.fail(proj_ray ? "projector" : "pos", "the start point " + fmt_vec(start.c, 4) +
-                                                   " is outside the validity domain of the " + m.name() + " metric");
+                                                    " is outside the validity domain of the " + m.name() + " metric");
       const bool cartesian = proj_ray && ps.get_bool("cartesian", false);
       double J[3][3];
       if (cartesian && !m.pseudo_cartesian_jacobian(start, J))
-        ps.fail("cartesian", std::string("Cartesian output needs Cartesian, spherical or cylindrical coordinates; the ") +
-                                 m.name() + " metric uses " + coord_type_name(m.info().coord_type) + " coordinates");
+        ps.fail("cartesian",
+                std::string("Cartesian output needs Cartesian, spherical or cylindrical coordinates; the ") + m.name() +
+                    " metric uses " + coord_type_name(m.info().coord_type) + " coordinates");
       // Points and vectors in the metric's pseudo-Cartesian coordinates (time unchanged).
       auto to_cartesian_vector = [&J](const Vec4& v) {
         Vec4 out{{v[0], 0, 0, 0}};

@@ -31,9 +31,12 @@ const char* role_text(CommandRole r) {
 std::string cell(std::string s) {
   std::string out;
   for (char c : s) {
-    if (c == '|') out += "\\|";
-    else if (c == '\n') out += ' ';
-    else out += c;
+    if (c == '|')
+      out += "\\|";
+    else if (c == '\n')
+      out += ' ';
+    else
+      out += c;
   }
   return out;
 }
@@ -53,18 +56,20 @@ void metric_section(std::ostream& os) {
   for (const std::string& name : metric_names()) {
     const auto m = make_metric(name);
     const MetricInfo& info = m->info();
-    os << "#### " << name << "\n\n" << cell(info.doc) << "\n\nCoordinates (" << info.coords[0] << ", "
-       << info.coords[1] << ", " << info.coords[2] << ", " << info.coords[3] << ").\n\n";
+    os << "#### " << name << "\n\n"
+       << cell(info.doc) << "\n\nCoordinates (" << info.coords[0] << ", " << info.coords[1] << ", " << info.coords[2]
+       << ", " << info.coords[3] << ").\n\n";
     os << "| parameter | default | range | doc |\n|---|---|---|---|\n";
     for (const MetricParam& p : info.params)
-      os << "| `" << p.name << "` | " << metric_number_text(p.def) << " | " << metric_param_range_text(p) << " | " << cell(p.doc) << " |\n";
+      os << "| `" << p.name << "` | " << metric_number_text(p.def) << " | " << metric_param_range_text(p) << " | "
+         << cell(p.doc) << " |\n";
     os << "\n";
   }
 }
 
 void command_section(std::ostream& os, const SceneCommand& c) {
-  os << "### " << c.name << "\n\n" << cell(std::string(c.doc)) << (c.geovis_extension ? " (geovis extension)" : "")
-     << ".\n\n";
+  os << "### " << c.name << "\n\n"
+     << cell(std::string(c.doc)) << (c.geovis_extension ? " (geovis extension)" : "") << ".\n\n";
   if (c.change_rule == Changeable::TypeParameters)
     os << "A per-frame change (`setparam`, `set-parameter`) may set every parameter of its type.\n\n";
   if (c.name == "init-metric") {

@@ -107,8 +107,8 @@ void watchdog(double seconds) {
 
 void init_prelude_module(void*) {
   define_command_primitives();
-  g_time_limit_proc = scm_c_make_gsubr("%gv-time-limit-reached", 0, 0, 0,
-                                       reinterpret_cast<scm_t_subr>(time_limit_reached));
+  g_time_limit_proc =
+      scm_c_make_gsubr("%gv-time-limit-reached", 0, 0, 0, reinterpret_cast<scm_t_subr>(time_limit_reached));
   scm_gc_protect_object(g_time_limit_proc);
   // Read the prelude with symbols folded to lower case, like a scene, and evaluate it here.
   std::string source = kPreludeSource;
@@ -117,8 +117,8 @@ void init_prelude_module(void*) {
   SCM port = scm_open_input_string(scm_from_utf8_string(source.c_str()));
   scm_set_port_filename_x(port, scm_from_utf8_string("geovis-prelude.scm"));
   // ice-9/read.scm per-port reader options: #xFFF7 = inherit all, case-insensitive on.
-  scm_call_3(scm_c_public_ref("guile", "%set-port-property!"), port,
-             scm_from_utf8_symbol("port-read-options"), scm_from_int(0xFFF7));
+  scm_call_3(scm_c_public_ref("guile", "%set-port-property!"), port, scm_from_utf8_symbol("port-read-options"),
+             scm_from_int(0xFFF7));
   SCM module = scm_current_module();
   for (;;) {
     SCM form = scm_read(port);
@@ -164,12 +164,12 @@ struct EvalRequest {
   std::string path_or_text;
   std::string name;
   // results
-  bool finished = false;      // %gv-run returned #t
-  std::string kind;           // else: geovis, exit, read, syntax, unbound, stack, other, internal
+  bool finished = false;  // %gv-run returned #t
+  std::string kind;       // else: geovis, exit, read, syntax, unbound, stack, other, internal
   std::string message;
   int line = 0;
   int column = 0;
-  std::string name_found;     // unbound variable name
+  std::string name_found;  // unbound variable name
   int exit_code = 0;
 };
 
@@ -204,9 +204,7 @@ SCM eval_body(void* data) {
   // (lambda () (set! %gv-overrides (%gv-read-overrides defs)) (eval-file/-string ...))
   SCM setup = scm_list_3(scm_from_utf8_symbol("set!"), scm_from_utf8_symbol("%gv-overrides"),
                          scm_list_2(g_read_overrides_proc, scm_list_2(scm_from_utf8_symbol("quote"), defs)));
-  SCM call = req->from_file
-                 ? scm_list_2(g_eval_file_proc, target)
-                 : scm_list_3(g_eval_string_proc, target, name);
+  SCM call = req->from_file ? scm_list_2(g_eval_file_proc, target) : scm_list_3(g_eval_string_proc, target, name);
   thunk = scm_eval(scm_list_4(scm_from_utf8_symbol("lambda"), SCM_EOL, setup, call), g_prelude_module);
 
   {
@@ -216,8 +214,7 @@ SCM eval_body(void* data) {
   }
   g_watch_cv.notify_all();
   set_heap_limit(ctx.opts->memory_limit_bytes);  // cleared by run() whatever happens here
-  SCM result = scm_call_3(g_run_proc, thunk, scm_from_long(kStackLimitWords),
-                          scm_from_bool(ctx.opts->print_output));
+  SCM result = scm_call_3(g_run_proc, thunk, scm_from_long(kStackLimitWords), scm_from_bool(ctx.opts->print_output));
   clear_heap_limit();
   {
     std::lock_guard<std::mutex> lock(g_watch_mutex);
@@ -240,9 +237,8 @@ SCM eval_body(void* data) {
   SCM nm = scm_list_ref(result, scm_from_int(4));
   req->kind = scm_is_symbol(kind) ? scm_string_or(scm_symbol_to_string(kind), "other") : "other";
   if (req->kind == "exit") {
-    req->exit_code = scm_is_integer(msg) && scm_is_signed_integer(msg, -1000000, 1000000)
-                         ? scm_to_int(msg)
-                         : (scm_is_false(msg) ? 1 : 0);
+    req->exit_code = scm_is_integer(msg) && scm_is_signed_integer(msg, -1000000, 1000000) ? scm_to_int(msg)
+                                                                                          : (scm_is_false(msg) ? 1 : 0);
   } else {
     req->message = scm_string_or(msg, "");
   }
@@ -264,8 +260,7 @@ void* eval_in_guile(void* data) {
   auto* req = static_cast<EvalRequest*>(data);
   if (!g_prelude_ready) {
     PreludeInit init;
-    SCM r = scm_c_catch(SCM_BOOL_T, init_prelude_body, nullptr, init_prelude_handler, &init,
-                        nullptr, nullptr);
+    SCM r = scm_c_catch(SCM_BOOL_T, init_prelude_body, nullptr, init_prelude_handler, &init, nullptr, nullptr);
     if (!scm_is_true(r)) {
       req->kind = "internal";
       req->message = "could not load the GeoViS prelude: " + init.error;
@@ -341,8 +336,8 @@ std::string unclosed_hint(const std::string& text, const std::string& file) {
       advance(1);
       while (i < n && text[i] != '"') advance(text[i] == '\\' ? 2 : 1);
       if (i >= n)
-        return "; the string starting at " + file + ":" + std::to_string(start.line) + ":" +
-               std::to_string(start.col) + " is never closed";
+        return "; the string starting at " + file + ":" + std::to_string(start.line) + ":" + std::to_string(start.col) +
+               " is never closed";
       advance(1);
     } else if (c == '(' || c == '[') {
       open.push_back(Pos{line, col});
@@ -355,8 +350,8 @@ std::string unclosed_hint(const std::string& text, const std::string& file) {
     }
   }
   if (open.empty()) return "";
-  return "; the ( at " + file + ":" + std::to_string(open.front().line) + ":" +
-         std::to_string(open.front().col) + " is never closed";
+  return "; the ( at " + file + ":" + std::to_string(open.front().line) + ":" + std::to_string(open.front().col) +
+         " is never closed";
 }
 
 SceneDescription run(EvalRequest& req, const std::string& file, const SchemeOptions& opts) {
@@ -428,14 +423,12 @@ SceneDescription run(EvalRequest& req, const std::string& file, const SchemeOpti
       const std::string& name = req.name_found;
       const std::vector<std::string>& language = scene_language_names();
       // A misspelled GeoViS command ("init-metrik") or a name in a command family ("init-foo").
-      static const char* const kCommandPrefixes[] = {"init-", "solid-", "plane-", "comp-", "local-",
-                                                     "mesh-", "csg-", "add-", "set-", "get-",
-                                                     "gvs-", "calc-", "m4d-"};
+      static const char* const kCommandPrefixes[] = {"init-", "solid-", "plane-", "comp-", "local-", "mesh-", "csg-",
+                                                     "add-",  "set-",   "get-",   "gvs-",  "calc-",  "m4d-"};
       bool command_like = false;
-      for (const char* prefix : kCommandPrefixes)
-        command_like = command_like || name.rfind(prefix, 0) == 0;
-      command_like = command_like || (name.find('-') != std::string::npos &&
-                                      !closest_name(name, scene_command_names()).empty());
+      for (const char* prefix : kCommandPrefixes) command_like = command_like || name.rfind(prefix, 0) == 0;
+      command_like =
+          command_like || (name.find('-') != std::string::npos && !closest_name(name, scene_command_names()).empty());
       if (command_like) {
         const std::string hint = did_you_mean(name, language);
         throw SceneError(loc, "", "",
@@ -444,8 +437,7 @@ SceneDescription run(EvalRequest& req, const std::string& file, const SchemeOpti
       }
       std::vector<std::string> candidates = ctx.defines;
       candidates.insert(candidates.end(), language.begin(), language.end());
-      throw SceneError(loc, "", "",
-                       "unbound variable \"" + name + "\"" + did_you_mean(name, candidates));
+      throw SceneError(loc, "", "", "unbound variable \"" + name + "\"" + did_you_mean(name, candidates));
     }
     if (req.kind == "stack") throw SceneError(loc, "", "", req.message);
     if (req.kind == "time") {
@@ -461,8 +453,7 @@ SceneDescription run(EvalRequest& req, const std::string& file, const SchemeOpti
       throw SceneError(loc, "", "", os.str());
     }
     if (req.kind == "forbidden")
-      throw SceneError(loc, "", "",
-                       "\"" + req.name_found + "\" is not available in scenes (" + kSandboxHint + ")");
+      throw SceneError(loc, "", "", "\"" + req.name_found + "\" is not available in scenes (" + kSandboxHint + ")");
     if (req.kind == "internal") throw Error(file + ": " + req.message);
     if (req.kind == "geovis") throw SceneError(loc, "", "", "internal error: lost the error of a command");
     throw SceneError(loc, "", "", req.message);
@@ -472,11 +463,10 @@ SceneDescription run(EvalRequest& req, const std::string& file, const SchemeOpti
   for (const auto& [name, value] : opts.defines) {
     const std::string lname = to_lower(name);
     if (ctx.used_overrides.count(lname)) continue;
-    std::string msg = "--define " + name + "=" + value + ": the scene has no top-level (define " +
-                      lname + " ...); the value is not used" + did_you_mean(lname, ctx.defines);
+    std::string msg = "--define " + name + "=" + value + ": the scene has no top-level (define " + lname +
+                      " ...); the value is not used" + did_you_mean(lname, ctx.defines);
     if (!ctx.defines.empty()) msg += " (the scene defines: " + join(ctx.defines) + ")";
-    if (opts.diag)
-      opts.diag->warn(SourceLoc{file, 0}, "", "", msg);
+    if (opts.diag) opts.diag->warn(SourceLoc{file, 0}, "", "", msg);
   }
   return std::move(ctx.desc);
 }
@@ -505,8 +495,7 @@ SceneDescription evaluate_scene_file(const std::string& path, const SchemeOption
   return scheme_detail::run(req, path, opts);
 }
 
-SceneDescription evaluate_scene_string(const std::string& text, const std::string& name,
-                                       const SchemeOptions& opts) {
+SceneDescription evaluate_scene_string(const std::string& text, const std::string& name, const SchemeOptions& opts) {
   scheme_detail::EvalRequest req;
   req.from_file = false;
   req.path_or_text = text;

@@ -2,10 +2,10 @@
 // every GeoViS command call as a parameter set (scene/description.h).
 //
 // Scenes are Scheme (define, let, do, quasiquote, string-append, getenv, load, ...) evaluated
-// in a fresh module per scene (by default a sandbox, docs/security.md), with the GeoViS prelude (catalogue §1 "Constants from
-// Parser/init.scm") and every GeoViS command (catalogue §1) available. Like GeoViS's TinyScheme
-// reader (catalogue, Conventions) symbols are folded to lower case, so keys and variable names are
-// case-insensitive; strings keep their case.
+// in a fresh module per scene (by default a sandbox, docs/security.md), with the GeoViS prelude (catalogue §1
+// "Constants from Parser/init.scm") and every GeoViS command (catalogue §1) available. Like GeoViS's TinyScheme reader
+// (catalogue, Conventions) symbols are folded to lower case, so keys and variable names are case-insensitive; strings
+// keep their case.
 //
 // Every Guile error (syntax error, unbound variable, wrong argument, ...) and every malformed
 // command argument becomes a geovis::Error / SceneError whose message starts with the scene

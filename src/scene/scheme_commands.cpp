@@ -48,8 +48,7 @@ const std::vector<std::string>& scene_language_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n = scene_command_list();
     for (const auto& [scene_name, prelude_name] : scene_constant_bindings())
-      if (scene_name != "do" && scene_name != "quit" && scene_name.rfind("primitive-", 0) != 0)
-        n.push_back(scene_name);
+      if (scene_name != "do" && scene_name != "quit" && scene_name.rfind("primitive-", 0) != 0) n.push_back(scene_name);
     return n;
   }();
   return names;
@@ -80,9 +79,7 @@ std::string to_std(SCM s) {
 
 std::string symbol_name(SCM sym) { return to_std(scm_symbol_to_string(sym)); }
 
-SCM prelude_proc(const char* name) {
-  return scm_variable_ref(scm_c_private_lookup("geovis prelude", name));
-}
+SCM prelude_proc(const char* name) { return scm_variable_ref(scm_c_private_lookup("geovis prelude", name)); }
 
 bool is_matrix(SCM v) {
   static SCM pred = prelude_proc("%gv-matrix?");
@@ -201,11 +198,9 @@ Value to_value(SCM v, const ValueContext& c, int depth = 0) {
   if (scm_is_null(v)) return Value(ValueList{});
   if (scm_is_pair(v)) {
     SCM head = scm_car(v);
-    if (scm_is_eq(head, scm_from_utf8_symbol("unquote")) ||
-        scm_is_eq(head, scm_from_utf8_symbol("unquote-splicing")))
+    if (scm_is_eq(head, scm_from_utf8_symbol("unquote")) || scm_is_eq(head, scm_from_utf8_symbol("unquote-splicing")))
       throw SceneError(c.loc, c.command, c.key,
-                       "found the unevaluated expression " +
-                           truncated(to_std(scm_object_to_string(v, SCM_UNDEFINED))) +
+                       "found the unevaluated expression " + truncated(to_std(scm_object_to_string(v, SCM_UNDEFINED))) +
                            ": a ,expr is only evaluated inside a backquoted list; write `(" + c.key +
                            " ,...) instead of '(" + c.key + " ,...)");
     if (scm_ilength(v) < 0)
@@ -218,8 +213,7 @@ Value to_value(SCM v, const ValueContext& c, int depth = 0) {
   }
   if (is_matrix(v)) return Value(matrix_to_transform(v));
   throw SceneError(c.loc, c.command, c.key,
-                   "expected a number, string, boolean, vector #(...), matrix or list, found " +
-                       describe_scm(v));
+                   "expected a number, string, boolean, vector #(...), matrix or list, found " + describe_scm(v));
 }
 
 SCM from_value(const Value& v) {
@@ -271,12 +265,10 @@ void parse_arguments(const std::string& cmd, const CallSite& site, SCM args, Par
     SCM key = scm_car(a);
     if (!scm_is_symbol(key))
       throw SceneError(loc, cmd, "",
-                       nth + ": expected a (key value) list starting with a symbol key, found " +
-                           describe_scm(a));
+                       nth + ": expected a (key value) list starting with a symbol key, found " + describe_scm(a));
     const std::string k = to_lower(symbol_name(key));
     const long n = scm_ilength(scm_cdr(a));
-    if (n < 0)
-      throw SceneError(loc, cmd, k, "expected a (key value) list, found the dotted pair " + describe_scm(a));
+    if (n < 0) throw SceneError(loc, cmd, k, "expected a (key value) list, found the dotted pair " + describe_scm(a));
     if (n == 0) throw SceneError(loc, cmd, k, "the key has no value: expected (" + k + " value)");
     const ValueContext vc{loc, cmd, k};
     for (SCM p = scm_cdr(a); scm_is_pair(p); p = scm_cdr(p)) {
@@ -285,8 +277,7 @@ void parse_arguments(const std::string& cmd, const CallSite& site, SCM args, Par
         // ("objID" "param" value), catalogue §1 conventions.
         const auto* l = std::get_if<ValueList>(&v.v);
         if (!l || l->size() != 3 || !(*l)[0].is_string() || !(*l)[1].is_string())
-          throw SceneError(loc, cmd, k,
-                           "expected (\"objID\" \"param\" value), found " + describe_scm(scm_car(p)));
+          throw SceneError(loc, cmd, k, "expected (\"objID\" \"param\" value), found " + describe_scm(scm_car(p)));
       }
       ps.add(k, std::move(v), loc);
     }
@@ -296,29 +287,27 @@ void parse_arguments(const std::string& cmd, const CallSite& site, SCM args, Par
 SCM record_command(const std::string& cmd, const CallSite& site, SCM args) {
   EvalContext& ctx = context();
   if (ctx.desc.calls.size() >= ctx.opts->max_calls)
-    throw SceneError(site.loc, cmd, "",
-                     "the scene made more than " + std::to_string(ctx.opts->max_calls) +
-                         " command calls (runaway loop?)");
+    throw SceneError(
+        site.loc, cmd, "",
+        "the scene made more than " + std::to_string(ctx.opts->max_calls) + " command calls (runaway loop?)");
   ParamSet ps(cmd, site.loc);
   parse_arguments(cmd, site, args, ps);
 
   const auto ids = ps.find_all("id");
-  if (ids.size() > 1)
-    throw SceneError(ids[1]->loc, cmd, "id", "the id is given more than once");
+  if (ids.size() > 1) throw SceneError(ids[1]->loc, cmd, "id", "the id is given more than once");
   const Param* idp = ids.empty() ? nullptr : ids[0];
   if (idp && !idp->value.is_string())
     throw SceneError(idp->loc, cmd, "id", "expected a string, found " + idp->value.describe());
 
   if (is_target_command(cmd)) {
     if (!idp)
-      throw SceneError(site.loc, cmd, "id",
-                       "this key is required: the id of the object to " +
-                           std::string(cmd == "set-parameter" ? "change" : "print"));
+      throw SceneError(
+          site.loc, cmd, "id",
+          "this key is required: the id of the object to " + std::string(cmd == "set-parameter" ? "change" : "print"));
     const std::string& id = std::get<std::string>(idp->value.v);
     if (!ctx.ids.count(id))
       throw SceneError(idp->loc, cmd, "id",
-                       "no object with id \"" + id + "\" has been defined before" +
-                           did_you_mean(id, known_ids(ctx)));
+                       "no object with id \"" + id + "\" has been defined before" + did_you_mean(id, known_ids(ctx)));
     ctx.desc.calls.push_back(CommandCall{cmd, std::move(ps)});
     return scm_from_utf8_stringn(id.data(), id.size());
   }
@@ -329,9 +318,9 @@ SCM record_command(const std::string& cmd, const CallSite& site, SCM args) {
     auto it = ctx.ids.find(id);
     if (it != ctx.ids.end()) {
       const CommandCall& prev = ctx.desc.calls[it->second];
-      throw SceneError(idp->loc, cmd, "id",
-                       "the id \"" + id + "\" is already used by the " + prev.command + " at " +
-                           prev.params.loc().str());
+      throw SceneError(
+          idp->loc, cmd, "id",
+          "the id \"" + id + "\" is already used by the " + prev.command + " at " + prev.params.loc().str());
     }
   } else {
     // GeoViS names objects without an id "unknownN" (catalogue §1 conventions).
@@ -353,8 +342,8 @@ double number_arg(SCM v, const std::string& cmd, const SourceLoc& loc, const std
   return scm_to_double(v);
 }
 
-std::vector<double> vector_arg(SCM v, const std::string& cmd, const SourceLoc& loc,
-                               std::initializer_list<size_t> sizes, const std::string& what) {
+std::vector<double> vector_arg(SCM v, const std::string& cmd, const SourceLoc& loc, std::initializer_list<size_t> sizes,
+                               const std::string& what) {
   if (!scm_is_vector(v)) throw SceneError(loc, cmd, "", "expected " + what + ", found " + describe_scm(v));
   const size_t n = scm_c_vector_length(v);
   bool ok = false;
@@ -364,8 +353,9 @@ std::vector<double> vector_arg(SCM v, const std::string& cmd, const SourceLoc& l
   for (size_t i = 0; i < n; ++i) {
     SCM e = scm_c_vector_ref(v, i);
     if (!scm_is_real(e))
-      throw SceneError(loc, cmd, "", "expected " + what + ", found " + describe_scm(v) +
-                                         " (entry " + std::to_string(i + 1) + " is not a number)");
+      throw SceneError(
+          loc, cmd, "",
+          "expected " + what + ", found " + describe_scm(v) + " (entry " + std::to_string(i + 1) + " is not a number)");
     out[i] = scm_to_double(e);
   }
   return out;
@@ -378,13 +368,14 @@ SCM make_vector(const std::vector<double>& x) { return from_value(Value(x)); }
 SCM finish_transform(Transform t, const std::vector<SCM>& a, size_t next, const std::string& cmd,
                      const SourceLoc& loc) {
   if (a.size() > next + 1)
-    throw SceneError(loc, cmd, "", "too many arguments: expected at most one trailing matrix, found " +
-                                       std::to_string(a.size() - next) + " more arguments");
+    throw SceneError(loc, cmd, "",
+                     "too many arguments: expected at most one trailing matrix, found " +
+                         std::to_string(a.size() - next) + " more arguments");
   if (a.size() == next + 1) {
     if (!is_matrix(a[next]))
-      throw SceneError(loc, cmd, "",
-                       "expected a trailing matrix (from translate-obj, rotate-obj or scale-obj), found " +
-                           describe_scm(a[next]));
+      throw SceneError(
+          loc, cmd, "",
+          "expected a trailing matrix (from translate-obj, rotate-obj or scale-obj), found " + describe_scm(a[next]));
     const Transform inner = matrix_to_transform(a[next]);
     if (inner.dim != t.dim)
       throw SceneError(loc, cmd, "",
@@ -455,10 +446,14 @@ SCM rotate_obj(const std::vector<SCM>& a, const SourceLoc& loc) {
   if (scm_is_string(a[0]) || scm_is_symbol(a[0])) {
     const std::string axis = to_lower(scm_is_string(a[0]) ? to_std(a[0]) : symbol_name(a[0]));
     std::array<double, 3> n{0, 0, 0};
-    if (axis == "x") n = {1, 0, 0};
-    else if (axis == "y") n = {0, 1, 0};
-    else if (axis == "z") n = {0, 0, 1};
-    else throw SceneError(loc, cmd, "", "expected the axis \"x\", \"y\" or \"z\", found " + describe_scm(a[0]));
+    if (axis == "x")
+      n = {1, 0, 0};
+    else if (axis == "y")
+      n = {0, 1, 0};
+    else if (axis == "z")
+      n = {0, 0, 1};
+    else
+      throw SceneError(loc, cmd, "", "expected the axis \"x\", \"y\" or \"z\", found " + describe_scm(a[0]));
     return finish_transform(rotation3(n, angle), a, 2, cmd, loc);
   }
   if (scm_is_vector(a[0])) {
@@ -474,8 +469,8 @@ SCM rotate_obj(const std::vector<SCM>& a, const SourceLoc& loc) {
 
 SCM vec_n(const std::string& cmd, size_t n, const std::vector<SCM>& a, const SourceLoc& loc) {
   if (a.size() != n)
-    throw SceneError(loc, cmd, "", "expected " + std::to_string(n) + " numbers, found " +
-                                       std::to_string(a.size()) + " arguments");
+    throw SceneError(loc, cmd, "",
+                     "expected " + std::to_string(n) + " numbers, found " + std::to_string(a.size()) + " arguments");
   std::vector<double> x(n);
   for (size_t i = 0; i < n; ++i) x[i] = number_arg(a[i], cmd, loc, "a number as argument " + std::to_string(i + 1));
   return make_vector(x);
@@ -545,8 +540,9 @@ SCM m4d_solverlist() {
 SCM getenv_cmd(const std::vector<SCM>& a, const SourceLoc& loc) {
   const std::string cmd = "getenv";
   if (a.size() != 1 || !scm_is_string(a[0]))
-    throw SceneError(loc, cmd, "", "expected one string (the variable name), found " +
-                                       (a.empty() ? std::string("no argument") : describe_scm(a[0])));
+    throw SceneError(loc, cmd, "",
+                     "expected one string (the variable name), found " +
+                         (a.empty() ? std::string("no argument") : describe_scm(a[0])));
   const std::string name = to_std(a[0]);
   if (!context().opts->trusted && !scene_may_read_env(name))
     throw SceneError(loc, cmd, "",
@@ -570,9 +566,12 @@ thread_local int t_exit_code = 0;
 SCM exit_cmd(const std::vector<SCM>& a, const SourceLoc& loc) {
   int code = 0;
   if (!a.empty()) {
-    if (scm_is_bool(a[0])) code = scm_is_true(a[0]) ? 0 : 1;
-    else if (scm_is_signed_integer(a[0], -255, 255)) code = scm_to_int(a[0]);
-    else throw SceneError(loc, "exit", "", "expected an exit code (integer or boolean), found " + describe_scm(a[0]));
+    if (scm_is_bool(a[0]))
+      code = scm_is_true(a[0]) ? 0 : 1;
+    else if (scm_is_signed_integer(a[0], -255, 255))
+      code = scm_to_int(a[0]);
+    else
+      throw SceneError(loc, "exit", "", "expected an exit code (integer or boolean), found " + describe_scm(a[0]));
   }
   t_exit_requested = true;
   t_exit_code = code;
@@ -700,8 +699,8 @@ fs::path find_load_file(const EvalContext& ctx, const std::string& name, const S
     for (const auto& r : roots) below = below || is_below(p, r);
     if (!allowed || !below)
       throw SceneError(loc, "load", "",
-                       what + "not allowed: a scene may load only .scm files below its own folder (" +
-                           ctx.desc.dir + ") and the --scene-path folders, and " + p.string() + " is " +
+                       what + "not allowed: a scene may load only .scm files below its own folder (" + ctx.desc.dir +
+                           ") and the --scene-path folders, and " + p.string() + " is " +
                            (allowed ? "outside them" : "not a .scm file") + " (" + kSandboxHint + ")");
   }
   if (!fs::is_regular_file(p, ec))
@@ -768,8 +767,7 @@ void define_command_primitives() {
   scm_c_define_gsubr("%gv-enter-file", 1, 0, 0, reinterpret_cast<scm_t_subr>(gv_enter_file));
   scm_c_define_gsubr("%gv-leave-file", 0, 0, 0, reinterpret_cast<scm_t_subr>(gv_leave_file));
   scm_c_define_gsubr("%gv-note-define", 1, 0, 0, reinterpret_cast<scm_t_subr>(gv_note_define));
-  scm_c_define_gsubr("%gv-note-override-used", 1, 0, 0,
-                     reinterpret_cast<scm_t_subr>(gv_note_override_used));
+  scm_c_define_gsubr("%gv-note-override-used", 1, 0, 0, reinterpret_cast<scm_t_subr>(gv_note_override_used));
   scm_c_define_gsubr("%gv-define-error", 3, 0, 0, reinterpret_cast<scm_t_subr>(gv_define_error));
 }
 

@@ -19,9 +19,9 @@ extern const char* const kPreludeSource;
 
 /// One file being evaluated (the scene, or a file it loads): where its current top-level form is.
 struct FileFrame {
-  std::string file;  ///< as it appears in messages
-  std::string dir;   ///< base folder for `load`
-  int form_line = 0; ///< 1-based line of the top-level form being evaluated
+  std::string file;   ///< as it appears in messages
+  std::string dir;    ///< base folder for `load`
+  int form_line = 0;  ///< 1-based line of the top-level form being evaluated
 };
 
 /// State of the one evaluation in progress on this thread (evaluations are serialised).
@@ -32,7 +32,7 @@ struct EvalContext {
   std::unordered_map<std::string, size_t> ids;  ///< object id -> index of its call in desc.calls
   std::vector<std::string> defines;             ///< top-level define names seen, in order
   std::set<std::string> used_overrides;
-  std::exception_ptr pending;                   ///< C++ error raised inside a primitive
+  std::exception_ptr pending;  ///< C++ error raised inside a primitive
   int generated_ids = 0;
 };
 

@@ -13,8 +13,8 @@ namespace geovis {
 
 template <class T>
 struct Dual {
-  T v{};      ///< value
-  T d[4]{};   ///< partial derivatives with respect to x^0..x^3
+  T v{};     ///< value
+  T d[4]{};  ///< partial derivatives with respect to x^0..x^3
 
   constexpr Dual() = default;
   constexpr Dual(double x) : v(x) {}  // NOLINT: implicit from constants, as for double
@@ -93,24 +93,95 @@ inline Dual<T> chain(const Dual<T>& a, const T& fv, const T& dfv) {
 // Plain-double overloads so generic metric code can call value_of etc. on any scalar.
 inline double value_of(double x) { return x; }
 template <class T>
-inline double value_of(const Dual<T>& x) { return value_of(x.v); }
+inline double value_of(const Dual<T>& x) {
+  return value_of(x.v);
+}
 
-template <class T> inline Dual<T> sqrt(const Dual<T>& a) { using std::sqrt; T s = sqrt(a.v); return chain(a, s, T(0.5) / s); }
-template <class T> inline Dual<T> sin(const Dual<T>& a) { using std::sin; using std::cos; return chain(a, sin(a.v), cos(a.v)); }
-template <class T> inline Dual<T> cos(const Dual<T>& a) { using std::sin; using std::cos; return chain(a, cos(a.v), -sin(a.v)); }
-template <class T> inline Dual<T> tan(const Dual<T>& a) { using std::tan; T t = tan(a.v); return chain(a, t, T(1.0) + t * t); }
-template <class T> inline Dual<T> exp(const Dual<T>& a) { using std::exp; T e = exp(a.v); return chain(a, e, e); }
-template <class T> inline Dual<T> log(const Dual<T>& a) { using std::log; return chain(a, log(a.v), T(1.0) / a.v); }
-template <class T> inline Dual<T> sinh(const Dual<T>& a) { using std::sinh; using std::cosh; return chain(a, sinh(a.v), cosh(a.v)); }
-template <class T> inline Dual<T> cosh(const Dual<T>& a) { using std::sinh; using std::cosh; return chain(a, cosh(a.v), sinh(a.v)); }
-template <class T> inline Dual<T> tanh(const Dual<T>& a) { using std::tanh; T t = tanh(a.v); return chain(a, t, T(1.0) - t * t); }
-template <class T> inline Dual<T> atan(const Dual<T>& a) { using std::atan; return chain(a, atan(a.v), T(1.0) / (T(1.0) + a.v * a.v)); }
-template <class T> inline Dual<T> asin(const Dual<T>& a) { using std::asin; using std::sqrt; return chain(a, asin(a.v), T(1.0) / sqrt(T(1.0) - a.v * a.v)); }
-template <class T> inline Dual<T> acos(const Dual<T>& a) { using std::acos; using std::sqrt; return chain(a, acos(a.v), T(-1.0) / sqrt(T(1.0) - a.v * a.v)); }
-template <class T> inline Dual<T> pow(const Dual<T>& a, double p) { using std::pow; return chain(a, pow(a.v, p), T(p) * pow(a.v, p - 1.0)); }
-template <class T> inline Dual<T> abs(const Dual<T>& a) { return a.v < 0 ? -a : a; }
-template <class T> inline Dual<T> fabs(const Dual<T>& a) { return a.v < 0 ? -a : a; }
-template <class T> inline Dual<T> atan2(const Dual<T>& y, const Dual<T>& x) {
+template <class T>
+inline Dual<T> sqrt(const Dual<T>& a) {
+  using std::sqrt;
+  T s = sqrt(a.v);
+  return chain(a, s, T(0.5) / s);
+}
+template <class T>
+inline Dual<T> sin(const Dual<T>& a) {
+  using std::cos;
+  using std::sin;
+  return chain(a, sin(a.v), cos(a.v));
+}
+template <class T>
+inline Dual<T> cos(const Dual<T>& a) {
+  using std::cos;
+  using std::sin;
+  return chain(a, cos(a.v), -sin(a.v));
+}
+template <class T>
+inline Dual<T> tan(const Dual<T>& a) {
+  using std::tan;
+  T t = tan(a.v);
+  return chain(a, t, T(1.0) + t * t);
+}
+template <class T>
+inline Dual<T> exp(const Dual<T>& a) {
+  using std::exp;
+  T e = exp(a.v);
+  return chain(a, e, e);
+}
+template <class T>
+inline Dual<T> log(const Dual<T>& a) {
+  using std::log;
+  return chain(a, log(a.v), T(1.0) / a.v);
+}
+template <class T>
+inline Dual<T> sinh(const Dual<T>& a) {
+  using std::cosh;
+  using std::sinh;
+  return chain(a, sinh(a.v), cosh(a.v));
+}
+template <class T>
+inline Dual<T> cosh(const Dual<T>& a) {
+  using std::cosh;
+  using std::sinh;
+  return chain(a, cosh(a.v), sinh(a.v));
+}
+template <class T>
+inline Dual<T> tanh(const Dual<T>& a) {
+  using std::tanh;
+  T t = tanh(a.v);
+  return chain(a, t, T(1.0) - t * t);
+}
+template <class T>
+inline Dual<T> atan(const Dual<T>& a) {
+  using std::atan;
+  return chain(a, atan(a.v), T(1.0) / (T(1.0) + a.v * a.v));
+}
+template <class T>
+inline Dual<T> asin(const Dual<T>& a) {
+  using std::asin;
+  using std::sqrt;
+  return chain(a, asin(a.v), T(1.0) / sqrt(T(1.0) - a.v * a.v));
+}
+template <class T>
+inline Dual<T> acos(const Dual<T>& a) {
+  using std::acos;
+  using std::sqrt;
+  return chain(a, acos(a.v), T(-1.0) / sqrt(T(1.0) - a.v * a.v));
+}
+template <class T>
+inline Dual<T> pow(const Dual<T>& a, double p) {
+  using std::pow;
+  return chain(a, pow(a.v, p), T(p) * pow(a.v, p - 1.0));
+}
+template <class T>
+inline Dual<T> abs(const Dual<T>& a) {
+  return a.v < 0 ? -a : a;
+}
+template <class T>
+inline Dual<T> fabs(const Dual<T>& a) {
+  return a.v < 0 ? -a : a;
+}
+template <class T>
+inline Dual<T> atan2(const Dual<T>& y, const Dual<T>& x) {
   using std::atan2;
   Dual<T> r;
   r.v = atan2(y.v, x.v);

@@ -20,7 +20,8 @@ namespace geovis {
 #if defined(__GNUC__)
 [[gnu::always_inline]]
 #endif
-inline void fast_sincos(double x, double& s, double& c) {
+inline void
+fast_sincos(double x, double& s, double& c) {
   if (!(std::fabs(x) < 1e5)) {
     s = std::sin(x);
     c = std::cos(x);
@@ -33,12 +34,10 @@ inline void fast_sincos(double x, double& s, double& c) {
   const double r = ((x - n * kP1) - n * kP2) - n * kP3;
   const double z = r * r;
   // (−1)^k / (2k+1)!  and  (−1)^k / (2k)!
-  constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040, s9 = 1.0 / 362880,
-                   s11 = -1.0 / 39916800, s13 = 1.0 / 6227020800.0, s15 = -1.0 / 1307674368000.0,
-                   s17 = 1.0 / 355687428096000.0;
-  constexpr double c4 = 1.0 / 24, c6 = -1.0 / 720, c8 = 1.0 / 40320, c10 = -1.0 / 3628800,
-                   c12 = 1.0 / 479001600, c14 = -1.0 / 87178291200.0, c16 = 1.0 / 20922789888000.0,
-                   c18 = -1.0 / 6402373705728000.0;
+  constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040, s9 = 1.0 / 362880, s11 = -1.0 / 39916800,
+                   s13 = 1.0 / 6227020800.0, s15 = -1.0 / 1307674368000.0, s17 = 1.0 / 355687428096000.0;
+  constexpr double c4 = 1.0 / 24, c6 = -1.0 / 720, c8 = 1.0 / 40320, c10 = -1.0 / 3628800, c12 = 1.0 / 479001600,
+                   c14 = -1.0 / 87178291200.0, c16 = 1.0 / 20922789888000.0, c18 = -1.0 / 6402373705728000.0;
   // Estrin's scheme: the right-hand side of a geodesic is one long dependency chain from θ to
   // the next stage, so the latency of the polynomials matters more than their operation count
   // (depth 4 multiply-adds instead of Horner's 8).

@@ -116,8 +116,8 @@ void hermite_interpolate(const StepView& st, double s, Vec4& x, Vec4& k) {
 
 // The integrators instantiated once for all metrics (metric_kernel.h): the geodesic system with the
 // steppers MetricCRTP does not compile per metric; the other systems in transport.cpp and jacobi.cpp.
-GeodesicResult integrate_geodesic_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
-                                            double lambda0, StepCallback cb) {
+GeodesicResult integrate_geodesic_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y, double lambda0,
+                                            StepCallback cb) {
   GeodesicRHS<MetricKernel> f{k};
   return integrate_system(k, f, cfg, y, lambda0, cb);
 }

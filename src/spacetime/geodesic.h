@@ -25,18 +25,18 @@ GeodesicType parse_geodesic_type(const std::string& s);  ///< throws Error listi
 
 /// Our integrators (catalogue §13 maps GeoViS/Motion4D names onto these).
 enum class SolverKind {
-  RK2,              ///< Heun-Euler embedded 2(1)
-  RK4,              ///< classical Runge-Kutta, fixed step
-  CashKarp45,       ///< Cash & Karp (1990) embedded 4(5)
-  Fehlberg45,       ///< Runge-Kutta-Fehlberg 4(5)
-  DormandPrince54,  ///< Dormand & Prince (1980) 5(4), FSAL
-  DormandPrince853, ///< Hairer's DOP853: 8th order, 5th and 3rd order error estimate
-  BulirschStoer,    ///< Gragg-Bulirsch-Stoer extrapolation with modified midpoint
+  RK2,                  ///< Heun-Euler embedded 2(1)
+  RK4,                  ///< classical Runge-Kutta, fixed step
+  CashKarp45,           ///< Cash & Karp (1990) embedded 4(5)
+  Fehlberg45,           ///< Runge-Kutta-Fehlberg 4(5)
+  DormandPrince54,      ///< Dormand & Prince (1980) 5(4), FSAL
+  DormandPrince853,     ///< Hairer's DOP853: 8th order, 5th and 3rd order error estimate
+  BulirschStoer,        ///< Gragg-Bulirsch-Stoer extrapolation with modified midpoint
   RungeKuttaNystrom86,  ///< Dormand-El-Mikkawy-Prince RKN 8(6): y'' = f(y) only (separable Kerr equations)
 };
 
 struct SolverInfo {
-  std::string name;            ///< name accepted in scenes (GeoViS nickname or ours)
+  std::string name;  ///< name accepted in scenes (GeoViS nickname or ours)
   SolverKind kind;
   std::string description;
 };
@@ -62,13 +62,13 @@ constexpr int kMaxSystemDim = 32;
 struct SolverConfig {
   SolverKind kind = SolverKind::CashKarp45;
   GeodesicType type = GeodesicType::Lightlike;
-  double eps_abs = 1e-4;   ///< GeoViS default
-  double eps_rel = 0.0;    ///< GeoViS default
-  bool step_ctrl = true;   ///< false: fixed step `step_size`
-  double step_size = 0.01; ///< initial (or fixed) step |h|
-  double step_max = 1e10;  ///< maximal |h|
-  double step_min = 1e-14; ///< below this the integration stops with StepUnderflow
-  int max_steps = 3000;    ///< maximal number of accepted steps (GeoViS maxNumPoints)
+  double eps_abs = 1e-4;    ///< GeoViS default
+  double eps_rel = 0.0;     ///< GeoViS default
+  bool step_ctrl = true;    ///< false: fixed step `step_size`
+  double step_size = 0.01;  ///< initial (or fixed) step |h|
+  double step_max = 1e10;   ///< maximal |h|
+  double step_min = 1e-14;  ///< below this the integration stops with StepUnderflow
+  int max_steps = 3000;     ///< maximal number of accepted steps (GeoViS maxNumPoints)
   double lambda_max = std::numeric_limits<double>::infinity();  ///< maximal |affine parameter|
   /// Direction of integration in the affine parameter: +1 forward, -1 backward.
   double direction = 1.0;
@@ -131,10 +131,10 @@ using StepCallback = FunctionRef<StepAction(const StepView&)>;
 
 struct GeodesicResult {
   StopReason reason = StopReason::None;
-  int steps = 0;          ///< accepted steps
-  int rejected = 0;       ///< rejected steps
-  long rhs_evals = 0;     ///< right-hand-side evaluations
-  double lambda = 0;      ///< final affine parameter
+  int steps = 0;                ///< accepted steps
+  int rejected = 0;             ///< rejected steps
+  long rhs_evals = 0;           ///< right-hand-side evaluations
+  double lambda = 0;            ///< final affine parameter
   double constraint_drift = 0;  ///< final g(k,k) - target
   double escape_radius = 0;     ///< Escaped: the radius (as SolverConfig::escape_radius) at the stop
 };

@@ -159,6 +159,8 @@ inline void add_w(double& acc, const double (&k)[S][N], int i) {
   if constexpr (w[j] != 0.0) acc += w[j] * k[j][i];
 }
 /// Σ_j w[j] k[j][i] over the non-zero weights.
+// clang-format 14 splits an immediately invoked template lambda from its call: not formatted.
+// clang-format off
 template <class Tab, int S, int N, const double (&w)[S]>
 inline double weighted(const double (&k)[S][N], int i) {
   double acc = 0.0;
@@ -200,6 +202,7 @@ inline void all_stages(F& f, const double* y, double h, double (&k)[S][N]) {
     (stage<Tab, s + 1, S, N>(f, y, h, k), ...);
   }(std::make_integer_sequence<int, S - 1>{});
 }
+// clang-format on
 
 }  // namespace rk_detail
 
@@ -295,8 +298,8 @@ struct ExplicitRK {
   StepController<(Tab::kErrExp > 0 ? Tab::kErrExp : 1)> control;
 
   template <int N, class F>
-  bool attempt(F& f, const double* y, const double* dy, double h, double* yout, double* dyout,
-               const ErrorScale& tol, long& evals, double& err) {
+  bool attempt(F& f, const double* y, const double* dy, double h, double* yout, double* dyout, const ErrorScale& tol,
+               long& evals, double& err) {
     constexpr int S = Tab::S;
     double k[S][N];
     for (int i = 0; i < N; ++i) k[0][i] = dy[i];
@@ -349,16 +352,16 @@ struct CashKarpTableau {
   static constexpr int S = 6, kErrExp = 5;
   static constexpr bool kFsal = false;
   static constexpr double c[6] = {0, 1.0 / 5, 3.0 / 10, 3.0 / 5, 1, 7.0 / 8};
-  static constexpr double a[6][6] = {
-      {0, 0, 0, 0, 0, 0},
-      {1.0 / 5, 0, 0, 0, 0, 0},
-      {3.0 / 40, 9.0 / 40, 0, 0, 0, 0},
-      {3.0 / 10, -9.0 / 10, 6.0 / 5, 0, 0, 0},
-      {-11.0 / 54, 5.0 / 2, -70.0 / 27, 35.0 / 27, 0, 0},
-      {1631.0 / 55296, 175.0 / 512, 575.0 / 13824, 44275.0 / 110592, 253.0 / 4096, 0}};
+  static constexpr double a[6][6] = {{0, 0, 0, 0, 0, 0},
+                                     {1.0 / 5, 0, 0, 0, 0, 0},
+                                     {3.0 / 40, 9.0 / 40, 0, 0, 0, 0},
+                                     {3.0 / 10, -9.0 / 10, 6.0 / 5, 0, 0, 0},
+                                     {-11.0 / 54, 5.0 / 2, -70.0 / 27, 35.0 / 27, 0, 0},
+                                     {1631.0 / 55296, 175.0 / 512, 575.0 / 13824, 44275.0 / 110592, 253.0 / 4096, 0}};
   static constexpr double b[6] = {37.0 / 378, 0, 250.0 / 621, 125.0 / 594, 0, 512.0 / 1771};
-  static constexpr double e[6] = {37.0 / 378 - 2825.0 / 27648, 0, 250.0 / 621 - 18575.0 / 48384,
-                                  125.0 / 594 - 13525.0 / 55296, -277.0 / 14336, 512.0 / 1771 - 0.25};
+  static constexpr double e[6] = {
+      37.0 / 378 - 2825.0 / 27648, 0, 250.0 / 621 - 18575.0 / 48384, 125.0 / 594 - 13525.0 / 55296, -277.0 / 14336,
+      512.0 / 1771 - 0.25};
 };
 
 /// Runge–Kutta–Fehlberg 4(5) (Fehlberg 1969; HNW I §II.5): the 4th-order
@@ -368,17 +371,16 @@ struct FehlbergTableau {
   static constexpr int S = 6, kErrExp = 5;
   static constexpr bool kFsal = false;
   static constexpr double c[6] = {0, 1.0 / 4, 3.0 / 8, 12.0 / 13, 1, 1.0 / 2};
-  static constexpr double a[6][6] = {
-      {0, 0, 0, 0, 0, 0},
-      {1.0 / 4, 0, 0, 0, 0, 0},
-      {3.0 / 32, 9.0 / 32, 0, 0, 0, 0},
-      {1932.0 / 2197, -7200.0 / 2197, 7296.0 / 2197, 0, 0, 0},
-      {439.0 / 216, -8.0, 3680.0 / 513, -845.0 / 4104, 0, 0},
-      {-8.0 / 27, 2.0, -3544.0 / 2565, 1859.0 / 4104, -11.0 / 40, 0}};
+  static constexpr double a[6][6] = {{0, 0, 0, 0, 0, 0},
+                                     {1.0 / 4, 0, 0, 0, 0, 0},
+                                     {3.0 / 32, 9.0 / 32, 0, 0, 0, 0},
+                                     {1932.0 / 2197, -7200.0 / 2197, 7296.0 / 2197, 0, 0, 0},
+                                     {439.0 / 216, -8.0, 3680.0 / 513, -845.0 / 4104, 0, 0},
+                                     {-8.0 / 27, 2.0, -3544.0 / 2565, 1859.0 / 4104, -11.0 / 40, 0}};
   static constexpr double b[6] = {25.0 / 216, 0, 1408.0 / 2565, 2197.0 / 4104, -1.0 / 5, 0};
-  static constexpr double e[6] = {25.0 / 216 - 16.0 / 135,       0,
-                                  1408.0 / 2565 - 6656.0 / 12825, 2197.0 / 4104 - 28561.0 / 56430,
-                                  -1.0 / 5 + 9.0 / 50,            -2.0 / 55};
+  static constexpr double e[6] = {
+      25.0 / 216 - 16.0 / 135, 0,        1408.0 / 2565 - 6656.0 / 12825, 2197.0 / 4104 - 28561.0 / 56430,
+      -1.0 / 5 + 9.0 / 50,     -2.0 / 55};
 };
 
 /// Dormand & Prince (1980) RK5(4)7M (HNW I §II.5): 5th order propagated, FSAL (the 7th
@@ -387,17 +389,16 @@ struct DormandPrince54Tableau {
   static constexpr int S = 7, kErrExp = 5;
   static constexpr bool kFsal = true;
   static constexpr double c[7] = {0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1};
-  static constexpr double a[7][7] = {
-      {0, 0, 0, 0, 0, 0, 0},
-      {1.0 / 5, 0, 0, 0, 0, 0, 0},
-      {3.0 / 40, 9.0 / 40, 0, 0, 0, 0, 0},
-      {44.0 / 45, -56.0 / 15, 32.0 / 9, 0, 0, 0, 0},
-      {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729, 0, 0, 0},
-      {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656, 0, 0},
-      {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0}};
+  static constexpr double a[7][7] = {{0, 0, 0, 0, 0, 0, 0},
+                                     {1.0 / 5, 0, 0, 0, 0, 0, 0},
+                                     {3.0 / 40, 9.0 / 40, 0, 0, 0, 0, 0},
+                                     {44.0 / 45, -56.0 / 15, 32.0 / 9, 0, 0, 0, 0},
+                                     {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729, 0, 0, 0},
+                                     {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656, 0, 0},
+                                     {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0}};
   static constexpr double b[7] = {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84, 0};
-  static constexpr double e[7] = {71.0 / 57600,  0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200,
-                                  22.0 / 525, -1.0 / 40};
+  static constexpr double e[7] = {71.0 / 57600,      0,          -71.0 / 16695, 71.0 / 1920,
+                                  -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
 };
 
 /// Hairer's DOP853 (HNW I §II.10; coefficients of dop853.f, Dormand & Prince 1981 8(7)13M
@@ -421,48 +422,53 @@ struct DOP853Tableau {
       {5.26001519587677318785587544488e-2},
       {1.97250569845378994544595329183e-2, 5.91751709536136983633785987549e-2},
       {2.95875854768068491816892993775e-2, 0, 8.87627564304205475450678981324e-2},
-      {2.41365134159266685502369798665e-1, 0, -8.84549479328286085344864962717e-1,
-       9.24834003261792003115737966543e-1},
-      {3.7037037037037037037037037037e-2, 0, 0, 1.70828608729473871279604482173e-1,
-       1.25467687566822425016691814123e-1},
-      {3.7109375e-2, 0, 0, 1.70252211019544039314978060272e-1, 6.02165389804559606850219397283e-2,
-       -1.7578125e-2},
-      {3.70920001185047927108779319836e-2, 0, 0, 1.70383925712239993810214054705e-1,
-       1.07262030446373284651809199168e-1, -1.53194377486244017527936158236e-2,
-       8.27378916381402288758473766002e-3},
+      {2.41365134159266685502369798665e-1, 0, -8.84549479328286085344864962717e-1, 9.24834003261792003115737966543e-1},
+      {3.7037037037037037037037037037e-2, 0, 0, 1.70828608729473871279604482173e-1, 1.25467687566822425016691814123e-1},
+      {3.7109375e-2, 0, 0, 1.70252211019544039314978060272e-1, 6.02165389804559606850219397283e-2, -1.7578125e-2},
+      {3.70920001185047927108779319836e-2, 0, 0, 1.70383925712239993810214054705e-1, 1.07262030446373284651809199168e-1,
+       -1.53194377486244017527936158236e-2, 8.27378916381402288758473766002e-3},
       {6.24110958716075717114429577812e-1, 0, 0, -3.36089262944694129406857109825e0,
-       -8.68219346841726006818189891453e-1, 2.75920996994467083049415600797e1,
-       2.01540675504778934086186788979e1, -4.34898841810699588477366255144e1},
+       -8.68219346841726006818189891453e-1, 2.75920996994467083049415600797e1, 2.01540675504778934086186788979e1,
+       -4.34898841810699588477366255144e1},
       {4.77662536438264365890433908527e-1, 0, 0, -2.48811461997166764192642586468e0,
-       -5.90290826836842996371446475743e-1, 2.12300514481811942347288949897e1,
-       1.52792336328824235832596922938e1, -3.32882109689848629194453265587e1,
-       -2.03312017085086261358222928593e-2},
-      {-9.3714243008598732571704021658e-1, 0, 0, 5.18637242884406370830023853209e0,
-       1.09143734899672957818500254654e0, -8.14978701074692612513997267357e0,
-       -1.85200656599969598641566180701e1, 2.27394870993505042818970056734e1,
+       -5.90290826836842996371446475743e-1, 2.12300514481811942347288949897e1, 1.52792336328824235832596922938e1,
+       -3.32882109689848629194453265587e1, -2.03312017085086261358222928593e-2},
+      {-9.3714243008598732571704021658e-1, 0, 0, 5.18637242884406370830023853209e0, 1.09143734899672957818500254654e0,
+       -8.14978701074692612513997267357e0, -1.85200656599969598641566180701e1, 2.27394870993505042818970056734e1,
        2.49360555267965238987089396762e0, -3.0467644718982195003823669022e0},
-      {2.27331014751653820792359768449e0, 0, 0, -1.05344954667372501984066689879e1,
-       -2.00087205822486249909675718444e0, -1.79589318631187989172765950534e1,
-       2.79488845294199600508499808837e1, -2.85899827713502369474065508674e0,
-       -8.87285693353062954433549289258e0, 1.23605671757943030647266201528e1,
-       6.43392746015763530355970484046e-1}};
-  static constexpr double b[12] = {5.42937341165687622380535766363e-2, 0, 0, 0, 0,
-                                   4.45031289275240888144113950566e0,  1.89151789931450038304281599044e0,
-                                   -5.8012039600105847814672114227e0,  3.1116436695781989440891606237e-1,
-                                   -1.52160949662516078556178806805e-1, 2.01365400804030348374776537501e-1,
+      {2.27331014751653820792359768449e0, 0, 0, -1.05344954667372501984066689879e1, -2.00087205822486249909675718444e0,
+       -1.79589318631187989172765950534e1, 2.79488845294199600508499808837e1, -2.85899827713502369474065508674e0,
+       -8.87285693353062954433549289258e0, 1.23605671757943030647266201528e1, 6.43392746015763530355970484046e-1}};
+  static constexpr double b[12] = {5.42937341165687622380535766363e-2,
+                                   0,
+                                   0,
+                                   0,
+                                   0,
+                                   4.45031289275240888144113950566e0,
+                                   1.89151789931450038304281599044e0,
+                                   -5.8012039600105847814672114227e0,
+                                   3.1116436695781989440891606237e-1,
+                                   -1.52160949662516078556178806805e-1,
+                                   2.01365400804030348374776537501e-1,
                                    4.47106157277725905176885569043e-2};
   /// 5th-order error weights (b − b̂₅), dop853.f ER1..ER12.
-  static constexpr double e5[12] = {0.1312004499419488073250102996e-01, 0, 0, 0, 0,
-                                    -0.1225156446376204440720569753e+01, -0.4957589496572501915214079952e+00,
-                                    0.1664377182454986536961530415e+01,  -0.3503288487499736816886487290e+00,
-                                    0.3341791187130174790297318841e+00,  0.8192320648511571246570742613e-01,
+  static constexpr double e5[12] = {0.1312004499419488073250102996e-01,
+                                    0,
+                                    0,
+                                    0,
+                                    0,
+                                    -0.1225156446376204440720569753e+01,
+                                    -0.4957589496572501915214079952e+00,
+                                    0.1664377182454986536961530415e+01,
+                                    -0.3503288487499736816886487290e+00,
+                                    0.3341791187130174790297318841e+00,
+                                    0.8192320648511571246570742613e-01,
                                     -0.2235530786388629525884427845e-01};
   /// 3rd-order comparison weights b̂₃ (dop853.f BHH1..3 on stages 1, 9, 12); e3 = b − b̂₃.
   static constexpr double bhh1 = 0.244094488188976377952755905512e+00;
   static constexpr double bhh2 = 0.733846688281611857341361741547e+00;
   static constexpr double bhh3 = 0.220588235294117647058823529412e-01;
-  static constexpr double e3[12] = {b[0] - bhh1, 0, 0, 0, 0, b[5], b[6], b[7], b[8] - bhh2, b[9], b[10],
-                                    b[11] - bhh3};
+  static constexpr double e3[12] = {b[0] - bhh1, 0, 0, 0, 0, b[5], b[6], b[7], b[8] - bhh2, b[9], b[10], b[11] - bhh3};
 };
 
 /// DOP853 step: the general stage machinery with Hairer's combined error estimator
@@ -513,13 +519,13 @@ constexpr int nystrom_positions() {
 /// Dormand, El-Mikkawy & Prince RKN 8(6) (IMA J. Numer. Anal. 7 (1987) 423; the coefficients as
 /// tabulated in GMAT's DormandElMikkawyPrince68): nodes c, position matrix ā (row sums c²/2),
 /// position weights b̄ (8th order), velocity weights b (8th order; a symmetric quadrature on the
-/// nodes 0, .1, .3, .5, .7, .9, 1, exact to degree 7), and the differences to the embedded 6th-order weights, ep = b̄ − b̄̂, ev = b − b̂.
-/// The last stage is evaluated at the new position (ā[8] = b̄): first same as last.
+/// nodes 0, .1, .3, .5, .7, .9, 1, exact to degree 7), and the differences to the embedded 6th-order weights, ep = b̄ −
+/// b̄̂, ev = b − b̂. The last stage is evaluated at the new position (ā[8] = b̄): first same as last.
 struct RKN86Tableau {
   static constexpr int S = 9;
   static constexpr double c[9] = {0.0, 1.0 / 20, 1.0 / 10, 3.0 / 10, 1.0 / 2, 7.0 / 10, 9.0 / 10, 1.0, 1.0};
-  static constexpr double bp[9] = {223.0 / 7938,  0.0, 1175.0 / 8064,   925.0 / 6048, 41.0 / 448,
-                                   925.0 / 14112, 1175.0 / 72576, 0.0, 0.0};
+  static constexpr double bp[9] = {
+      223.0 / 7938, 0.0, 1175.0 / 8064, 925.0 / 6048, 41.0 / 448, 925.0 / 14112, 1175.0 / 72576, 0.0, 0.0};
   static constexpr double a[9][9] = {
       {},
       {1.0 / 800},
@@ -527,20 +533,31 @@ struct RKN86Tableau {
       {9.0 / 200, -9.0 / 100, 9.0 / 100},
       {-66701.0 / 197352, 28325.0 / 32892, -2665.0 / 5482, 2170.0 / 24669},
       {227015747.0 / 304251000, -54897451.0 / 30425100, 12942349.0 / 10141700, -9499.0 / 304251, 539.0 / 9250},
-      {-1131891597.0 / 901789000, 41964921.0 / 12882700, -6663147.0 / 3220675, 270954.0 / 644135,
-       -108.0 / 5875, 114.0 / 1645},
-      {13836959.0 / 3667458, -17731450.0 / 1833729, 1063919505.0 / 156478208, -33213845.0 / 39119552,
-       13335.0 / 28544, -705.0 / 14272, 1645.0 / 57088},
+      {-1131891597.0 / 901789000, 41964921.0 / 12882700, -6663147.0 / 3220675, 270954.0 / 644135, -108.0 / 5875,
+       114.0 / 1645},
+      {13836959.0 / 3667458, -17731450.0 / 1833729, 1063919505.0 / 156478208, -33213845.0 / 39119552, 13335.0 / 28544,
+       -705.0 / 14272, 1645.0 / 57088},
       {bp[0], bp[1], bp[2], bp[3], bp[4], bp[5], bp[6], bp[7]}};
-  static constexpr double bv[9] = {223.0 / 7938,   0.0, 5875.0 / 36288, 4625.0 / 21168, 41.0 / 224,
-                                   4625.0 / 21168, 5875.0 / 36288, 223.0 / 7938,  0.0};
-  static constexpr double ep[9] = {bp[0] - 7987313.0 / 109941300, 0.0, bp[2] - 1610737.0 / 44674560,
-                                   bp[3] - 10023263.0 / 33505920,  bp[4] + 497221.0 / 12409600,
-                                   bp[5] - 10023263.0 / 78180480,  bp[6] - 1610737.0 / 402071040, 0.0, 0.0};
-  static constexpr double ev[9] = {bv[0] - 7987313.0 / 109941300, 0.0, bv[2] - 1610737.0 / 40207104,
-                                   bv[3] - 10023263.0 / 23454144,  bv[4] + 497221.0 / 6204800,
-                                   bv[5] - 10023263.0 / 23454144,  bv[6] - 1610737.0 / 40207104,
-                                   bv[7] + 4251941.0 / 54970650,   -3.0 / 20};
+  static constexpr double bv[9] = {
+      223.0 / 7938, 0.0, 5875.0 / 36288, 4625.0 / 21168, 41.0 / 224, 4625.0 / 21168, 5875.0 / 36288, 223.0 / 7938, 0.0};
+  static constexpr double ep[9] = {bp[0] - 7987313.0 / 109941300,
+                                   0.0,
+                                   bp[2] - 1610737.0 / 44674560,
+                                   bp[3] - 10023263.0 / 33505920,
+                                   bp[4] + 497221.0 / 12409600,
+                                   bp[5] - 10023263.0 / 78180480,
+                                   bp[6] - 1610737.0 / 402071040,
+                                   0.0,
+                                   0.0};
+  static constexpr double ev[9] = {bv[0] - 7987313.0 / 109941300,
+                                   0.0,
+                                   bv[2] - 1610737.0 / 40207104,
+                                   bv[3] - 10023263.0 / 23454144,
+                                   bv[4] + 497221.0 / 6204800,
+                                   bv[5] - 10023263.0 / 23454144,
+                                   bv[6] - 1610737.0 / 40207104,
+                                   bv[7] + 4251941.0 / 54970650,
+                                   -3.0 / 20};
 };
 
 /// One RKN86 step on a system with Nyström structure (nystrom_positions): per stage only the P
@@ -554,14 +571,16 @@ struct RKN86 {
   explicit RKN86(const SolverConfig&) {}
 
   template <int N, class F>
-  bool attempt(F& f, const double* y, const double* dy, double h, double* yout, double* dyout,
-               const ErrorScale& tol, long& evals, double& err) {
+  bool attempt(F& f, const double* y, const double* dy, double h, double* yout, double* dyout, const ErrorScale& tol,
+               long& evals, double& err) {
     constexpr int P = nystrom_positions<F>();
     static_assert(P > 0 && 2 * P <= N, "RKN86 needs a system with Nyström structure");
     constexpr int S = Tab::S;
     double k[S][N];
     for (int i = 0; i < N; ++i) k[0][i] = dy[i];
     const double h2 = h * h;
+    // clang-format 14 splits an immediately invoked template lambda from its call: not formatted.
+    // clang-format off
     auto positions = [&]<int s>(double* tmp) {
       for (int i = 0; i < P; ++i) {
         double acc = 0.0;
@@ -581,6 +600,7 @@ struct RKN86 {
           }(),
           ...);
     }(std::make_integer_sequence<int, S - 1>{});
+    // clang-format on
     evals += S - 1;
     double e[N];
     for (int i = 0; i < P; ++i) {
@@ -667,8 +687,10 @@ struct BulirschStoer {
       // Step proposal from this row: H_j = H·0.94·(0.65/err)^(1/(2j+1)) (ODEX safety factors).
       const double expo = 1.0 / (2 * j + 1);
       double fac = 0.02;  // NaN or infinite error
-      if (e == 0) fac = 4.0;
-      else if (e > 0 && std::isfinite(e)) fac = 0.94 * std::pow(0.65 / e, expo);
+      if (e == 0)
+        fac = 4.0;
+      else if (e > 0 && std::isfinite(e))
+        fac = 0.94 * std::pow(0.65 / e, expo);
       h_row_[j] = std::fabs(H) * std::clamp(fac, 0.02, 4.0);
       err = e;
       if (j == last_row || (j >= kopt_ - 1 && e <= 1.0)) break;
@@ -722,8 +744,7 @@ struct BulirschStoer {
   /// Gragg's modified midpoint rule with smoothing (HNW I §II.9): z_0 = y,
   /// z_1 = y + h f(y), z_{m+1} = z_{m−1} + 2h f(z_m), result ½(z_{n−1} + z_n + h f(z_n)), h = H/n.
   template <int N, class F>
-  static void modified_midpoint(F& f, const double* y, const double* dy, double H, int nsub, double* out,
-                                long& evals) {
+  static void modified_midpoint(F& f, const double* y, const double* dy, double H, int nsub, double* out, long& evals) {
     const double h = H / nsub;
     double zprev[N], z[N], fz[N];
     for (int i = 0; i < N; ++i) {
@@ -743,8 +764,8 @@ struct BulirschStoer {
     for (int i = 0; i < N; ++i) out[i] = 0.5 * (zprev[i] + z[i] + h * fz[i]);
   }
   bool adaptive_;
-  int kopt_ = 4;       ///< target row: accept at kopt−1, kopt or kopt+1
-  int last_row_ = 1;   ///< row at which the last attempt ended
+  int kopt_ = 4;      ///< target row: accept at kopt−1, kopt or kopt+1
+  int last_row_ = 1;  ///< row at which the last attempt ended
   double h_row_[kMaxRows] = {};
 };
 
@@ -782,8 +803,8 @@ struct MetricSystem {
     if constexpr (requires(const Vec4& v, double& r) { m.escapes(v, v, 0.0, r); }) {
       if (c.type != GeodesicType::Lightlike || !(c.escape_radius < INFINITY)) return false;
       const double s = c.direction >= 0 ? 1.0 : -1.0;
-      return m.escapes(Vec4{{y[0], y[1], y[2], y[3]}}, Vec4{{s * y[4], s * y[5], s * y[6], s * y[7]}},
-                       c.escape_radius, radius);
+      return m.escapes(Vec4{{y[0], y[1], y[2], y[3]}}, Vec4{{s * y[4], s * y[5], s * y[6], s * y[7]}}, c.escape_radius,
+                       radius);
     }
     return false;
   }
@@ -929,9 +950,9 @@ void validate_solver_config(const SolverConfig& cfg);
 /// (`bool captured(const SolverConfig&, const double* y) const`: stops with Invalid, the reason
 /// of the break radius the ray is certain to reach; SolverConfig::capture_radius). Before
 /// each attempt: max_steps. A ray that runs into the edge of the validity domain stops with
-/// Invalid once the edge is located to 1/1024 of the first step that crossed it. Step underflow (|h| < step_min or |h| below the resolution of λ)
-/// stops with StepUnderflow, or with Invalid / NotFinite when the rejected trials were leaving the
-/// validity domain / not finite.
+/// Invalid once the edge is located to 1/1024 of the first step that crossed it. Step underflow (|h| < step_min or |h|
+/// below the resolution of λ) stops with StepUnderflow, or with Invalid / NotFinite when the rejected trials were
+/// leaving the validity domain / not finite.
 ///
 /// A system integrated in a parameter σ other than the affine one (Mino time, kerr_mino.h) carries
 /// λ in its state and provides `double affine(const double* y) const` (λ at y) and `double
@@ -940,8 +961,7 @@ void validate_solver_config(const SolverConfig& cfg);
 /// reached by shortening the overshooting step with the secant on λ(σ) until |λ − λ_max| ≤
 /// 1e-12 λ_max (the step that lands there is accepted; λ_max stays a bound, never exceeded).
 template <class St, class Sys>
-GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, double lambda0,
-                              StepCallback cb) {
+GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, double lambda0, StepCallback cb) {
   constexpr int N = Sys::N;
   constexpr bool kOwnAffine = requires(const Sys& s, const double* p) {
     s.affine(p);
@@ -1021,8 +1041,7 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
       clipped = true;
     }
     double err = 0;
-    const bool have_dy1 =
-        stepper.template attempt<N>(sys, y, dy, dir * hstep, y1, dy1, tol, res.rhs_evals, err);
+    const bool have_dy1 = stepper.template attempt<N>(sys, y, dy, dir * hstep, y1, dy1, tol, res.rhs_evals, err);
     bool finite = true;
     for (int i = 0; i < N; ++i) finite = finite && std::isfinite(y1[i]);
     const bool in_domain = finite && sys.valid(y1);
@@ -1041,8 +1060,8 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
       h = in_domain ? stepper.next_step(hstep, err, false, after_reject) : 0.5 * hstep;
       after_reject = true;
       if (h < hmin || h <= 4 * DBL_EPSILON * std::fabs(lambda)) {
-        const StopReason r = !finite ? StopReason::NotFinite
-                                     : (!in_domain ? StopReason::Invalid : StopReason::StepUnderflow);
+        const StopReason r =
+            !finite ? StopReason::NotFinite : (!in_domain ? StopReason::Invalid : StopReason::StepUnderflow);
         return finish(r);
       }
       continue;
@@ -1110,8 +1129,7 @@ GeodesicResult integrate_with(Sys& sys, const SolverConfig& cfg, double* y_io, d
 
 /// Chooses the stepper for cfg.kind (dispatch once per geodesic).
 template <class Sys>
-GeodesicResult integrate_dispatch(Sys& sys, const SolverConfig& cfg, double* y, double lambda0,
-                                  StepCallback cb) {
+GeodesicResult integrate_dispatch(Sys& sys, const SolverConfig& cfg, double* y, double lambda0, StepCallback cb) {
   validate_solver_config(cfg);
   switch (cfg.kind) {
     case SolverKind::RK2: return integrate_with<ExplicitRK<HeunEulerTableau>>(sys, cfg, y, lambda0, cb);
@@ -1139,8 +1157,7 @@ GeodesicResult integrate_dispatch(Sys& sys, const SolverConfig& cfg, double* y, 
 /// Integrates geodesic system f (GeodesicRHS/TransportRHS/JacobiRHS) on metric m (used by
 /// MetricCRTP::integrate).
 template <class M, class F>
-GeodesicResult integrate_system(const M& m, F& f, const SolverConfig& cfg, double* y, double lambda0,
-                                StepCallback cb) {
+GeodesicResult integrate_system(const M& m, F& f, const SolverConfig& cfg, double* y, double lambda0, StepCallback cb) {
   MetricSystem<M, F> sys{m, f};
   return integrate_dispatch(sys, cfg, y, lambda0, cb);
 }

@@ -123,8 +123,8 @@ JacobiParams trace_jacobi(const Metric& m, const SolverConfig& cfg_in, const Vec
   return jacobi_params_from_state(m, y, r.lambda);
 }
 
-GeodesicResult integrate_jacobi_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
-                                          double lambda0, StepCallback cb) {
+GeodesicResult integrate_jacobi_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y, double lambda0,
+                                          StepCallback cb) {
   JacobiRHS<MetricKernel> f{k};
   return integrate_system(k, f, cfg, y, lambda0, cb);
 }

@@ -75,8 +75,8 @@ void kerr_mino_to_bl(const KerrMinoConstants& c, const PolarOffset& polar, const
   const double sigma = r * r + c.a2 * z * z, isig = 1.0 / sigma;
   // dθ/dσ = −s·z'/|sin θ|. For L = 0, Z = (1 − z²)(Q + Az²), so |z'|/|sin θ| = √(Q + Az²): used
   // instead, since near the axis, which such a ray passes, 1 − z² has lost its leading digits.
-  const double dth = c.axis ? -b.sign * std::copysign(std::sqrt(std::max(0.0, c.Q + c.A * z * z)), dz)
-                            : -b.sign * dz / s_abs;
+  const double dth =
+      c.axis ? -b.sign * std::copysign(std::sqrt(std::max(0.0, c.Q + c.A * z * z)), dz) : -b.sign * dz / s_abs;
   const double dr = -dw * r * r;  // dr/dσ
   x = Vec4{{y[I::T], r, b.offset + b.sign * polar.acos_z(y[I::Z]), y[I::PHI]}};
   k = Vec4{{dy[I::T] * isig, dr * isig, dth * isig, dy[I::PHI] * isig}};
@@ -151,7 +151,7 @@ GeodesicResult integrate_kerr_mino(double M, double a, double r_break, const Sol
     return StepAction::Continue;
   };
   // Without a caller's callback only the axis passages need watching (the BL view is not built).
-  const GeodesicResult res = cb   ? integrate_dispatch(sys, cfg, y, lambda0, on_step)
+  const GeodesicResult res = cb       ? integrate_dispatch(sys, cfg, y, lambda0, on_step)
                              : c.axis ? integrate_dispatch(sys, cfg, y, lambda0, axis_only)
                                       : integrate_dispatch(sys, cfg, y, lambda0, StepCallback{});
   double dy[KerrMinoRHS::N];

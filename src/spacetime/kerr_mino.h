@@ -123,8 +123,8 @@ struct KerrMinoConstants {
     double b[5] = {p0, p0 + 0.25 * p1, p0 + 0.5 * p1 + p2 / 6.0, p0 + 0.75 * p1 + 0.5 * p2 + 0.25 * p3,
                    p0 + p1 + p2 + p3 + p4};
     const double rr = r_hi;
-    const double size = (((std::fabs(c4) * rr + std::fabs(c3)) * rr + std::fabs(c2)) * rr + std::fabs(c1)) * rr +
-                        std::fabs(c0);
+    const double size =
+        (((std::fabs(c4) * rr + std::fabs(c3)) * rr + std::fabs(c2)) * rr + std::fabs(c1)) * rr + std::fabs(c0);
     const double floor = 1e-12 * size;
     if (!(b[0] > floor && b[4] > floor)) return false;  // R at the ends (and NaN)
     // Depth-first subdivision with an explicit stack (no heap): each entry one piece's coefficients.
@@ -215,7 +215,7 @@ struct KerrMinoRHS {
     const double D = 1.0 - 2.0 * k.M * w + k.a2 * w2;  // Δ/r²
     const double P = k.E + k.c * w2;                   // P/r²
     const double muK = k.mu2 + k.K * w2;
-    const double s2 = polar.sin2(y[Z]);                // sin²θ
+    const double s2 = polar.sin2(y[Z]);  // sin²θ
     // One division: 1/(w² D s²) gives 1/D, 1/w² and 1/sin²θ.
     double inv, iD, iw2, is2;
     if (k.axis) {
@@ -360,8 +360,8 @@ struct KerrMinoSystem {
   }
   bool inside(const SolverConfig& c, const double* y) const {
     const double w = y[I::W];
-    if (!(w >= w_lo && w <= w_hi && y[I::T] >= c.box_ll[0] && y[I::T] <= c.box_ur[0] &&
-          y[I::PHI] >= c.box_ll[3] && y[I::PHI] <= c.box_ur[3]))
+    if (!(w >= w_lo && w <= w_hi && y[I::T] >= c.box_ll[0] && y[I::T] <= c.box_ur[0] && y[I::PHI] >= c.box_ll[3] &&
+          y[I::PHI] <= c.box_ur[3]))
       return false;
     if (!theta_boxed) return true;
     const double th = branch->offset + branch->sign * f.polar.acos_z(y[I::Z]);

@@ -51,8 +51,8 @@ double Metric::param(std::string_view name) const {
   std::vector<std::string> names;
   for (const auto& p : info_.params) names.push_back(p.name);
   names.push_back(kHorizonEpsKey);
-  throw Error("metric " + info_.name + " has no parameter \"" + std::string(name) + "\"" +
-              did_you_mean(name, names) + " (parameters: " + (names.empty() ? "none" : join(names)) + ")");
+  throw Error("metric " + info_.name + " has no parameter \"" + std::string(name) + "\"" + did_you_mean(name, names) +
+              " (parameters: " + (names.empty() ? "none" : join(names)) + ")");
 }
 
 void Metric::set_param(std::string_view name, double value) { set_params({{std::string(name), value}}); }
@@ -89,8 +89,8 @@ void Metric::set_params(const std::vector<std::pair<std::string, double>>& value
       horizon_eps_ = old_eps;
       std::ostringstream os;
       os << "metric " << info_.name << ": parameter " << spec.name << " = " << value
-         << " is out of range; expected a value in " << (spec.min_open ? "(" : "[") << spec.min << ", "
-         << spec.max << (spec.max_open ? ")" : "]") << " (" << spec.doc << ")";
+         << " is out of range; expected a value in " << (spec.min_open ? "(" : "[") << spec.min << ", " << spec.max
+         << (spec.max_open ? ")" : "]") << " (" << spec.doc << ")";
       throw Error(os.str());
     }
     values_[i] = value;
@@ -248,9 +248,7 @@ int Metric::to_pseudo_cartesian(const Vec4& x, Vec3& p) const {
       fast_sincos(x[2], sp, cp);
       p = {x[1] * cp, x[1] * sp, x[3]};
       return 0;
-    default:
-      p = {x[1], x[2], x[3]};
-      return 0;
+    default: p = {x[1], x[2], x[3]}; return 0;
   }
 }
 
@@ -259,7 +257,8 @@ bool Metric::pseudo_cartesian_jacobian(const Vec4& x, double J[3][3]) const {
     case CoordType::Spherical: {
       // p = r (sinθ cosφ, sinθ sinφ, cosθ)
       const double r = x[1], st = std::sin(x[2]), ct = std::cos(x[2]), sp = std::sin(x[3]), cp = std::cos(x[3]);
-      const double j[3][3] = {{st * cp, r * ct * cp, -r * st * sp}, {st * sp, r * ct * sp, r * st * cp}, {ct, -r * st, 0}};
+      const double j[3][3] = {
+          {st * cp, r * ct * cp, -r * st * sp}, {st * sp, r * ct * sp, r * st * cp}, {ct, -r * st, 0}};
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k) J[i][k] = j[i][k];
       return true;
@@ -276,8 +275,7 @@ bool Metric::pseudo_cartesian_jacobian(const Vec4& x, double J[3][3]) const {
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k) J[i][k] = i == k ? 1.0 : 0.0;
       return true;
-    default:
-      return false;
+    default: return false;
   }
 }
 
@@ -288,10 +286,8 @@ Vec4 Metric::from_pseudo_cartesian(double t, const Vec3& p, int /*chart*/) const
       const double th = r > 0 ? std::acos(std::clamp(p.z / r, -1.0, 1.0)) : 0.0;
       return {{t, r, th, std::atan2(p.y, p.x)}};
     }
-    case CoordType::Cylindrical:
-      return {{t, std::hypot(p.x, p.y), std::atan2(p.y, p.x), p.z}};
-    default:
-      return {{t, p.x, p.y, p.z}};
+    case CoordType::Cylindrical: return {{t, std::hypot(p.x, p.y), std::atan2(p.y, p.x), p.z}};
+    default: return {{t, p.x, p.y, p.z}};
   }
 }
 

@@ -42,7 +42,7 @@ struct MetricParam {
 };
 
 struct MetricInfo {
-  std::string name;                 ///< Motion4D database name, e.g. "KerrBL"
+  std::string name;  ///< Motion4D database name, e.g. "KerrBL"
   std::array<std::string, 4> coords;
   CoordType coord_type = CoordType::Custom;
   std::vector<MetricParam> params;  ///< alphabetical, as Motion4D lists them
@@ -62,9 +62,9 @@ struct MetricInfo {
 /// A function of one coordinate that Motion4D offers for some metrics (effective potential,
 /// circular-orbit velocity, embedding function); printed by `geovis metrics --info NAME`.
 struct MetricFunction {
-  std::string name;      ///< what it is, with its formula
-  std::string variable;  ///< the coordinate it depends on
-  double lo = 0, hi = 0; ///< the range to tabulate
+  std::string name;                 ///< what it is, with its formula
+  std::string variable;             ///< the coordinate it depends on
+  double lo = 0, hi = 0;            ///< the range to tabulate
   std::function<double(double)> f;  ///< NaN where the function is not defined
 };
 
@@ -153,8 +153,8 @@ class Metric {
   // ---- hot path (dispatch once per geodesic) ----
   /// Integrates system `sys` from y (dim = system_dim(sys), updated in place) starting at
   /// affine parameter lambda0, calling `cb` after every accepted step.
-  virtual GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y,
-                                   double lambda0, StepCallback cb) const = 0;
+  virtual GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y, double lambda0,
+                                   StepCallback cb) const = 0;
   /// Geodesics (GeodesicSystem::Geodesic) are integrated through separated equations of the form
   /// y'' = f(y) when cfg.separable is set (KerrBL, Schwarzschild: spacetime/kerr_mino.h), which
   /// is what the RKN86 solver needs.

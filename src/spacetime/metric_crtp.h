@@ -41,9 +41,12 @@ class MetricCRTP : public Metric {
 
   static constexpr bool kHasChristoffelTmpl = has_christoffel_tmpl<M>;
   static constexpr bool kHasClosedChristoffel =
-      kHasChristoffelTmpl || requires(const M& m, const Vec4& x, Christoffel& G) { m.christoffel_closed(x, G); };
-  static constexpr bool kHasClosedAccel =
-      requires(const M& m, const Vec4& x, const Vec4& k, Vec4& a) { m.accel_closed(x, k, a); };
+      kHasChristoffelTmpl || requires(const M& m, const Vec4& x, Christoffel& G) {
+    m.christoffel_closed(x, G);
+  };
+  static constexpr bool kHasClosedAccel = requires(const M& m, const Vec4& x, const Vec4& k, Vec4& a) {
+    m.accel_closed(x, k, a);
+  };
 
   void christoffel(const Vec4& x, Christoffel& G) const override { christoffel_inline(x, G); }
   bool has_closed_form_christoffel() const override { return kHasClosedChristoffel; }
@@ -127,7 +130,9 @@ MetricKernel MetricKernel::of(const M& m) {
   static constexpr MetricKernelOps ops = {
       [](V p, const Vec4& x, Mat4& g) { static_cast<const M*>(p)->metric_tensor_inline(x, g); },
       [](V p, const Vec4& x, Christoffel& G) { static_cast<const M*>(p)->christoffel_inline(x, G); },
-      [](V p, const Vec4& x, ChristoffelT<DualD>& G) { geovis::christoffel_with_derivs(*static_cast<const M*>(p), x, G); },
+      [](V p, const Vec4& x, ChristoffelT<DualD>& G) {
+        geovis::christoffel_with_derivs(*static_cast<const M*>(p), x, G);
+      },
       [](V p, const Vec4& x, const Vec4& k, Vec4& a) { static_cast<const M*>(p)->geodesic_acceleration(x, k, a); },
       [](V p, const Vec4& x) { return static_cast<const M*>(p)->is_valid_inline(x); },
       [] {

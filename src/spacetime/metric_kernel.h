@@ -50,12 +50,8 @@ class MetricKernel {
 
   void metric_tensor_inline(const Vec4& x, Mat4& g) const { ops_->metric_tensor(m_, x, g); }
   void christoffel_inline(const Vec4& x, Christoffel& G) const { ops_->christoffel(m_, x, G); }
-  void christoffel_with_derivs(const Vec4& x, ChristoffelT<DualD>& G) const {
-    ops_->christoffel_with_derivs(m_, x, G);
-  }
-  void geodesic_acceleration(const Vec4& x, const Vec4& k, Vec4& a) const {
-    ops_->geodesic_acceleration(m_, x, k, a);
-  }
+  void christoffel_with_derivs(const Vec4& x, ChristoffelT<DualD>& G) const { ops_->christoffel_with_derivs(m_, x, G); }
+  void geodesic_acceleration(const Vec4& x, const Vec4& k, Vec4& a) const { ops_->geodesic_acceleration(m_, x, k, a); }
   bool is_valid_inline(const Vec4& x) const { return ops_->is_valid(m_, x); }
   bool leaves_chart(const Vec4& x, const Vec4& k) const {
     return ops_->leaves_chart != nullptr && ops_->leaves_chart(m_, x, k);
@@ -95,11 +91,11 @@ class MetricKernel {
 /// compiled per metric.
 GeodesicResult integrate_on_kernel(const MetricKernel& k, const SolverConfig& cfg, GeodesicSystem sys, double* y,
                                    double lambda0, StepCallback cb);
-GeodesicResult integrate_geodesic_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
-                                            double lambda0, StepCallback cb);
-GeodesicResult integrate_transport_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
-                                             double lambda0, StepCallback cb);
-GeodesicResult integrate_jacobi_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
-                                          double lambda0, StepCallback cb);
+GeodesicResult integrate_geodesic_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y, double lambda0,
+                                            StepCallback cb);
+GeodesicResult integrate_transport_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y, double lambda0,
+                                             StepCallback cb);
+GeodesicResult integrate_jacobi_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y, double lambda0,
+                                          StepCallback cb);
 
 }  // namespace geovis

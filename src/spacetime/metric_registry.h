@@ -20,7 +20,6 @@ std::unique_ptr<Metric> make_metric(const std::string& name);
 
 /// Creates a metric and sets parameters (keys case-insensitive). Unknown keys and out-of-range
 /// values -> Error naming the valid keys / range.
-std::unique_ptr<Metric> make_metric(const std::string& name,
-                                    const std::vector<std::pair<std::string, double>>& params);
+std::unique_ptr<Metric> make_metric(const std::string& name, const std::vector<std::pair<std::string, double>>& params);
 
 }  // namespace geovis

@@ -13,7 +13,7 @@
 namespace geovis {
 
 struct MotionSample {
-  double tau = 0;  ///< proper time
+  double tau = 0;        ///< proper time
   Vec4 x{{0, 0, 0, 0}};  ///< position (metric coordinates)
   Vec4 u{{0, 0, 0, 0}};  ///< four-velocity dx/dτ (= e(0))
   Tetrad e{};            ///< local tetrad e_(a)^μ, e_(0) = u

@@ -62,8 +62,9 @@ void ConstVelocityMotion::add_boost(const Vec3& v) {
 void ConstVelocityMotion::add_rotation(double omega, const Vec3& axis) {
   const double n = norm(axis);
   if (!(n > 0) || !std::isfinite(n) || !std::isfinite(omega))
-    throw Error("ConstVelocity motion: rotation axis is missing (zero) or not finite; expected #(omega ax ay az) "
-                "with a non-zero axis");
+    throw Error(
+        "ConstVelocity motion: rotation axis is missing (zero) or not finite; expected #(omega ax ay az) "
+        "with a non-zero axis");
   Op op;
   op.is_boost = false;
   op.omega = omega;
@@ -136,8 +137,9 @@ Vec4 ConstVelocityMotion::material_four_velocity(const Vec4& x) const {
   const Vec4 w = vector_from_object_frame(xo, Vec4{{1, 0, 0, 0}});
   const double n = w[0] * w[0] - (w[1] * w[1] + w[2] * w[2] + w[3] * w[3]);
   if (!(n > 0))
-    throw Error("ConstVelocity motion: the material point at this event moves at or faster than light (beyond the "
-                "light cylinder of the rotation)");
+    throw Error(
+        "ConstVelocity motion: the material point at this event moves at or faster than light (beyond the "
+        "light cylinder of the rotation)");
   return (1.0 / std::sqrt(n)) * w;
 }
 
@@ -191,10 +193,13 @@ MotionPtr make_const_velocity(const ParamReader& keys, std::shared_ptr<const Met
 }
 
 const TypeRegistrar<MotionType> const_velocity{
-    {{"ConstVelocity", {}, "boosts and rotations with constant velocity (special relativity)",
+    {{"ConstVelocity",
+      {},
+      "boosts and rotations with constant velocity (special relativity)",
       {{"boost", ParamType::Vec3, "boost velocity #(vx vy vz)", false, true},
        {"rotation", ParamType::Vec4, "rotation #(omega ax ay az)", false, true}}},
-     make_const_velocity, false}};
+     make_const_velocity,
+     false}};
 
 }  // namespace
 

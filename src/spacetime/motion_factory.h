@@ -30,8 +30,8 @@ class ParamReader;
 /// (motion_geodesic.cpp, motion_const_velocity.cpp, motion_worldline.cpp).
 struct MotionType : TypeDescription {
   /// The motion from its keys (absent keys read as their defaults).
-  MotionPtr (*make)(const ParamReader& keys, std::shared_ptr<const Metric> metric, const SolverConfig& solver) =
-      nullptr;
+  MotionPtr (*make)(const ParamReader& keys, std::shared_ptr<const Metric> metric,
+                    const SolverConfig& solver) = nullptr;
   bool needs_metric = true;  ///< false: defined without a spacetime (ConstVelocity acts on Minkowski coordinates)
 };
 using MotionRegistry = TypeRegistry<MotionType>;

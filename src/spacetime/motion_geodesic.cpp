@@ -104,7 +104,10 @@ MotionPtr make_geodesic(const ParamReader& keys, std::shared_ptr<const Metric> m
 }
 
 const TypeRegistrar<MotionType> geodesic{
-    {{"Geodesic", {}, "free fall: a timelike geodesic from an event and a velocity, sampled in proper time", [] {
+    {{"Geodesic",
+      {},
+      "free fall: a timelike geodesic from an event and a velocity, sampled in proper time",
+      [] {
         auto keys = motion_frame_specs();
         const std::vector<ParamSpec> own = {
             {"solver", ParamType::String, "id of the (timelike) solver"},
@@ -117,12 +120,18 @@ const TypeRegistrar<MotionType> geodesic{
              ParamRange::non_negative()},
             {"maxnumpoints", ParamType::Int, "maximal number of samples per direction", false, false, 1000.0,
              ParamRange{2, std::numeric_limits<double>::infinity(), false, true}},
-            {"stepsize", ParamType::Number, "step size (overrides the solver's step_size)", false, false, {},
+            {"stepsize",
+             ParamType::Number,
+             "step size (overrides the solver's step_size)",
+             false,
+             false,
+             {},
              ParamRange::positive()}};
         keys.insert(keys.end(), own.begin(), own.end());
         return keys;
       }()},
-     make_geodesic, true}};
+     make_geodesic,
+     true}};
 
 }  // namespace
 

@@ -57,8 +57,8 @@ size_t SampledMotion::interval(double tau) const {
     throw Error(std::string(type_name()) + " motion: proper time " + num(tau) + " is outside the computed range [" +
                 num(lo) + ", " + num(hi) + "] (extend it with `forward`/`backward` or `maxnumpoints`)");
   if (nodes_.size() == 1) return 0;
-  auto it = std::upper_bound(nodes_.begin(), nodes_.end(), tau,
-                             [](double t, const MotionNode& n) { return t < n.tau; });
+  auto it =
+      std::upper_bound(nodes_.begin(), nodes_.end(), tau, [](double t, const MotionNode& n) { return t < n.tau; });
   size_t i = static_cast<size_t>(it - nodes_.begin());
   i = i == 0 ? 0 : i - 1;
   return std::min(i, nodes_.size() - 2);
@@ -108,15 +108,16 @@ MotionSample SampledMotion::at_proper_time(double tau) const {
 double SampledMotion::proper_time_at_coordinate_time(double t) const {
   const double t_lo = nodes_.front().x[0], t_hi = nodes_.back().x[0];
   if (!x0_increasing_)
-    throw Error(std::string(type_name()) + " motion: the coordinate time x^0 does not increase along the motion, so "
+    throw Error(std::string(type_name()) +
+                " motion: the coordinate time x^0 does not increase along the motion, so "
                 "an event cannot be selected by coordinate time");
   const double slack = 1e-12 * std::max({1.0, std::fabs(t_lo), std::fabs(t_hi)});
   if (!(t >= t_lo - slack && t <= t_hi + slack))
     throw Error(std::string(type_name()) + " motion: coordinate time " + num(t) + " is outside the computed range [" +
                 num(t_lo) + ", " + num(t_hi) + "] (extend it with `forward`/`backward` or `maxnumpoints`)");
   if (nodes_.size() == 1) return nodes_[0].tau;
-  auto it = std::upper_bound(nodes_.begin(), nodes_.end(), t,
-                             [](double tt, const MotionNode& n) { return tt < n.x[0]; });
+  auto it =
+      std::upper_bound(nodes_.begin(), nodes_.end(), t, [](double tt, const MotionNode& n) { return tt < n.x[0]; });
   size_t i = static_cast<size_t>(it - nodes_.begin());
   i = std::min(i == 0 ? 0 : i - 1, nodes_.size() - 2);
   const MotionNode& a = nodes_[i];

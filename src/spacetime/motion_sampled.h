@@ -20,7 +20,7 @@ struct MotionNode {
   Vec4 u{{0, 0, 0, 0}};
   Vec4 du{{0, 0, 0, 0}};  ///< du^μ/dτ (coordinate derivative, = a^μ − Γ^μ_{ab} u^a u^b)
   Tetrad e{};
-  Tetrad de{};            ///< de_(a)^μ/dτ
+  Tetrad de{};  ///< de_(a)^μ/dτ
 };
 
 class SampledMotion : public Motion {

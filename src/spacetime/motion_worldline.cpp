@@ -44,13 +44,14 @@ WorldlineMotion::WorldlineMotion(std::shared_ptr<const Metric> metric, std::vect
     for (const Vec4& x : x_) p_.push_back(x[0]);
   } else {
     if (params.size() != n)
-      throw Error("Worldline motion: " + std::to_string(params.size()) + " curve parameters for " +
-                  std::to_string(n) + " events");
+      throw Error("Worldline motion: " + std::to_string(params.size()) + " curve parameters for " + std::to_string(n) +
+                  " events");
     p_ = std::move(params);
   }
   for (size_t i = 1; i < n; ++i)
     if (!(p_[i] > p_[i - 1]))
-      throw Error("Worldline motion: the curve parameter (" + std::string(given_params ? "tau" : "coordinate time x^0") +
+      throw Error("Worldline motion: the curve parameter (" +
+                  std::string(given_params ? "tau" : "coordinate time x^0") +
                   ") must increase strictly from event to event, but event " + std::to_string(i) + " has " +
                   num(p_[i]) + " after " + num(p_[i - 1]));
 
@@ -79,8 +80,7 @@ WorldlineMotion::WorldlineMotion(std::shared_ptr<const Metric> metric, std::vect
 
   // Proper time per interval with 5-point Gauss-Legendre quadrature (exact for polynomials of
   // degree 9; the integrand √(−g(x',x')) is smooth inside an interval).
-  static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
-                               0.9061798459386640};
+  static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
   static const double gw[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
                                0.2369268850561891};
   tau_.assign(n, tau0);
@@ -179,8 +179,7 @@ double WorldlineMotion::param_at(double tau) const {
   if (tau <= tau_[i]) return lo;
   if (tau >= tau_[i + 1]) return hi;
   double p = lo + (hi - lo) * (tau - tau_[i]) / (tau_[i + 1] - tau_[i]);
-  static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
-                               0.9061798459386640};
+  static const double gx[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
   static const double gw[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
                                0.2369268850561891};
   const Metric& m = metric();
@@ -269,9 +268,11 @@ MotionPtr make_worldline(const ParamReader& keys, std::shared_ptr<const Metric> 
     events.push_back(Vec4{{r[0], r[1], r[2], r[3]}});
     if (have_tau) taus.push_back(rows[i][0]);
   }
-  if (events.size() < 2) ps.fail(key, "a Worldline motion needs at least 2 events, found " + std::to_string(events.size()));
+  if (events.size() < 2)
+    ps.fail(key, "a Worldline motion needs at least 2 events, found " + std::to_string(events.size()));
   if (ps.has("localvel") || ps.has("vel"))
-    ps.fail(ps.has("vel") ? "vel" : "localvel", "the velocity of a Worldline motion follows from its events; remove this key");
+    ps.fail(ps.has("vel") ? "vel" : "localvel",
+            "the velocity of a Worldline motion follows from its events; remove this key");
   TetradSpec spec = tetrad_spec_from_params(ps, false, events[0]);
   if (ps.has("pos")) ps.fail("pos", "the start of a Worldline motion is its first event; remove this key");
   Tetrad frame{};
@@ -291,7 +292,10 @@ MotionPtr make_worldline(const ParamReader& keys, std::shared_ptr<const Metric> 
 }
 
 const TypeRegistrar<MotionType> worldline{
-    {{"Worldline", {"file"}, "a world line through given events, its frame Fermi-Walker transported", [] {
+    {{"Worldline",
+      {"file"},
+      "a world line through given events, its frame Fermi-Walker transported",
+      [] {
         auto keys = motion_frame_specs();
         const std::vector<ParamSpec> own = {
             {"points", ParamType::List, "events #(x0 x1 x2 x3) (or #(tau x0 x1 x2 x3) with havetau)"},
@@ -300,7 +304,8 @@ const TypeRegistrar<MotionType> worldline{
         keys.insert(keys.end(), own.begin(), own.end());
         return keys;
       }()},
-     make_worldline, true}};
+     make_worldline,
+     true}};
 
 }  // namespace
 

@@ -33,10 +33,10 @@ class WorldlineMotion final : public SampledMotion {
   double param_at(double tau) const;  ///< inverse of τ(p)
   void spline_eval(double p, Vec4& x, Vec4& dx, Vec4& ddx) const;
 
-  std::vector<double> p_;          ///< curve parameter at the events
-  std::vector<Vec4> x_;            ///< events
-  std::vector<Vec4> m2_;           ///< spline second derivatives d²x/dp² at the events
-  std::vector<double> tau_;        ///< proper time at the events
+  std::vector<double> p_;    ///< curve parameter at the events
+  std::vector<Vec4> x_;      ///< events
+  std::vector<Vec4> m2_;     ///< spline second derivatives d²x/dp² at the events
+  std::vector<double> tau_;  ///< proper time at the events
 };
 
 }  // namespace geovis

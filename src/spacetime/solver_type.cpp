@@ -18,20 +18,26 @@ const TypeRegistrar<SolverType> rk2{
      2}};
 
 const TypeRegistrar<SolverType> rk4{
-    {{"RK4", {"GSL_RK4", "Runge-Kutta (fourth order)", "GSL: 4th order (classical) Runge-Kutta"},
-      "classical 4th-order Runge-Kutta, fixed step (Motion4D GeodesicRK4)", {}},
+    {{"RK4",
+      {"GSL_RK4", "Runge-Kutta (fourth order)", "GSL: 4th order (classical) Runge-Kutta"},
+      "classical 4th-order Runge-Kutta, fixed step (Motion4D GeodesicRK4)",
+      {}},
      SolverKind::RK4,
      4}};
 
 const TypeRegistrar<SolverType> cash_karp{
-    {{"CashKarp45", {"CashKarp", "GSL_RK_Cash-Karp", "GSL: Embedded 4th order Runge-Kutta Cash-Karp"},
-      "Runge-Kutta Cash-Karp 4(5)", {}},
+    {{"CashKarp45",
+      {"CashKarp", "GSL_RK_Cash-Karp", "GSL: Embedded 4th order Runge-Kutta Cash-Karp"},
+      "Runge-Kutta Cash-Karp 4(5)",
+      {}},
      SolverKind::CashKarp45,
      5}};
 
 const TypeRegistrar<SolverType> fehlberg{
-    {{"Fehlberg45", {"Fehlberg", "GSL_RK_Fehlberg", "GSL: Embedded 4th order Runge-Kutta-Fehlberg"},
-      "Runge-Kutta-Fehlberg 4(5)", {}},
+    {{"Fehlberg45",
+      {"Fehlberg", "GSL_RK_Fehlberg", "GSL: Embedded 4th order Runge-Kutta-Fehlberg"},
+      "Runge-Kutta-Fehlberg 4(5)",
+      {}},
      SolverKind::Fehlberg45,
      4}};
 
@@ -44,7 +50,8 @@ const TypeRegistrar<SolverType> dop853{
     {{"DOP853",
       {"DP853", "GSL_RK_Prince-Dormand", "GSL: Embedded 8th order Runge-Kutta Prince-Dormand", "DP65",
        "Dormand-Prince: RK6(5)"},
-      "Dormand-Prince 8(5,3) (Hairer's DOP853); GSL's rk8pd and Motion4D's DP65 map onto it", {}},
+      "Dormand-Prince 8(5,3) (Hairer's DOP853); GSL's rk8pd and Motion4D's DP65 map onto it",
+      {}},
      SolverKind::DormandPrince853,
      8}};
 
@@ -54,8 +61,12 @@ const TypeRegistrar<SolverType> bulirsch_stoer{
      8}};
 
 const TypeRegistrar<SolverType> rkn86{
-    {{"RKN86", {}, "Runge-Kutta-Nystrom 8(6) (Dormand, El-Mikkawy & Prince); KerrBL and Schwarzschild geodesics only",
-      {}, {}, true},
+    {{"RKN86",
+      {},
+      "Runge-Kutta-Nystrom 8(6) (Dormand, El-Mikkawy & Prince); KerrBL and Schwarzschild geodesics only",
+      {},
+      {},
+      true},
      SolverKind::RungeKuttaNystrom86,
      8,
      true}};

@@ -49,15 +49,15 @@ void check_orthonormal(const Metric& m, const Vec4& x, const Tetrad& e, double t
                ") = " + fmt(prod) + " instead of " + fmt(target);
     }
   if (!bad.empty())
-    throw Error(std::string(what) + " is not orthonormal with respect to the metric " + m.name() + " at " +
-                vec_str(x) + ": " + bad + " (tolerance " + fmt(tol) + "; expected g(e_a,e_b) = diag(-1,1,1,1))");
+    throw Error(std::string(what) + " is not orthonormal with respect to the metric " + m.name() + " at " + vec_str(x) +
+                ": " + bad + " (tolerance " + fmt(tol) + "; expected g(e_a,e_b) = diag(-1,1,1,1))");
 }
 
 void require_valid_position(const Metric& m, const Vec4& x, std::string_view what) {
   if (!m.is_valid(x))
-    throw Error(std::string(what) + " " + vec_str(x) + " is outside the validity domain of the metric " +
-                m.name() + " (coordinates " + m.info().coords[0] + ", " + m.info().coords[1] + ", " +
-                m.info().coords[2] + ", " + m.info().coords[3] + "; e.g. inside a horizon, at a singularity or on an axis)");
+    throw Error(std::string(what) + " " + vec_str(x) + " is outside the validity domain of the metric " + m.name() +
+                " (coordinates " + m.info().coords[0] + ", " + m.info().coords[1] + ", " + m.info().coords[2] + ", " +
+                m.info().coords[3] + "; e.g. inside a horizon, at a singularity or on an axis)");
 }
 
 Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v) {
@@ -72,8 +72,8 @@ Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v) {
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) scale0 += std::fabs(g[i][j] * v[0][i] * v[0][j]);
   if (!(n0 < -kRel * scale0) || !std::isfinite(n0))
-    throw Error("Gram-Schmidt: the first vector e0 = " + vec_str(v[0]) + " must be timelike, but g(e0,e0) = " +
-                fmt(n0) + " (metric " + m.name() + " at " + vec_str(x) + ")");
+    throw Error("Gram-Schmidt: the first vector e0 = " + vec_str(v[0]) +
+                " must be timelike, but g(e0,e0) = " + fmt(n0) + " (metric " + m.name() + " at " + vec_str(x) + ")");
   e[0] = (1.0 / std::sqrt(-n0)) * v[0];
   for (int i = 1; i < 4; ++i) {
     Vec4 w = v[i];
@@ -89,7 +89,8 @@ Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v) {
     if (!(n > kRel * scale) || !std::isfinite(n))
       throw Error("Gram-Schmidt: e" + std::to_string(i) + " = " + vec_str(v[i]) +
                   " is degenerate (linearly dependent on the previous base vectors, zero or null; what remains "
-                  "after projection has g(w,w) = " + fmt(n) + ") (metric " + m.name() + " at " + vec_str(x) + ")");
+                  "after projection has g(w,w) = " +
+                  fmt(n) + ") (metric " + m.name() + " at " + vec_str(x) + ")");
     e[i] = (1.0 / std::sqrt(n)) * w;
   }
   return e;
@@ -104,24 +105,23 @@ Tetrad tetrad_from_local(const Tetrad& base, const Tetrad& c) {
 Tetrad boost_tetrad(const Tetrad& e, const Vec3& beta) {
   const double b2 = dot(beta, beta);
   if (!std::isfinite(b2) || !(b2 < 1.0))
-    throw Error("local velocity (" + fmt(beta.x) + ", " + fmt(beta.y) + ", " + fmt(beta.z) + ") has |v| = " +
-                fmt(std::sqrt(b2)) + "; expected |v| < 1 (speed of light = 1)");
+    throw Error("local velocity (" + fmt(beta.x) + ", " + fmt(beta.y) + ", " + fmt(beta.z) +
+                ") has |v| = " + fmt(std::sqrt(b2)) + "; expected |v| < 1 (speed of light = 1)");
   if (b2 == 0.0) return e;
   const double gamma = 1.0 / std::sqrt(1.0 - b2);
   Tetrad out{};
   Vec4 bs{{0, 0, 0, 0}};  // β^i e_(i)
   for (int i = 0; i < 3; ++i) bs = bs + beta[i] * e[i + 1];
   out[0] = gamma * (e[0] + bs);
-  for (int j = 0; j < 3; ++j)
-    out[j + 1] = e[j + 1] + (gamma * beta[j]) * e[0] + ((gamma - 1.0) * beta[j] / b2) * bs;
+  for (int j = 0; j < 3; ++j) out[j + 1] = e[j + 1] + (gamma * beta[j]) * e[0] + ((gamma - 1.0) * beta[j] / b2) * bs;
   return out;
 }
 
 Vec3 local_velocity(const Metric& m, const Vec4& x, const Tetrad& e, const Vec4& u) {
   const Vec4 ul = coord_to_local(m, x, e, u);
   if (!(ul[0] > 0))
-    throw Error("four-velocity " + vec_str(u) + " is not future-directed with respect to the local frame (u^(0) = " +
-                fmt(ul[0]) + ")");
+    throw Error("four-velocity " + vec_str(u) +
+                " is not future-directed with respect to the local frame (u^(0) = " + fmt(ul[0]) + ")");
   const Vec3 beta{ul[1] / ul[0], ul[2] / ul[0], ul[3] / ul[0]};
   if (!(dot(beta, beta) < 1.0))
     throw Error("four-velocity " + vec_str(u) + " is not timelike (local speed " + fmt(norm(beta)) + " >= 1)");
@@ -190,8 +190,8 @@ TetradSpec tetrad_spec_from_params(const ParamSet& ps, bool require_pos, Vec4 de
   }
   for (int a = 0; a < 4; ++a) {
     const char key[3] = {'e', static_cast<char>('0' + a), '\0'};
-    const std::vector<double> v = ps.get_vector(key, 4, std::vector<double>{a == 0 ? 1.0 : 0.0, a == 1 ? 1.0 : 0.0,
-                                                                            a == 2 ? 1.0 : 0.0, a == 3 ? 1.0 : 0.0});
+    const std::vector<double> v = ps.get_vector(
+        key, 4, std::vector<double>{a == 0 ? 1.0 : 0.0, a == 1 ? 1.0 : 0.0, a == 2 ? 1.0 : 0.0, a == 3 ? 1.0 : 0.0});
     spec.e[a] = Vec4{{v[0], v[1], v[2], v[3]}};
   }
   spec.incoords = ps.get_bool("incoords", false);
@@ -201,8 +201,8 @@ TetradSpec tetrad_spec_from_params(const ParamSet& ps, bool require_pos, Vec4 de
   const std::vector<double> lv = ps.get_vector("localvel", 3, std::vector<double>{0, 0, 0});
   spec.localvel = Vec3{lv[0], lv[1], lv[2]};
   if (dot(spec.localvel, spec.localvel) >= 1.0)
-    ps.fail("localvel", "expected a 3-velocity with |v| < 1 (speed of light = 1), found |v| = " +
-                            fmt(norm(spec.localvel)));
+    ps.fail("localvel",
+            "expected a 3-velocity with |v| < 1 (speed of light = 1), found |v| = " + fmt(norm(spec.localvel)));
   if (ps.has("vel")) {
     const std::vector<double> v = ps.get_vector("vel", 4);
     spec.has_vel = true;

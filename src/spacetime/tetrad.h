@@ -27,8 +27,7 @@ double orthonormality_error(const Metric& m, const Vec4& x, const Tetrad& e);
 
 /// Throws Error when |g(e_a, e_b) − η_ab| > tol for some a ≤ b; the message lists every offending
 /// product with its value, the expected η_ab and the tolerance. `what` names the tetrad.
-void check_orthonormal(const Metric& m, const Vec4& x, const Tetrad& e, double tol,
-                       std::string_view what = "tetrad");
+void check_orthonormal(const Metric& m, const Vec4& x, const Tetrad& e, double tol, std::string_view what = "tetrad");
 
 /// Throws Error when x is outside the metric's coordinate validity domain (horizon, singularity,
 /// axis, ...). `what` names the position in the message.
@@ -70,8 +69,8 @@ struct TetradSpec {
   Tetrad e{{{{1, 0, 0, 0}}, {{0, 1, 0, 0}}, {{0, 0, 1, 0}}, {{0, 0, 0, 1}}}};
   bool incoords = false;
   TetradKind frame = TetradKind::Default;  ///< natural tetrad kind (`localframe`)
-  Vec3 localvel{0, 0, 0};  ///< 3-velocity relative to the natural tetrad (`localvel`)
-  bool has_vel = false;     ///< `vel` given: coordinate four-velocity (normalized here)
+  Vec3 localvel{0, 0, 0};                  ///< 3-velocity relative to the natural tetrad (`localvel`)
+  bool has_vel = false;                    ///< `vel` given: coordinate four-velocity (normalized here)
   Vec4 vel{{0, 0, 0, 0}};
 };
 
@@ -97,8 +96,7 @@ TetradKind tetrad_kind_from_param(const ParamSet& ps, std::string_view key, Tetr
 /// Reads pos (4-vector, or GeoViS's 5-vector whose first 4 entries are used), e0..e3, incoords,
 /// localframe, localvel and vel from a `local-tetrad` or `init-motion` parameter set. `pos` is
 /// required when `require_pos`; otherwise it defaults to `default_pos`.
-TetradSpec tetrad_spec_from_params(const ParamSet& ps, bool require_pos = true,
-                                   Vec4 default_pos = Vec4{{0, 0, 0, 0}});
+TetradSpec tetrad_spec_from_params(const ParamSet& ps, bool require_pos = true, Vec4 default_pos = Vec4{{0, 0, 0, 0}});
 
 /// tetrad_spec_from_params + build_tetrad, with errors reported as SceneErrors of `ps`
 /// (file:line: command: key: message).

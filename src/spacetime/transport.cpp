@@ -144,7 +144,7 @@ Tetrad fermi_walker_transport(const Metric& m, WorldlineFn worldline, double tau
     }
     s = last ? span : s + hs;
     y1[0] = tau0 + dir * s;  // avoid accumulating round-off in τ
-    f(y1, dy1);               // Cash–Karp is not first-same-as-last
+    f(y1, dy1);              // Cash–Karp is not first-same-as-last
     std::copy(y1, y1 + N, y);
     std::copy(dy1, dy1 + N, dy);
     ++steps;
@@ -155,8 +155,8 @@ Tetrad fermi_walker_transport(const Metric& m, WorldlineFn worldline, double tau
   return unpack(y);
 }
 
-GeodesicResult integrate_transport_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y,
-                                             double lambda0, StepCallback cb) {
+GeodesicResult integrate_transport_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y, double lambda0,
+                                             StepCallback cb) {
   TransportRHS<MetricKernel> f{k};
   return integrate_system(k, f, cfg, y, lambda0, cb);
 }

@@ -47,8 +47,8 @@ struct WorldlineState {
 using WorldlineFn = FunctionRef<WorldlineState(double)>;
 
 struct FermiWalkerConfig {
-  double eps_abs = 1e-11;     ///< absolute error per step of the tetrad components
-  double step_size = 1e-2;    ///< initial |Δτ|
+  double eps_abs = 1e-11;   ///< absolute error per step of the tetrad components
+  double step_size = 1e-2;  ///< initial |Δτ|
   double step_max = std::numeric_limits<double>::infinity();
   double step_min = 1e-12;
   int max_steps = 1000000;
@@ -61,7 +61,6 @@ void fermi_walker_rhs(const Metric& m, const WorldlineState& w, const Tetrad& e,
 /// adaptive Cash-Karp 4(5) integration; calls cb(τ, e) after every accepted step. Throws Error
 /// when the step size underflows or the state becomes non-finite.
 Tetrad fermi_walker_transport(const Metric& m, WorldlineFn worldline, double tau0, double tau1, const Tetrad& e,
-                              const FermiWalkerConfig& cfg = {},
-                              FunctionRef<void(double, const Tetrad&)> cb = {});
+                              const FermiWalkerConfig& cfg = {}, FunctionRef<void(double, const Tetrad&)> cb = {});
 
 }  // namespace geovis

@@ -172,8 +172,9 @@ TEST_P(ExamplePicture, IsPixelIdenticalToTheRecordedOne) {
   const auto it = recorded.find(stem);
   ASSERT_NE(it, recorded.end()) << stem << " has no recorded hash in " << kHashFile
                                 << " (scripts/record_example_hashes.sh records it)";
-  EXPECT_EQ(got, it->second) << stem << ": the picture changed. If that is intended, re-record with "
-                                         "scripts/record_example_hashes.sh and say why in the commit.";
+  EXPECT_EQ(got, it->second) << stem
+                             << ": the picture changed. If that is intended, re-record with "
+                                "scripts/record_example_hashes.sh and say why in the commit.";
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ExamplePicture, testing::ValuesIn(example_stems()), example_name);

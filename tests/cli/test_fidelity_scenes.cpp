@@ -26,7 +26,8 @@ const fs::path kData = fs::path(GEOVIS_SOURCE_DIR) / "tests" / "data" / "fidelit
 class FidelityScene : public ::testing::TestWithParam<const char*> {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("geovis_fidelity_" + std::string(GetParam()) + "_" + std::to_string(::getpid()));
+    dir_ =
+        fs::temp_directory_path() / ("geovis_fidelity_" + std::string(GetParam()) + "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

@@ -56,25 +56,25 @@ TEST(GeodesicCmd, ReproducesRadialLightTravelTime) {
   EXPECT_NEAR(std::stod(kLambdaTo30), 24.0 / std::sqrt(2.0 / 3.0), 1e-14);
   // Both forms of the equations: Carter's in Mino time (default) and the coordinate geodesic equation.
   for (const std::string eq : {"separable", "coordinate"}) {
-  SCOPED_TRACE(eq);
-  const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5707963267948966,0", "--dir",
-                             "1,0,0", "--forward", "--lambda-max", kLambdaTo30, "--eps-abs", "1e-10", "--equations", eq,
-                             "--no-escape"});
-  ASSERT_EQ(o.code, 0) << o.err;
-  const auto ls = lines(o.out);
-  ASSERT_GE(ls.size(), 4u);
-  EXPECT_EQ(ls.front(), "lambda,x0,x1,x2,x3,k0,k1,k2,k3,constraint");
-  EXPECT_EQ(ls.back(), "# stop: lambda-max");
-  const auto first = csv_numbers(ls[1]);
-  const auto last = csv_numbers(ls[ls.size() - 2]);
-  ASSERT_EQ(first.size(), 10u);
-  ASSERT_EQ(last.size(), 10u);
-  EXPECT_EQ(first[0], 0.0);
-  EXPECT_EQ(first[2], 6.0);
-  EXPECT_NEAR(last[2], 30.0, 1e-8);
-  EXPECT_NEAR(last[1] - first[1], expected, 1e-4);
-  EXPECT_NEAR(last[1] - first[1], expected, 1e-8);  // what the tolerance actually delivers
-  for (size_t i = 1; i + 1 < ls.size(); ++i) EXPECT_LT(std::fabs(csv_numbers(ls[i])[9]), 1e-9) << ls[i];
+    SCOPED_TRACE(eq);
+    const Output o =
+        run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5707963267948966,0", "--dir", "1,0,0",
+                  "--forward", "--lambda-max", kLambdaTo30, "--eps-abs", "1e-10", "--equations", eq, "--no-escape"});
+    ASSERT_EQ(o.code, 0) << o.err;
+    const auto ls = lines(o.out);
+    ASSERT_GE(ls.size(), 4u);
+    EXPECT_EQ(ls.front(), "lambda,x0,x1,x2,x3,k0,k1,k2,k3,constraint");
+    EXPECT_EQ(ls.back(), "# stop: lambda-max");
+    const auto first = csv_numbers(ls[1]);
+    const auto last = csv_numbers(ls[ls.size() - 2]);
+    ASSERT_EQ(first.size(), 10u);
+    ASSERT_EQ(last.size(), 10u);
+    EXPECT_EQ(first[0], 0.0);
+    EXPECT_EQ(first[2], 6.0);
+    EXPECT_NEAR(last[2], 30.0, 1e-8);
+    EXPECT_NEAR(last[1] - first[1], expected, 1e-4);
+    EXPECT_NEAR(last[1] - first[1], expected, 1e-8);  // what the tolerance actually delivers
+    for (size_t i = 1; i + 1 < ls.size(); ++i) EXPECT_LT(std::fabs(csv_numbers(ls[i])[9]), 1e-9) << ls[i];
   }
   EXPECT_NE(run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5,0", "--dir", "1,0,0", "--equations",
                       "carter"})
@@ -106,7 +106,8 @@ TEST(GeodesicCmd, EscapingRayStopsEscapedAtAModestRadius) {
   const std::string pos = "0,10,1.5707963,0";
   for (const std::string eq : {"separable", "coordinate"}) {
     SCOPED_TRACE(eq);
-    const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "1,0,0", "--equations", eq});
+    const Output o =
+        run_args({"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "1,0,0", "--equations", eq});
     ASSERT_EQ(o.code, 0) << o.err;
     const auto ls = lines(o.out);
     EXPECT_LT(ls.size(), 10u);
@@ -134,8 +135,8 @@ TEST(GeodesicCmd, EscapingRayStopsEscapedAtAModestRadius) {
   EXPECT_EQ(js["escape"]["radius"], js["points"].back()["x"][1]);
   EXPECT_EQ(js["escape"]["lambda"], js["points"].back()["lambda"]);
   // --no-escape: as before, no escape.
-  const Output n = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "1,0,0", "--no-escape",
-                             "--max-steps", "50"});
+  const Output n = run_args(
+      {"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "1,0,0", "--no-escape", "--max-steps", "50"});
   ASSERT_EQ(n.code, 0) << n.err;
   EXPECT_EQ(lines(n.out).back(), "# stop: max-steps");
 }
@@ -150,9 +151,9 @@ TEST(GeodesicCmd, HelpStatesTheStopReasons) {
 
 TEST(GeodesicCmd, NearAxisKerrRayThatUsedToStallGetsThrough) {
   // The Kerr ray that stalled at θ ≈ π − 7e-7 in the Mino equations and ended with max-steps.
-  const Output o = run_args({"geodesic", "--metric", "KerrBL", "--param", "angmom=0.9", "--pos",
-                             "0,1000,0.29670597283903605,0", "--dir", "-1,0.004989,-3e-7", "--eps-abs", "1e-9",
-                             "--max-steps", "30000", "--escape-radius", "1000"});
+  const Output o =
+      run_args({"geodesic", "--metric", "KerrBL", "--param", "angmom=0.9", "--pos", "0,1000,0.29670597283903605,0",
+                "--dir", "-1,0.004989,-3e-7", "--eps-abs", "1e-9", "--max-steps", "30000", "--escape-radius", "1000"});
   ASSERT_EQ(o.code, 0) << o.err;
   const auto ls = lines(o.out);
   EXPECT_EQ(ls.back().rfind("# stop: escaped", 0), 0u) << ls.back();
@@ -160,9 +161,9 @@ TEST(GeodesicCmd, NearAxisKerrRayThatUsedToStallGetsThrough) {
 }
 
 TEST(GeodesicCmd, JsonCarriesTheSame) {
-  const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--param", "mass=0.5", "--pos",
-                             "0,10,1.5707963267948966,0", "--dir", "0,0.3,0", "--type", "timelike", "--max-steps",
-                             "20", "--format", "json"});
+  const Output o =
+      run_args({"geodesic", "--metric", "Schwarzschild", "--param", "mass=0.5", "--pos", "0,10,1.5707963267948966,0",
+                "--dir", "0,0.3,0", "--type", "timelike", "--max-steps", "20", "--format", "json"});
   ASSERT_EQ(o.code, 0) << o.err;
   const auto j = nlohmann::json::parse(o.out);
   EXPECT_EQ(j["metric"], "Schwarzschild");

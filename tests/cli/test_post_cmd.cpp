@@ -83,11 +83,12 @@ TEST_F(PostCmd, DataFlagWritesTheExrAndPostMakesEveryPicture) {
   EXPECT_NE(run_args({"post", path("disk.exr"), "-o", path("mu.png"), "--shader", "lensing", "--quiet"}), 0);
   EXPECT_FALSE(fs::exists(path("mu.png")));
   // The colour bar adds a labelled strip below the picture.
-  ASSERT_EQ(run_args({"post", path("disk.exr"), "-o", path("bar.png"), "--shader", "redshift", "--colorbar",
-                      "--range", "0.8,1.6", "--quiet"}),
+  ASSERT_EQ(run_args({"post", path("disk.exr"), "-o", path("bar.png"), "--shader", "redshift", "--colorbar", "--range",
+                      "0.8,1.6", "--quiet"}),
             0);
   EXPECT_GT(read_image(path("bar.png")).height, 24);
-  ASSERT_EQ(run_args({"post", path("disk.exr"), "-o", path("log.png"), "--shader", "disk-flux", "--log", "--quiet"}), 0);
+  ASSERT_EQ(run_args({"post", path("disk.exr"), "-o", path("log.png"), "--shader", "disk-flux", "--log", "--quiet"}),
+            0);
 }
 
 TEST_F(PostCmd, JacobiFilterGivesLensingAndBothFiles) {
@@ -124,9 +125,10 @@ TEST_F(PostCmd, BadInputIsAnErrorNotACrash) {
   EXPECT_NE(run_args({"post", path("notes.txt"), "-o", path("o.png"), "--shader", "redshift", "--quiet"}), 0);
   EXPECT_NE(run_args({"post", path("missing.exr"), "-o", path("o.png"), "--shader", "redshift", "--quiet"}), 0);
   EXPECT_NE(run_args({"post", path("notes.txt"), "-o", path("o.png"), "--shader", "redshfit", "--quiet"}), 0);
-  EXPECT_NE(run_args({"post", path("notes.txt"), "--quiet"}), 0);                      // nothing to do
+  EXPECT_NE(run_args({"post", path("notes.txt"), "--quiet"}), 0);                       // nothing to do
   EXPECT_NE(run_args({"post", path("notes.txt"), "-o", path("o.png"), "--quiet"}), 0);  // no shader
-  EXPECT_NE(run_args({"post", path("notes.txt"), "-o", path("o.png"), "--shader", "time", "--range", "1", "--quiet"}), 0);
+  EXPECT_NE(run_args({"post", path("notes.txt"), "-o", path("o.png"), "--shader", "time", "--range", "1", "--quiet"}),
+            0);
   EXPECT_FALSE(fs::exists(path("o.png")));
 }
 

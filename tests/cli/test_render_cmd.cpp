@@ -20,9 +20,8 @@ namespace fs = std::filesystem;
 class RenderCmd : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("geovis_render_cmd_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("geovis_render_cmd_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -122,7 +121,8 @@ TEST_F(RenderCmd, ResumeSkipsFramesOnDisk) {
   ASSERT_TRUE(exists("f_0.png") && exists("f_1.png") && exists("f_2.png"));
   // Remove frame 1: --resume keeps 0 as it is (the same file: a rewrite would be a new inode)
   // and renders 1 again. (What is not a complete frame: test_render_outputs.cpp.)
-  struct stat before {}, after {};
+  struct stat before {
+  }, after{};
   ASSERT_EQ(::stat(path("f_0.png").c_str(), &before), 0);
   fs::remove(path("f_1.png"));
   ASSERT_EQ(run_args({"render", scene, "-o", path("f_%d.png"), "--resume", "-q"}), 0);
@@ -227,14 +227,12 @@ TEST_F(RenderCmd, SceneCallingExitStopsWithoutErrorAndRendersNothing) {
   }
 }
 
-
 TEST_F(RenderCmd, MovieOfOneFrameAndOfASequence) {
   if (system("command -v ffmpeg >/dev/null 2>&1") != 0) GTEST_SKIP() << "ffmpeg is not installed";
   const std::string scene = write_scene(3);
   // One frame written to a plain file name (no frame pattern): ffmpeg's image2 reader must take it.
-  ASSERT_EQ(run_args({"render", scene, "--frames", "1:1", "-o", path("one.png"), "--movie", path("one.mp4"),
-                      "--quiet"}),
-            0);
+  ASSERT_EQ(
+      run_args({"render", scene, "--frames", "1:1", "-o", path("one.png"), "--movie", path("one.mp4"), "--quiet"}), 0);
   EXPECT_TRUE(exists("one.png"));
   EXPECT_GT(fs::file_size(dir_ / "one.mp4"), 0u);
   // A sequence: frames out_0000.png .. out_0002.png, then the movie.

@@ -25,8 +25,8 @@ const std::string kGeovis = std::string(GEOVIS_BINARY_DIR) + "/geovis";
 const std::string kMpirun = "mpirun --oversubscribe --allow-run-as-root -np ";
 
 struct ProgramRun {
-  int exit_code = -1;   ///< exit status; 128 + signal when killed by a signal
-  std::string output;   ///< stdout and stderr
+  int exit_code = -1;  ///< exit status; 128 + signal when killed by a signal
+  std::string output;  ///< stdout and stderr
 };
 
 std::string read_file(const fs::path& p) {
@@ -37,9 +37,8 @@ std::string read_file(const fs::path& p) {
 class RenderDistributed : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("geovis_render_distributed_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("geovis_render_distributed_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     // An unbalanced scene: a Kerr disk seen almost edge-on (the photon ring costs most), 64x56
@@ -61,7 +60,8 @@ class RenderDistributed : public ::testing::Test {
            "(plane-ring `(objtype ,gpObjTypeInCoords) '(center #(0.0 0.0 0.0)) '(normal #(0.0 0.0 1.0))\n"
            "  '(rin 3.0) '(rout 15.0) '(shader \"sh\") '(id \"disk\"))\n"
            "(local-tetrad `(pos ,(vector 0.0 50.0 (radians 85.0) 0.0)) '(e0 #(1.0 0.0 0.0 0.0))\n"
-           "  '(e1 #(0.0 -1.0 0.0 0.0)) '(e2 #(0.0 0.0 0.0 -1.0)) '(e3 #(0.0 0.0 -1.0 0.0)) '(incoords #f) '(id \"obs\"))\n"
+           "  '(e1 #(0.0 -1.0 0.0 0.0)) '(e2 #(0.0 0.0 0.0 -1.0)) '(e3 #(0.0 0.0 -1.0 0.0)) '(incoords #f) '(id "
+           "\"obs\"))\n"
            "(do ((i 0 (+ i 1))) ((= i 2))\n"
            "  (init-device '(type \"standard\") '(obj \"disk\") '(camera \"cam\")\n"
            "    `(setparam (\"obs\" \"pos\" ,(vector 0.0 (+ 50.0 (* 5.0 i)) (radians 85.0) 0.0)))))\n";
@@ -102,10 +102,10 @@ class RenderDistributed : public ::testing::Test {
   fs::path dir_;
 };
 
-#define SKIP_WITHOUT_MPI()                                                                           \
-  do {                                                                                               \
-    if (!GEOVIS_HAVE_MPI) GTEST_SKIP() << "geovis was built without MPI (install libopenmpi-dev)";   \
-    if (!has_mpirun()) GTEST_SKIP() << "mpirun is not installed (Debian: openmpi-bin)";             \
+#define SKIP_WITHOUT_MPI()                                                                         \
+  do {                                                                                             \
+    if (!GEOVIS_HAVE_MPI) GTEST_SKIP() << "geovis was built without MPI (install libopenmpi-dev)"; \
+    if (!has_mpirun()) GTEST_SKIP() << "mpirun is not installed (Debian: openmpi-bin)";            \
   } while (0)
 
 TEST_F(RenderDistributed, SigkillHalfWayThroughAFrameThenResumeIsByteIdentical) {
@@ -132,9 +132,9 @@ TEST_F(RenderDistributed, SigkillHalfWayThroughAFrameThenResumeIsByteIdentical) 
 }
 
 TEST_F(RenderDistributed, CheckpointOfAnotherSceneIsIgnoredWithAMessage) {
-  ASSERT_EQ(sh("GEOVIS_TEST_KILL_AFTER_TILES=5 " + kGeovis + " render kerr.scm --frames 0 --threads 1 -o out.png")
-                .exit_code,
-            128 + 9);
+  ASSERT_EQ(
+      sh("GEOVIS_TEST_KILL_AFTER_TILES=5 " + kGeovis + " render kerr.scm --frames 0 --threads 1 -o out.png").exit_code,
+      128 + 9);
   const ProgramRun r = sh(kGeovis + " render kerr.scm --frames 0 --threads 1 -v -o out.png --resume --define x=1");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("was made for a different scene, options or resolution; ignored"), std::string::npos)
@@ -143,9 +143,9 @@ TEST_F(RenderDistributed, CheckpointOfAnotherSceneIsIgnoredWithAMessage) {
 }
 
 TEST_F(RenderDistributed, WithoutResumeAnOldCheckpointIsNotUsed) {
-  ASSERT_EQ(sh("GEOVIS_TEST_KILL_AFTER_TILES=5 " + kGeovis + " render kerr.scm --frames 0 --threads 1 -o out.png")
-                .exit_code,
-            128 + 9);
+  ASSERT_EQ(
+      sh("GEOVIS_TEST_KILL_AFTER_TILES=5 " + kGeovis + " render kerr.scm --frames 0 --threads 1 -o out.png").exit_code,
+      128 + 9);
   const ProgramRun r = sh(kGeovis + " render kerr.scm --frames 0 --threads 1 -v -o out.png");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("16 rendered, 0 restored"), std::string::npos) << r.output;
@@ -177,7 +177,8 @@ TEST_F(RenderDistributed, MpiFramesOverlapAndMatchSerial) {
   scene.replace(scene.find(two), two.size(), "((= i 4))");
   std::ofstream(path("kerr4.scm")) << scene;
   ASSERT_EQ(sh(kGeovis + " render kerr4.scm --threads 1 -q -o serial.png").exit_code, 0);
-  const ProgramRun r = sh(kMpirun + "3 " + kGeovis + " render kerr4.scm --threads 1 -v -o mpi.png --tile-stats mpi.csv");
+  const ProgramRun r =
+      sh(kMpirun + "3 " + kGeovis + " render kerr4.scm --threads 1 -v -o mpi.png --tile-stats mpi.csv");
   ASSERT_EQ(r.exit_code, 0) << (r.exit_code == 124 ? "the job hung\n" : "") << r.output;
   for (int f = 0; f < 4; ++f)
     for (const char* ext : {".png", ".pdz"}) {
@@ -212,7 +213,8 @@ TEST_F(RenderDistributed, MpiSequenceOfCheapFramesEndsAndMatchesSerial) {
   std::ofstream(path("flat.scm"))
       << "(init-metric '(type \"Minkowski\") '(id \"metric\"))\n"
          "(init-solver '(type \"GSL_RK_Cash-Karp\") '(geodType \"lightlike\") '(step_ctrl #f) '(step_size 0.5))\n"
-         "(init-camera '(type \"PinHoleCam\") '(dir #(1 0 0)) '(vup #(0 0 1)) '(fov #(40 30)) '(res #(40 30)) '(id \"cam\"))\n"
+         "(init-camera '(type \"PinHoleCam\") '(dir #(1 0 0)) '(vup #(0 0 1)) '(fov #(40 30)) '(res #(40 30)) '(id "
+         "\"cam\"))\n"
          "(init-raygen '(type \"RayGenSimple\") '(maxNumPoints 200)\n"
          "  `(boundBoxLL ,(vector (- gpDBLMAX) -30.0 -30.0 -30.0)) `(boundBoxUR ,(vector gpDBLMAX 30.0 30.0 30.0)))\n"
          "(local-tetrad '(pos #(0 -10 0 0)) '(e0 #(1 0 0 0)) '(e1 #(0 1 0 0)) '(e2 #(0 0 1 0)) '(e3 #(0 0 0 1))\n"
@@ -221,9 +223,11 @@ TEST_F(RenderDistributed, MpiSequenceOfCheapFramesEndsAndMatchesSerial) {
          "(init-light-mgr '(ambient #(1 1 1)))\n"
          "(init-texture '(type \"UniTex\") '(color #(0.8 0.2 0.2)) '(id \"red\"))\n"
          "(init-shader '(type \"SurfShader\") '(objcolor \"red\") '(ambient 1.0) '(id \"sh\"))\n"
-         "(solid-ellipsoid `(objtype ,gpObjTypeInCoords) '(center #(0 0 0)) '(axlen #(2 2 2)) '(shader \"sh\") '(id \"ball\"))\n"
+         "(solid-ellipsoid `(objtype ,gpObjTypeInCoords) '(center #(0 0 0)) '(axlen #(2 2 2)) '(shader \"sh\") '(id "
+         "\"ball\"))\n"
          "(do ((i 0 (+ i 1))) ((= i 12))\n"
-         "  (init-device '(type \"standard\") '(obj \"ball\") `(setparam (\"obs\" \"pos\" ,(vector 0.0 (- -10.0 i) 0.0 0.0)))))\n";
+         "  (init-device '(type \"standard\") '(obj \"ball\") `(setparam (\"obs\" \"pos\" ,(vector 0.0 (- -10.0 i) 0.0 "
+         "0.0)))))\n";
   ASSERT_EQ(sh(kGeovis + " render flat.scm --threads 1 -q -o serial.png").exit_code, 0);
   const ProgramRun r = sh(kMpirun + "3 " + kGeovis + " render flat.scm --threads 2 -q -o mpi.png");
   ASSERT_EQ(r.exit_code, 0) << (r.exit_code == 124 ? "the job hung\n" : "") << r.output;

@@ -33,9 +33,8 @@ namespace fs = std::filesystem;
 class RenderOutputs : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("geovis_render_outputs_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("geovis_render_outputs_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -134,20 +133,25 @@ TEST_F(RenderOutputs, ResumeRendersAgainWhatIsNotAGenuineCompleteFrame) {
   const ino_t genuine_inode = inode(path("f_0.png"));
   const std::string png = slurp(path("f_1.png"));
   { std::ofstream(path("f_1.png"), std::ios::binary) << png.substr(0, png.size() / 2); }  // truncated
-  { std::ofstream(path("f_2.png"), std::ios::binary); }                                    // 0 bytes
-  { std::ofstream(path("f_3.png")) << "not an image\n"; }                                  // text
+  { std::ofstream(path("f_2.png"), std::ios::binary); }                                   // 0 bytes
+  { std::ofstream(path("f_3.png")) << "not an image\n"; }                                 // text
   ASSERT_EQ(run_args({"render", scene, "-o", out, "--frames", "4", "--res", "16x12", "-q"}), 0) << err_;
   ASSERT_EQ(read_image(path("f_4.png")).width, 16);  // another resolution
 
   ASSERT_EQ(run_args({"render", scene, "-o", out, "--resume"}), 0) << err_;
   EXPECT_EQ(count_lines_with(err_, "--resume: frame"), 4) << err_;
   EXPECT_EQ(count_lines_with(err_, "--resume: frame 0"), 0) << err_;
-  EXPECT_NE(err_.find("--resume: frame 1 is rendered again: cannot read image \"" + path("f_1.png")), std::string::npos) << err_;
-  EXPECT_NE(err_.find("--resume: frame 2 is rendered again: cannot read image \"" + path("f_2.png") + "\": the file is empty"),
-            std::string::npos) << err_;
-  EXPECT_NE(err_.find("--resume: frame 3 is rendered again: cannot read image \"" + path("f_3.png")), std::string::npos) << err_;
+  EXPECT_NE(err_.find("--resume: frame 1 is rendered again: cannot read image \"" + path("f_1.png")), std::string::npos)
+      << err_;
+  EXPECT_NE(err_.find("--resume: frame 2 is rendered again: cannot read image \"" + path("f_2.png") +
+                      "\": the file is empty"),
+            std::string::npos)
+      << err_;
+  EXPECT_NE(err_.find("--resume: frame 3 is rendered again: cannot read image \"" + path("f_3.png")), std::string::npos)
+      << err_;
   EXPECT_NE(err_.find("--resume: frame 4 is rendered again: \"" + path("f_4.png") + "\" is 16x12, expected 8x6"),
-            std::string::npos) << err_;
+            std::string::npos)
+      << err_;
   EXPECT_NE(err_.find("4 frame(s) rendered, 1 skipped"), std::string::npos) << err_;
   // The genuine frame was not touched (same file, not rewritten); the others are complete now.
   EXPECT_EQ(inode(path("f_0.png")), genuine_inode);
@@ -185,16 +189,21 @@ TEST_F(RenderOutputs, ResolutionLimitsAreClearErrors) {
   const std::string scene = write_scene(1);
   EXPECT_EQ(run_args({"render", scene, "-o", path("a.png"), "--res", "100000x100000", "-q"}), 1);
   EXPECT_NE(err_.find("geovis: error: --res 100000x100000: a 100000x100000 frame needs 112 GiB for the frame buffer"),
-            std::string::npos) << err_;
+            std::string::npos)
+      << err_;
   EXPECT_NE(err_.find("the limit is"), std::string::npos) << err_;
   EXPECT_EQ(run_args({"render", scene, "-o", path("a.png"), "--res", "2147483647x1", "-q"}), 1);
   EXPECT_NE(err_.find("--res 2147483647x1: the width 2147483647 is larger than the limit of 1000000 pixels per side"),
-            std::string::npos) << err_;
+            std::string::npos)
+      << err_;
   EXPECT_EQ(run_args({"render", scene, "-o", path("a.png"), "--res", "1x99999999999999999999", "-q"}), 1);
   EXPECT_NE(err_.find("larger than the limit of 1000000 pixels per side"), std::string::npos) << err_;
   // The scene's own camera resolution is checked before anything is allocated, too.
-  { std::ofstream(scene, std::ios::app) << "(init-camera '(type \"PinHoleCam\") '(res #(100000 100000)) '(id \"big\"))\n"
-                                           "(init-device '(type \"standard\") '(obj \"ball\") '(camera \"big\"))\n"; }
+  {
+    std::ofstream(scene, std::ios::app)
+        << "(init-camera '(type \"PinHoleCam\") '(res #(100000 100000)) '(id \"big\"))\n"
+           "(init-device '(type \"standard\") '(obj \"ball\") '(camera \"big\"))\n";
+  }
   EXPECT_EQ(run_args({"render", scene, "-o", path("b_%d.png"), "--frames", "1", "-q"}), 1);
   EXPECT_NE(err_.find("needs 112 GiB for the frame buffer"), std::string::npos) << err_;
   EXPECT_EQ(err_.find("internal error"), std::string::npos) << err_;
@@ -283,12 +292,14 @@ TEST_F(RenderOutputs, FullFileSystemFailsAndKeepsTheExistingImage) {
 TEST_F(RenderOutputs, TemporaryFilesOfKilledRunsAreRemoved) {
   const std::string scene = write_scene(1);
   { std::ofstream(path(".out.geovis-tmp-4242-0.png")); }  // left by a killed run (nobody holds it)
-  { std::ofstream(path(".out.tmp-4242-0.png")); }          // not our pattern: kept
+  { std::ofstream(path(".out.tmp-4242-0.png")); }         // not our pattern: kept
   ASSERT_EQ(run_args({"render", scene, "-o", path("out.png")}), 0) << err_;
   EXPECT_FALSE(exists(".out.geovis-tmp-4242-0.png"));
   EXPECT_TRUE(exists(".out.tmp-4242-0.png"));
-  EXPECT_NE(err_.find("removed \"" + path(".out.geovis-tmp-4242-0.png") + "\", a temporary file left by an interrupted run"),
-            std::string::npos) << err_;
+  EXPECT_NE(
+      err_.find("removed \"" + path(".out.geovis-tmp-4242-0.png") + "\", a temporary file left by an interrupted run"),
+      std::string::npos)
+      << err_;
 }
 
 TEST_F(RenderOutputs, FailedMovieLeavesNoTemporaryFile) {

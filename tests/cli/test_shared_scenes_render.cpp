@@ -62,8 +62,10 @@ class SharedScenesRender : public ::testing::Test {
   }
   void TearDown() override {
     fs::current_path(old_cwd_);
-    if (old_home_) setenv("HOME", old_home_->c_str(), 1);
-    else unsetenv("HOME");
+    if (old_home_)
+      setenv("HOME", old_home_->c_str(), 1);
+    else
+      unsetenv("HOME");
     fs::remove_all(dir_);
   }
 
@@ -94,9 +96,9 @@ class SharedScenesRender : public ::testing::Test {
 };
 
 struct Stats {
-  int distinct = 0;       ///< distinct 8-bit colours
-  double dark = 0;        ///< fraction of (near) black pixels: shadow, background colour #(0 0 0)
-  double lum_sigma = 0;   ///< standard deviation of the luminance
+  int distinct = 0;      ///< distinct 8-bit colours
+  double dark = 0;       ///< fraction of (near) black pixels: shadow, background colour #(0 0 0)
+  double lum_sigma = 0;  ///< standard deviation of the luminance
 };
 
 Stats stats_of(const Image& img) {

@@ -42,8 +42,10 @@ TEST(ChannelImage, Float32ChannelsAndStringAttributesRoundTrip) {
     ASSERT_GE(b, 0) << n;
     for (int i = 0; i < 6; ++i) {
       const float va = img.pixels[size_t(i) * 5 + a], vb = back.pixels[size_t(i) * back.names.size() + b];
-      if (std::isnan(va)) EXPECT_TRUE(std::isnan(vb));
-      else EXPECT_EQ(va, vb) << n << " " << i;
+      if (std::isnan(va))
+        EXPECT_TRUE(std::isnan(vb));
+      else
+        EXPECT_EQ(va, vb) << n << " " << i;
     }
   }
   EXPECT_EQ(back.meta("geovis:metric"), "KerrBL");

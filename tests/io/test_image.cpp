@@ -52,7 +52,7 @@ void expect_round_trip(const std::string& path, int bits, double tol) {
 
 TEST(Image, RoundTripPng8And16) {
   TempDir d;
-  expect_round_trip(d.file("a.png"), 8, 1e-6);   // codes k/255 come back exactly
+  expect_round_trip(d.file("a.png"), 8, 1e-6);  // codes k/255 come back exactly
   expect_round_trip(d.file("b.png"), 16, 1e-6);
   // 16 bit keeps values that 8 bit cannot: 1/1000 -> nearest of 65535 codes.
   Image img(2, 1, 3);

@@ -89,9 +89,7 @@ TEST(ImageMatch, Over4PercentFailsEvenWithNeighbours) {
   EXPECT_FALSE(m.matches);
 }
 
-TEST(ImageMatch, SizeMismatchIsAnError) {
-  EXPECT_THROW(match_images(grey(10, 10, 0), grey(10, 11, 0)), Error);
-}
+TEST(ImageMatch, SizeMismatchIsAnError) { EXPECT_THROW(match_images(grey(10, 10, 0), grey(10, 11, 0)), Error); }
 
 }  // namespace
 }  // namespace geovis

@@ -98,8 +98,12 @@ TEST(Cameras, FullSkyMatchesEquation4) {
 }
 
 /// Right-handed rotation matrices (Motion4D RotateMat3D) applied to v.
-Vec3 rz(double a, const Vec3& v) { return {std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y, v.z}; }
-Vec3 ry(double a, const Vec3& v) { return {std::cos(a) * v.x + std::sin(a) * v.z, v.y, -std::sin(a) * v.x + std::cos(a) * v.z}; }
+Vec3 rz(double a, const Vec3& v) {
+  return {std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y, v.z};
+}
+Vec3 ry(double a, const Vec3& v) {
+  return {std::cos(a) * v.x + std::sin(a) * v.z, v.y, -std::sin(a) * v.x + std::cos(a) * v.z};
+}
 
 TEST(Cameras, DomeMatchesGeoViS2PICam) {
   const int N = 50;

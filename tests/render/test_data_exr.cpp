@@ -75,11 +75,10 @@ TEST(RayStop, OneCodePerStopReason) {
   EXPECT_EQ(ray_stop(d), RayStop::Hit);
   d.hit = false;
   const std::map<StopReason, RayStop> expected = {
-      {StopReason::Escaped, RayStop::Escaped},      {StopReason::Invalid, RayStop::Horizon},
-      {StopReason::BoundingBox, RayStop::Box},
-      {StopReason::MaxSteps, RayStop::MaxSteps},    {StopReason::LambdaMax, RayStop::MaxSteps},
-      {StopReason::Constraint, RayStop::Constraint}, {StopReason::StepUnderflow, RayStop::Error},
-      {StopReason::NotFinite, RayStop::Error}};
+      {StopReason::Escaped, RayStop::Escaped},     {StopReason::Invalid, RayStop::Horizon},
+      {StopReason::BoundingBox, RayStop::Box},     {StopReason::MaxSteps, RayStop::MaxSteps},
+      {StopReason::LambdaMax, RayStop::MaxSteps},  {StopReason::Constraint, RayStop::Constraint},
+      {StopReason::StepUnderflow, RayStop::Error}, {StopReason::NotFinite, RayStop::Error}};
   for (const auto& [reason, code] : expected) {
     d.stop = reason;
     EXPECT_EQ(ray_stop(d), code) << stop_reason_name(reason);
@@ -191,8 +190,10 @@ TEST_F(DataExr, WrittenAtomicallyAndReadBack) {
     ASSERT_GE(b, 0) << name;
     for (size_t i = 0; i < size_t(24 * 16); ++i) {
       const float va = orig.pixels[i * orig.names.size() + a], vb = back.pixels[i * back.names.size() + b];
-      if (std::isnan(va)) EXPECT_TRUE(std::isnan(vb)) << name;
-      else EXPECT_EQ(va, vb) << name;
+      if (std::isnan(va))
+        EXPECT_TRUE(std::isnan(vb)) << name;
+      else
+        EXPECT_EQ(va, vb) << name;
     }
   }
   EXPECT_EQ(back.meta("geovis:metric"), "Schwarzschild");
@@ -222,7 +223,8 @@ TEST_F(DataExr, IndependentReaderSeesTheChannelsAndHeader) {
   for (int i = 0; i < header.num_custom_attributes; ++i) {
     const EXRAttribute& a = header.custom_attributes[i];
     // OpenEXR string attribute: the bytes of the string (no terminator).
-    if (std::strcmp(a.type, "string") == 0) attrs[a.name] = std::string(reinterpret_cast<const char*>(a.value), size_t(a.size));
+    if (std::strcmp(a.type, "string") == 0)
+      attrs[a.name] = std::string(reinterpret_cast<const char*>(a.value), size_t(a.size));
   }
   EXRImage image;
   InitEXRImage(&image);
@@ -263,8 +265,10 @@ TEST_F(DataExr, ReadsTheGeoViSFilesWithNaNForMisses) {
   ASSERT_GE(d.channel("z"), 0);
   for (size_t i = 0; i < r.data.size(); ++i) {
     const float x1 = d.pixels[i * d.names.size() + d.channel("x1")];
-    if (r.data[i].hit) EXPECT_EQ(x1, float(r.data[i].pos[1]));
-    else EXPECT_TRUE(std::isnan(x1));
+    if (r.data[i].hit)
+      EXPECT_EQ(x1, float(r.data[i].pos[1]));
+    else
+      EXPECT_TRUE(std::isnan(x1));
   }
 }
 

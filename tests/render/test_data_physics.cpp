@@ -109,8 +109,8 @@ TEST(DiskRedshift, KerrProgradeDiskFromTheConservedQuantitiesOfTheRay) {
     const Vec4 k0 = local_null_direction(job.observer.e, d, true);  // p = −k0
     double E = 0, L = 0;
     for (int n = 0; n < 4; ++n) {
-      E += g[0][n] * k0[n];   // E = −p_t = g_tν k^ν
-      L -= g[3][n] * k0[n];   // L = p_φ = −g_φν k^ν
+      E += g[0][n] * k0[n];  // E = −p_t = g_tν k^ν
+      L -= g[3][n] * k0[n];  // L = p_φ = −g_φν k^ν
     }
     const double rh = r.pos[1], sa = a, r32 = std::pow(rh, 1.5);
     const double omega = 1 / (r32 + sa);

@@ -42,9 +42,7 @@ class UniformMotion final : public Motion {
     s.x = tau * s.u;
     return s;
   }
-  MotionSample at_coordinate_time(double t) const override {
-    return at_proper_time(t * std::sqrt(1.0 - dot(v_, v_)));
-  }
+  MotionSample at_coordinate_time(double t) const override { return at_proper_time(t * std::sqrt(1.0 - dot(v_, v_))); }
   const std::vector<MotionSample>& samples() const override { return samples_; }
 
  private:
@@ -326,8 +324,7 @@ TEST(ObjLocal, RollingWheelMaterialVelocity) {
   rot.omega = 0.4;
   rot.axis = {1, 0, 0};
   auto motion = std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{boost, rot});
-  LocalObject wheel(std::make_shared<Cylinder>(Vec3{-0.15, 0, 0}, Vec3{0.15, 0, 0}, 2, 2),
-                    LocalFrame(metric, motion));
+  LocalObject wheel(std::make_shared<Cylinder>(Vec3{-0.15, 0, 0}, Vec3{0.15, 0, 0}, 2, 2), LocalFrame(metric, motion));
   int hits = 0;
   for (double y0 : {-1.5, -0.5, 0.0, 0.7}) {
     for (double z0 : {-1.9, -1.0, 0.5, 1.9}) {
@@ -336,7 +333,7 @@ TEST(ObjLocal, RollingWheelMaterialVelocity) {
       const Segment seg = testing::light_segment(5, {5, y0, z0}, {-1, 0, 0}, 10);
       if (!wheel.intersect(seg, hit)) continue;
       ++hits;
-      const Vec3 X = hit.point;  // rest-frame point
+      const Vec3 X = hit.point;      // rest-frame point
       EXPECT_NEAR(X.x, 0.15, 1e-9);  // on the face turned to the ray
       // Cross-check of the frame mapping with the motion's own lab -> object transformation.
       const Vec4 xe = seg.x0 + hit.s * (seg.x1 - seg.x0);

@@ -31,8 +31,10 @@ ChannelImage data(const std::vector<std::string>& names, const std::vector<std::
   d.names = names;
   for (int i = 0; i < 3; ++i)
     for (size_t c = 0; c < names.size(); ++c) d.pixels.push_back(values[c][size_t(i)]);
-  d.metadata = {{"geovis:format", "geovis data 1"}, {"geovis:metric", "Schwarzschild"},
-                {"geovis:metric.coordtype", "spherical"}, {"geovis:metric.mass", "1"}};
+  d.metadata = {{"geovis:format", "geovis data 1"},
+                {"geovis:metric", "Schwarzschild"},
+                {"geovis:metric.coordtype", "spherical"},
+                {"geovis:metric.mass", "1"}};
   return d;
 }
 
@@ -95,7 +97,8 @@ TEST(PostField, DiskFluxIsPageThorneOverOnePlusZToTheFourth) {
 }
 
 TEST(PostField, ShadersReadTheirChannels) {
-  const ChannelImage d = data({"x0", "z", "stop", "jac.mu"}, {{-10, -20, kNaN}, {0.9f, 1.1f, kNaN}, {0, 1, 2}, {1, 2, kNaN}});
+  const ChannelImage d =
+      data({"x0", "z", "stop", "jac.mu"}, {{-10, -20, kNaN}, {0.9f, 1.1f, kNaN}, {0, 1, 2}, {1, 2, kNaN}});
   EXPECT_EQ(post_field(d, "time").values[1], -20);
   EXPECT_NEAR(post_field(d, "redshift").values[0], 0.9, 1e-7);
   EXPECT_EQ(post_field(d, "lensing").values[1], 2);

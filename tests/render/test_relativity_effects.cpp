@@ -96,8 +96,8 @@ TEST(RelativityEffects, SphereMovingAcrossLineOfSightAppearsRotatedByArcsinBeta)
   const double beta = 0.5, D = 10.0;
   const int N = 33;
   // Rest frame orientation: the same sphere at rest (ConstVelocity without operations).
-  const double rest = centre_longitude(
-      render_quiet(terrell_job(std::make_shared<ConstVelocityMotion>(), &shader, D, N)), N);
+  const double rest =
+      centre_longitude(render_quiet(terrell_job(std::make_shared<ConstVelocityMotion>(), &shader, D, N)), N);
   EXPECT_NEAR(rest, 180.0, 1.5);
 
   ConstVelocityMotion::Op boost;
@@ -174,8 +174,8 @@ std::shared_ptr<GeodesicMotion> orbit_motion(const std::shared_ptr<const Metric>
   timelike.step_ctrl = false;
   timelike.step_size = 0.05;
   const double beta = std::sqrt(kM / (kROrbit - 2 * kM));
-  return std::make_shared<GeodesicMotion>(m, timelike, Vec4{{0, kROrbit, kPi / 2, 0}}, orbiting_frame(beta), 0.0,
-                                          100.0, 20.0, 5000);
+  return std::make_shared<GeodesicMotion>(m, timelike, Vec4{{0, kROrbit, kPi / 2, 0}}, orbiting_frame(beta), 0.0, 100.0,
+                                          20.0, 5000);
 }
 
 TEST(RelativityEffects, TransportedFrameOnCircularOrbitPrecessesByGeodeticAngle) {
@@ -232,8 +232,8 @@ TEST(RelativityEffects, OrbitingSphereImagePrecessesByGeodeticAngleAfterOneOrbit
     job.filter = Filter::RGBpt;  // stores the texture coordinates
     lon[k] = centre_longitude(render_quiet(job), N);
   }
-  std::printf("geodetic precession from the image: longitude %.4f -> %.4f deg, change %.4f (expected %.4f)\n",
-              lon[0], lon[1], wrap_deg(lon[1] - lon[0]), -geodetic_angle_deg());
+  std::printf("geodetic precession from the image: longitude %.4f -> %.4f deg, change %.4f (expected %.4f)\n", lon[0],
+              lon[1], wrap_deg(lon[1] - lon[0]), -geodetic_angle_deg());
   EXPECT_NEAR(wrap_deg(lon[1] - lon[0] + geodetic_angle_deg()), 0.0, 0.25)
       << "longitudes " << lon[0] << " and " << lon[1];
 }
@@ -327,9 +327,10 @@ TEST(RelativityEffects, MovingObserverSeesAberratedSphere) {
     }
     ASSERT_TRUE(seen);
     const double centre_az = std::atan2(c.centre.y, c.centre.x);
-    std::printf("aberration beta=%.1f: centre %.3f deg (expected %.3f), radius %.3f deg (expected %.3f), pixel %.3f deg\n",
-                beta, 0.5 * (first + last) / kDeg, centre_az / kDeg, 0.5 * (last - first) / kDeg, c.radius / kDeg,
-                pixel / kDeg);
+    std::printf(
+        "aberration beta=%.1f: centre %.3f deg (expected %.3f), radius %.3f deg (expected %.3f), pixel %.3f deg\n",
+        beta, 0.5 * (first + last) / kDeg, centre_az / kDeg, 0.5 * (last - first) / kDeg, c.radius / kDeg,
+        pixel / kDeg);
     EXPECT_NEAR(0.5 * (first + last), centre_az, pixel) << "apparent centre (deg) " << centre_az / kDeg;
     // The outermost hit pixels lie at most one pixel inside the rim.
     EXPECT_NEAR(0.5 * (last - first), c.radius - pixel / 2, pixel) << "apparent radius (deg) " << c.radius / kDeg;

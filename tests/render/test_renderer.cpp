@@ -258,8 +258,8 @@ TEST(DataFiles, JacPtAndIntersecLayouts) {
   ASSERT_EQ(dat.size(), 8u + 4u * 17u * 8u);  // no channel count; 136-byte gvsData records
   // Memory order, top row first: record 1 = (x 1, y 0); gvsData = objID, pos, dir, freq, jac, uv.
   EXPECT_DOUBLE_EQ(f64_at(dat, 8 + 136 + 0), 1.0);
-  EXPECT_DOUBLE_EQ(f64_at(dat, 8 + 136 + 8), 1.0);      // pos[0] = 100*0 + 1
-  EXPECT_DOUBLE_EQ(f64_at(dat, 8 + 136 + 15 * 8), 0.5); // uv[0] = 0.5 x
+  EXPECT_DOUBLE_EQ(f64_at(dat, 8 + 136 + 8), 1.0);       // pos[0] = 100*0 + 1
+  EXPECT_DOUBLE_EQ(f64_at(dat, 8 + 136 + 15 * 8), 0.5);  // uv[0] = 0.5 x
   for (Filter f : {Filter::RGBpdz, Filter::RGBjac, Filter::RGBpt, Filter::RGBIntersec}) {
     int w = 0, h = 0;
     const auto back = decode_filter_data(f, encode_filter_data(f, W, H, data), w, h);

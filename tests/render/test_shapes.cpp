@@ -109,8 +109,8 @@ TEST(ShapesBox, FacesNormalsPartsAndUV) {
   EXPECT_NEAR(side.s, 0.25, kTol);
   expect_vec(side.normal, {-1, 0, 0});
   EXPECT_EQ(side.part, 0);
-  EXPECT_NEAR(side.u, 0.5, kTol);          // 1 − q_y
-  EXPECT_NEAR(side.v, 2.0 / 3.0, kTol);    // q_z = (−3 − (−5)) / 3
+  EXPECT_NEAR(side.u, 0.5, kTol);        // 1 − q_y
+  EXPECT_NEAR(side.v, 2.0 / 3.0, kTol);  // q_z = (−3 − (−5)) / 3
   Hit miss;
   EXPECT_FALSE(b.intersect(make_segment({-10, 10, -3}, {10, 10, -3}), miss));
 }
@@ -221,7 +221,7 @@ TEST(ShapesPlaneRing, AccretionDiskUVAndTwoSidedNormal) {
   EXPECT_NEAR(back.u, 1.0, kTol);
   EXPECT_NEAR(back.v, 1.0, kTol);  // atan2(+0, −15) = π
   Hit miss;
-  EXPECT_FALSE(disk.intersect(make_segment({2, 0, 1}, {2, 0, -1}), miss));   // in the hole
+  EXPECT_FALSE(disk.intersect(make_segment({2, 0, 1}, {2, 0, -1}), miss));    // in the hole
   EXPECT_FALSE(disk.intersect(make_segment({16, 0, 1}, {16, 0, -1}), miss));  // outside
 }
 
@@ -468,10 +468,10 @@ TEST(ShapesEllipsoid, DiffuseFrameIsTheUnitSphere) {
 
 TEST(ObjectRegistry, HoldsEveryObjectCommand) {
   // Registered by static objects beside each class (shapes, mesh, csg, compound, local_object).
-  EXPECT_EQ(object_commands(),
-            (std::vector<std::string>{"comp-object", "comp-octree-object", "csg-object", "local-comp-object", "mesh-obj",
-                                      "plane-parallelogram", "plane-ring", "plane-triangle", "solid-background",
-                                      "solid-box", "solid-cylinder", "solid-ellipsoid", "solid-ring"}));
+  EXPECT_EQ(object_commands(), (std::vector<std::string>{
+                                   "comp-object", "comp-octree-object", "csg-object", "local-comp-object", "mesh-obj",
+                                   "plane-parallelogram", "plane-ring", "plane-triangle", "solid-background",
+                                   "solid-box", "solid-cylinder", "solid-ellipsoid", "solid-ring"}));
 }
 
 }  // namespace

@@ -31,8 +31,7 @@ struct ObjTextures : ::testing::Test {
     ctx.textures["red"] = std::make_shared<UniTexture>(kRed);
     ctx.textures["blue"] = std::make_shared<UniTexture>(kBlue);
   }
-  TexturePtr make(const std::string& type, std::initializer_list<std::pair<const char*, Value>> kv,
-                  bool two = true) {
+  TexturePtr make(const std::string& type, std::initializer_list<std::pair<const char*, Value>> kv, bool two = true) {
     ParamSet ps("init-texture", SourceLoc{"t.scm", 4});
     ps.add("type", type);
     if (two) {
@@ -100,14 +99,20 @@ TEST_F(ObjTextures, DieFaces) {
 }
 
 TEST_F(ObjTextures, ColorGradients) {
-  auto lin = make("ColorGradTex", {{"color1", std::vector<double>{1, 0, 0}}, {"color2", std::vector<double>{0, 0, 1}},
-                                   {"start", std::vector<double>{0, 0.5}}, {"end", std::vector<double>{1, 0.5}}},
+  auto lin = make("ColorGradTex",
+                  {{"color1", std::vector<double>{1, 0, 0}},
+                   {"color2", std::vector<double>{0, 0, 1}},
+                   {"start", std::vector<double>{0, 0.5}},
+                   {"end", std::vector<double>{1, 0.5}}},
                   false);
   expect_color(lin->sample(0.25, 0.9), {0.75, 0, 0.25});
   expect_color(lin->sample(-1, 0), kRed);  // clamped
-  auto rad = make("ColorGradTex", {{"color1", std::vector<double>{1, 0, 0}}, {"color2", std::vector<double>{0, 0, 1}},
-                                   {"start", std::vector<double>{0.5, 0.5}}, {"end", std::vector<double>{1, 0.5}},
-                                   {"gradtype", "radial"}},
+  auto rad = make("ColorGradTex",
+                  {{"color1", std::vector<double>{1, 0, 0}},
+                   {"color2", std::vector<double>{0, 0, 1}},
+                   {"start", std::vector<double>{0.5, 0.5}},
+                   {"end", std::vector<double>{1, 0.5}},
+                   {"gradtype", "radial"}},
                   false);
   expect_color(rad->sample(0.5, 0.75), {0.5, 0, 0.5});  // distance 0.25 of 0.5
   expect_color(hsv_to_rgb(120, 1, 1), {0, 1, 0});
@@ -147,8 +152,7 @@ TEST_F(ObjTextures, ImageBilinearPeriodic) {
   expect_color(flipped->sample(0.25, 0.0), t->sample(0.75, 0.0), tol);
   // Same path -> same decoded image.
   auto again = make("Image", {{"file", "tex2x2.png"}}, false);
-  EXPECT_EQ(std::dynamic_pointer_cast<ImageTexture>(again)->image,
-            std::dynamic_pointer_cast<ImageTexture>(t)->image);
+  EXPECT_EQ(std::dynamic_pointer_cast<ImageTexture>(again)->image, std::dynamic_pointer_cast<ImageTexture>(t)->image);
 }
 
 /// A 4 x 1 image with grey values 0.2, 0.4, 0.6, 1.0 (columns 0..3), written as 16-bit PNG.

@@ -27,7 +27,9 @@ class TileCheckpointTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
 
   /// 20x12 pixels, tiles of 8: 3x2 tiles, the last column and row clipped.
-  static CheckpointKey key(uint64_t hash = 42, bool with_data = false) { return {hash, TileGrid(20, 12, 8), with_data}; }
+  static CheckpointKey key(uint64_t hash = 42, bool with_data = false) {
+    return {hash, TileGrid(20, 12, 8), with_data};
+  }
 
   /// A result whose every value tells its pixel (and `salt`) apart.
   static RenderResult numbered(float salt, bool with_data = false) {

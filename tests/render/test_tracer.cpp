@@ -858,7 +858,8 @@ TEST(Tracer, CaptureRadiusIsTheScenesInnermostRadius) {
   const SceneObjectPtr sphere = make_sphere(ctx, Vec3{0, 4, 0}, 1.0);
   job.scene = sphere;
   EXPECT_DOUBLE_EQ(Tracer(job).capture_radius(), 3.0);
-  job.scene = std::make_shared<CompoundObject>(std::vector<SceneObjectPtr>{sphere, make_ring(ctx, Vec3{1, 0, 0}, 3.0, 15.0)});
+  job.scene =
+      std::make_shared<CompoundObject>(std::vector<SceneObjectPtr>{sphere, make_ring(ctx, Vec3{1, 0, 0}, 3.0, 15.0)});
   EXPECT_DOUBLE_EQ(Tracer(job).capture_radius(), 2.0);
   // Unknown bounds: never; no scene: nothing to hit anywhere.
   job.scene = std::make_shared<UnknownBounds>(sphere);

@@ -47,8 +47,11 @@ SceneText minkowski_base() {
       .add("init-solver", {{"type", "GSL_RK_Cash-Karp"}, {"geodtype", "lightlike"}, {"id", "raytracing"}})
       .add("init-camera", {{"type", "PinHoleCam"}, {"res", vec({8, 6})}, {"fov", vec({40, 30})}, {"id", "cam1"}})
       .add("init-camera", {{"type", "PinHoleCam"}, {"res", vec({10, 4})}, {"id", "cam2"}})
-      .add("init-raygen", {{"type", "RayGenSimple"}, {"solver", "raytracing"}, {"maxnumpoints", 1234},
-                           {"boundboxll", vec({-1e19, -20, -20, -20})}, {"boundboxur", vec({1e19, 20, 20, 20})}})
+      .add("init-raygen", {{"type", "RayGenSimple"},
+                           {"solver", "raytracing"},
+                           {"maxnumpoints", 1234},
+                           {"boundboxll", vec({-1e19, -20, -20, -20})},
+                           {"boundboxur", vec({1e19, 20, 20, 20})}})
       .add("local-tetrad", {{"pos", vec({0, -10, 0, 0})},
                             {"e0", vec({1, 0, 0, 0})},
                             {"e1", vec({0, 1, 0, 0})},
@@ -60,10 +63,16 @@ SceneText minkowski_base() {
       .add("init-light-mgr", {{"ambient", vec({1, 1, 1})}, {"id", "lights"}})
       .add("init-texture", {{"type", "UniTex"}, {"color", vec({0.8, 0.1, 0.1})}, {"id", "red"}})
       .add("init-shader", {{"type", "SurfShader"}, {"objcolor", "red"}, {"id", "redShader"}})
-      .add("solid-ellipsoid", {{"objtype", 1}, {"center", vec({0, 0, 0})}, {"axlen", vec({1, 1, 1})},
-                               {"shader", "redShader"}, {"id", "ball"}})
-      .add("solid-ellipsoid", {{"objtype", 1}, {"center", vec({0, 3, 0})}, {"axlen", vec({1, 1, 1})},
-                               {"shader", "redShader"}, {"id", "ball2"}});
+      .add("solid-ellipsoid", {{"objtype", 1},
+                               {"center", vec({0, 0, 0})},
+                               {"axlen", vec({1, 1, 1})},
+                               {"shader", "redShader"},
+                               {"id", "ball"}})
+      .add("solid-ellipsoid", {{"objtype", 1},
+                               {"center", vec({0, 3, 0})},
+                               {"axlen", vec({1, 1, 1})},
+                               {"shader", "redShader"},
+                               {"id", "ball2"}});
   return s;
 }
 
@@ -79,7 +88,7 @@ std::string error_of(const SceneText& s, int device = 0) {
 
 TEST(SceneBuilder, LastDefinedIsTheDefault) {
   SceneText s = minkowski_base();
-  s.add("init-device", {{"type", "standard"}})                     // device 0: defaults
+  s.add("init-device", {{"type", "standard"}})                                           // device 0: defaults
       .add("init-device", {{"type", "standard"}, {"camera", "cam1"}, {"obj", "ball"}});  // device 1
   SceneBuilder b(s.desc(), {});
   ASSERT_EQ(b.device_count(), 2);
@@ -163,8 +172,8 @@ TEST(SceneBuilder, SetparamChangesOnlyItsFrame) {
                         {"setparam", setparam("locTedObs", "pos", vec({1, -8, 0, 0}))},
                         {"setparam", setparam("cam1", "fov", vec({20, 15}))}})
       .add("init-device", {{"camera", "cam1"}})
-      .add("init-device", {{"setparam", setparam("proj", "actualpos", 0)},
-                           {"setparam", setparam("locTedObs", "time", 7.0)}});
+      .add("init-device",
+           {{"setparam", setparam("proj", "actualpos", 0)}, {"setparam", setparam("locTedObs", "time", 7.0)}});
   SceneBuilder b(s.desc(), {});
   // Frame 0: "time" then "pos" (later entries win, in order) -> pos = (1, -8, 0, 0).
   const auto j0 = b.build(0);
@@ -221,8 +230,11 @@ TEST(SceneBuilder, SetParameterIsImmediate) {
 TEST(SceneBuilder, AddObjectAppendsToACompound) {
   SceneText s = minkowski_base();
   s.add("comp-object", {{"obj", "ball"}, {"id", "scene"}})
-      .add("solid-ellipsoid", {{"objtype", 1}, {"center", vec({0, 0, 3})}, {"axlen", vec({1, 1, 1})},
-                               {"shader", "redShader"}, {"id", "ball3"}})
+      .add("solid-ellipsoid", {{"objtype", 1},
+                               {"center", vec({0, 0, 3})},
+                               {"axlen", vec({1, 1, 1})},
+                               {"shader", "redShader"},
+                               {"id", "ball3"}})
       .add("add-object", {{"add-to", "scene"}, {"obj", "ball2"}, {"obj", "ball3"}})
       .add("init-device", {{"obj", "scene"}});
   SceneBuilder b(s.desc(), {});
@@ -331,7 +343,8 @@ TEST(SceneBuilder, BadCallsAreErrorsWithLocation) {
     SceneBuilder b(s.desc(), {});
     FAIL() << "duplicate id accepted";
   } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("scene.scm:" + std::to_string(line) + ": solid-ellipsoid: id: id \"ball\" is already used"),
+    EXPECT_NE(std::string(e.what()).find("scene.scm:" + std::to_string(line) +
+                                         ": solid-ellipsoid: id: id \"ball\" is already used"),
               std::string::npos)
         << e.what();
   }
@@ -348,8 +361,7 @@ TEST(SceneBuilder, BadCallsAreErrorsWithLocation) {
 
   SceneText none;
   none.add("init-metric", {{"type", "Minkowski"}}).add("init-device", {});
-  EXPECT_NE(error_of(none).find("no scene object is defined before this command"), std::string::npos)
-      << error_of(none);
+  EXPECT_NE(error_of(none).find("no scene object is defined before this command"), std::string::npos) << error_of(none);
 
   SceneText cmd;
   cmd.add("init-devise", {});
@@ -427,8 +439,8 @@ TEST(SceneBuilder, CalcRayInMinkowskiIsAStraightLine) {
   SceneText s = minkowski_base();
   // dir = (ksi, chi) = (90, 90) deg: local direction (cos ksi sin chi, sin ksi sin chi, cos chi)
   // = e_(2) = +y; the ray is past-directed: k = -e0 + e2.
-  s.add("calc-ray", {{"filename", file}, {"locted", "locTedObs"}, {"pos", vec({0, -10, 0, 0})},
-                     {"dir", vec({90, 90})}});
+  s.add("calc-ray",
+        {{"filename", file}, {"locted", "locTedObs"}, {"pos", vec({0, -10, 0, 0})}, {"dir", vec({90, 90})}});
   BuildOptions bopts;  // the file goes to the output folder
   bopts.output_dir = std::filesystem::temp_directory_path().string();
   SceneBuilder b(s.desc(), bopts);
@@ -456,7 +468,8 @@ TEST(SceneBuilder, CalcRayWriteErrorsKeepTheOldFileAndSayWhy) {
   std::filesystem::create_directories(dir);
   auto run_calc_ray = [&dir](const std::string& file) {
     SceneText s = minkowski_base();
-    s.add("calc-ray", {{"filename", file}, {"locted", "locTedObs"}, {"pos", vec({0, -10, 0, 0})}, {"dir", vec({90, 90})}});
+    s.add("calc-ray",
+          {{"filename", file}, {"locted", "locTedObs"}, {"pos", vec({0, -10, 0, 0})}, {"dir", vec({90, 90})}});
     BuildOptions bopts;
     bopts.output_dir = dir.string();  // sandboxed scenes write only below the output folder
     SceneBuilder b(s.desc(), bopts);

@@ -45,7 +45,6 @@ TEST(CatalogueCommands, EveryRecordingCommandIsGeoViSsOrADocumentedExtension) {
   }
 }
 
-
 /// A flat scene with a compound "scene" of one ball; `extra` is appended before init-device.
 std::string flat_scene(const std::string& extra) {
   return "(init-metric '(type \"Minkowski\") '(id \"metric\"))\n"
@@ -100,8 +99,9 @@ TEST(CatalogueCommands, PlaneParallelogramExtensionBuildsAParallelogram) {
   // The fourth corner (4, 2, 0) lies beyond the triangle p1 p2 p3 (x <= 3).
   EXPECT_NEAR(jobs[0].job.scene->bounds().hi.x, 4.0, 1e-9);
   EXPECT_NEAR(jobs[0].job.scene->bounds().hi.y, 2.0, 1e-9);
-  const std::string bad = "(plane-parallelogram '(p1 #(0 0 0)) '(p2 #(1 0 0)) '(p3 #(2 0 0)) '(id \"pg\"))\n"
-                          "(add-object '(add-to \"scene\") '(obj \"pg\"))\n";
+  const std::string bad =
+      "(plane-parallelogram '(p1 #(0 0 0)) '(p2 #(1 0 0)) '(p3 #(2 0 0)) '(id \"pg\"))\n"
+      "(add-object '(add-to \"scene\") '(obj \"pg\"))\n";
   try {
     SceneBuilder(evaluate_scene_string(flat_scene(bad), "bad.scm"), {}).build(0);
     FAIL() << "collinear corners were accepted";
@@ -128,10 +128,11 @@ TEST(CatalogueCommands, TextureNamedByAnotherMachinesPathIsFoundByFileName) {
   Image img(4, 2, 3);
   for (float& v : img.pixels) v = 0.5f;
   write_image((t.path / "sky.tif").string(), img);
-  const std::string tex = "(init-texture '(type \"Image\") '(file \"/no/such/home/local/Texturen/sky.tif\") '(id \"img\"))\n"
-                          "(init-shader '(type \"SurfShader\") '(objcolor \"img\") '(id \"skysh\"))\n"
-                          "(solid-ellipsoid '(axlen #(40 40 40)) '(shader \"skysh\") '(id \"sky\"))\n"
-                          "(add-object '(add-to \"scene\") '(obj \"sky\"))\n";
+  const std::string tex =
+      "(init-texture '(type \"Image\") '(file \"/no/such/home/local/Texturen/sky.tif\") '(id \"img\"))\n"
+      "(init-shader '(type \"SurfShader\") '(objcolor \"img\") '(id \"skysh\"))\n"
+      "(solid-ellipsoid '(axlen #(40 40 40)) '(shader \"skysh\") '(id \"sky\"))\n"
+      "(add-object '(add-to \"scene\") '(obj \"sky\"))\n";
   Diagnostics diag;
   BuildOptions bo;
   bo.diag = &diag;

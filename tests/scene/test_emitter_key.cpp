@@ -17,14 +17,17 @@ namespace geovis {
 namespace {
 
 std::string disk_scene(const std::string& metric, const std::string& ring_keys) {
-  return "(init-metric '(type \"" + metric + "\") '(id \"metric\"))\n"
+  return "(init-metric '(type \"" + metric +
+         "\") '(id \"metric\"))\n"
          "(init-solver '(type \"GSL_RK_Cash-Karp\") '(geodType \"lightlike\") '(id \"s\"))\n"
          "(init-camera '(type \"PinHoleCam\") '(res #(8 6)) '(id \"cam\"))\n"
          "(init-raygen '(type \"RayGenSimple\") '(solver \"s\"))\n"
          "(local-tetrad '(pos #(0 40 1.3 0)) '(e0 #(1 0 0 0)) '(e1 #(0 1 0 0)) '(e2 #(0 0 1 0))\n"
          "              '(e3 #(0 0 0 1)) '(incoords #f) '(id \"obs\"))\n"
          "(init-projector '(localtetrad \"obs\") '(id \"proj\"))\n"
-         "(plane-ring '(rin 6.0) '(rout 15.0) " + ring_keys + " '(id \"disk\"))\n"
+         "(plane-ring '(rin 6.0) '(rout 15.0) " +
+         ring_keys +
+         " '(id \"disk\"))\n"
          "(init-device '(type \"standard\") '(obj \"disk\"))\n";
 }
 
@@ -65,12 +68,12 @@ TEST(EmitterKey, ClearErrors) {
             std::string::npos);
   EXPECT_NE(build_error(disk_scene("Minkowski", "'(emitter \"keplerian\")")).find("spherical coordinates"),
             std::string::npos);
-  EXPECT_NE(build_error(disk_scene("Schwarzschild", "'(emitter \"keplerian\") '(normal #(1 0 0))"))
-                .find("equatorial plane"),
-            std::string::npos);
-  EXPECT_NE(build_error(disk_scene("Schwarzschild", "'(emitter \"keplerian\") '(center #(0 0 1))"))
-                .find("equatorial plane"),
-            std::string::npos);
+  EXPECT_NE(
+      build_error(disk_scene("Schwarzschild", "'(emitter \"keplerian\") '(normal #(1 0 0))")).find("equatorial plane"),
+      std::string::npos);
+  EXPECT_NE(
+      build_error(disk_scene("Schwarzschild", "'(emitter \"keplerian\") '(center #(0 0 1))")).find("equatorial plane"),
+      std::string::npos);
 }
 
 TEST(EmitterVelocity, LocalObjectOnItsMotionGivesTheRelativisticDoppler) {
@@ -87,7 +90,9 @@ TEST(EmitterVelocity, LocalObjectOnItsMotionGivesTheRelativisticDoppler) {
         "(local-tetrad '(pos #(0 -10 0 0)) '(e0 #(1 0 0 0)) '(e1 #(0 1 0 0)) '(e2 #(0 0 1 0)) '(e3 #(0 0 0 1))\n"
         "  '(incoords #f) '(id \"obs\"))\n"
         "(init-projector '(localtetrad \"obs\") '(id \"proj\"))\n"
-        "(init-motion '(type \"ConstVelocity\") '(boost #(" + std::to_string(-beta) + " 0 0)) '(id \"move\"))\n"
+        "(init-motion '(type \"ConstVelocity\") '(boost #(" +
+        std::to_string(-beta) +
+        " 0 0)) '(id \"move\"))\n"
         "(solid-ellipsoid `(objtype ,gpObjTypeInCoords) '(axlen #(1 1 1)) '(motion \"move\") '(id \"ball\"))\n"
         "(init-device '(type \"standard\") '(obj \"ball\") '(camera \"cam\"))\n";
     SceneBuilder b(evaluate_scene_string(scene, "moving.scm"), BuildOptions{});

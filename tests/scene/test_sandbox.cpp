@@ -216,10 +216,10 @@ TEST(Sandbox, AnUnboundedAllocationIsStopped) {
                 .find("limit.scm:2: the scene needs more memory than the limit of 48 MiB"),
             std::string::npos);
   // ... and the limit is lifted afterwards.
-  EXPECT_EQ(evaluate_scene_string("(define v (make-vector 10000000 0))\n(init-device `(n ,(vector-length v)))\n",
-                                  "after.scm")
-                .calls.size(),
-            1u);
+  EXPECT_EQ(
+      evaluate_scene_string("(define v (make-vector 10000000 0))\n(init-device `(n ,(vector-length v)))\n", "after.scm")
+          .calls.size(),
+      1u);
 }
 
 TEST(Sandbox, QuietDiscardsWhatTheScenePrints) {
@@ -273,16 +273,16 @@ TEST(Sandbox, ActionsWriteOnlyBelowTheOutputFolder) {
   EXPECT_TRUE(fs::exists(dir.path / "out" / "ray2.txt"));
 
   fs::create_symlink(dir.path, dir.path / "out" / "up");
-  for (const std::string& name : {std::string("../escaped.txt"), (dir.path / "escaped.txt").string(),
-                                  std::string("up/escaped.txt")}) {
+  for (const std::string& name :
+       {std::string("../escaped.txt"), (dir.path / "escaped.txt").string(), std::string("up/escaped.txt")}) {
     SCOPED_TRACE(name);
     try {
       run_actions_of(calc_ray_scene(name), bopts);
       ADD_FAILURE() << "a file outside the output folder must be refused";
     } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find("ray.scm:7: calc-ray: filename: \"" + name +
-                                           "\" is outside the output folder"),
-                std::string::npos)
+      EXPECT_NE(
+          std::string(e.what()).find("ray.scm:7: calc-ray: filename: \"" + name + "\" is outside the output folder"),
+          std::string::npos)
           << e.what();
     }
     EXPECT_FALSE(fs::exists(dir.path / "escaped.txt"));

@@ -46,9 +46,8 @@ std::array<double, 3> apply(const Transform& t, std::array<double, 3> p) {
 struct TempDir {
   std::filesystem::path path;
   TempDir() {
-    path = std::filesystem::temp_directory_path() /
-           ("geovis_scheme_test_" + std::to_string(::getpid()) + "_" +
-            std::to_string(reinterpret_cast<uintptr_t>(this)));
+    path = std::filesystem::temp_directory_path() / ("geovis_scheme_test_" + std::to_string(::getpid()) + "_" +
+                                                     std::to_string(reinterpret_cast<uintptr_t>(this)));
     std::filesystem::create_directories(path);
   }
   ~TempDir() { std::filesystem::remove_all(path); }
@@ -92,8 +91,7 @@ TEST(Scheme, ValuesConvert) {
 }
 
 TEST(Scheme, RepeatedKeysAndSeveralValuesAreKeptInOrder) {
-  const SceneDescription d = eval(
-      "(init-texture '(texture \"a\") '(texture \"b\" \"c\") '(type \"CheckerT2D\"))");
+  const SceneDescription d = eval("(init-texture '(texture \"a\") '(texture \"b\" \"c\") '(type \"CheckerT2D\"))");
   const ParamSet& ps = d.calls[0].params;
   EXPECT_EQ(ps.get_strings("texture"), (std::vector<std::string>{"a", "b", "c"}));
   std::vector<std::string> keys;
@@ -153,7 +151,8 @@ TEST(Scheme, DoBodyMayContainDefinitions) {
 TEST(Scheme, FullSchemeIsAvailable) {
   const SceneDescription d = eval(
       "(define (sq x) (* x x))\n"
-      "(let loop ((i 0)) (when (< i 2) (init-light `(n ,(sq i)) `(s ,(string-append \"p\" (number->string i)))) (loop (+ i 1))))\n"
+      "(let loop ((i 0)) (when (< i 2) (init-light `(n ,(sq i)) `(s ,(string-append \"p\" (number->string i)))) (loop "
+      "(+ i 1))))\n"
       "(init-light `(v ,(vector 1 (sqrt 16) (expt 2 3))) `(l ,@(list 7 8)))");
   ASSERT_EQ(d.calls.size(), 3u);
   EXPECT_EQ(d.calls[1].params.get_number("n"), 1.0);
@@ -321,7 +320,8 @@ TEST(SchemePrelude, CalcHFoVIsThePinholeRelation) {
 
 TEST(SchemePrelude, EveryLanguageNameIsBound) {
   std::string text;
-  for (const auto& n : scene_language_names()) text += "(if (not (defined? '" + n + ")) (error \"missing\" '" + n + "))\n";
+  for (const auto& n : scene_language_names())
+    text += "(if (not (defined? '" + n + ")) (error \"missing\" '" + n + "))\n";
   SchemeOptions trusted;  // defined? needs full Guile; the sandbox binds the same names
   trusted.trusted = true;
   EXPECT_EQ(error_of(text, trusted), "");
@@ -337,7 +337,8 @@ TEST(SchemePrelude, EveryLanguageNameIsBound) {
 TEST(SchemeCommands, Vec3Vec4) {
   EXPECT_EQ(std::get<std::vector<double>>(value_of("(vec3 1 2 3)").v), (std::vector<double>{1, 2, 3}));
   EXPECT_EQ(std::get<std::vector<double>>(value_of("(vec4 0 1/2 2 3)").v), (std::vector<double>{0, 0.5, 2, 3}));
-  EXPECT_NE(error_of("(vec4 1 2 3)").find("test.scm:1: vec4: expected 4 numbers, found 3 arguments"), std::string::npos);
+  EXPECT_NE(error_of("(vec4 1 2 3)").find("test.scm:1: vec4: expected 4 numbers, found 3 arguments"),
+            std::string::npos);
   EXPECT_NE(error_of("(vec3 1 \"2\" 3)").find("found the string \"2\""), std::string::npos);
 }
 
@@ -425,11 +426,13 @@ TEST(SchemeCommands, MatricesSurviveQuasiquoteAndVariables) {
 }
 
 TEST(SchemeCommands, TransformErrors) {
-  EXPECT_NE(error_of("(rotate-obj \"q\" 30)").find("rotate-obj: expected the axis \"x\", \"y\" or \"z\""), std::string::npos);
+  EXPECT_NE(error_of("(rotate-obj \"q\" 30)").find("rotate-obj: expected the axis \"x\", \"y\" or \"z\""),
+            std::string::npos);
   EXPECT_NE(error_of("(rotate-obj #(0 0 0) 30)").find("non-zero"), std::string::npos);
   EXPECT_NE(error_of("(rotate-obj \"x\")").find("the angle is missing"), std::string::npos);
-  EXPECT_NE(error_of("(scale-obj #(1 2) (rotate-obj \"x\" 3))").find("cannot compose a 2D transform with the trailing 3D"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of("(scale-obj #(1 2) (rotate-obj \"x\" 3))").find("cannot compose a 2D transform with the trailing 3D"),
+      std::string::npos);
   EXPECT_NE(error_of("(translate-obj #(1 2 3) 5)").find("expected a trailing matrix"), std::string::npos);
   EXPECT_NE(error_of("(scale-obj)").find("found no argument"), std::string::npos);
 }
@@ -485,7 +488,8 @@ TEST(SchemeCommands, GetenvOfUnsetVariableWarns) {
 
 TEST(SchemeErrors, UnknownCommandSuggestsTheClosest) {
   const std::string e = error_of("\n\n(init-metrik '(type \"Kerr\"))");
-  EXPECT_NE(e.find("test.scm:3: unknown command \"init-metrik\"; did you mean \"init-metric\"?"), std::string::npos) << e;
+  EXPECT_NE(e.find("test.scm:3: unknown command \"init-metrik\"; did you mean \"init-metric\"?"), std::string::npos)
+      << e;
   EXPECT_NE(error_of("(solid-sphere '(id \"s\"))").find("unknown command \"solid-sphere\""), std::string::npos);
 }
 
@@ -542,8 +546,9 @@ TEST(SchemeErrors, RunawayLoopsHitTheCallLimit) {
 TEST(SchemeErrors, EndlessLoopsHitTheTimeLimit) {
   SchemeOptions opts;
   opts.time_limit_seconds = 0.2;
-  EXPECT_NE(error_of("(define x 1)\n(let loop () (loop))", opts).find("test.scm:2: the scene ran longer than the time limit"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of("(define x 1)\n(let loop () (loop))", opts).find("test.scm:2: the scene ran longer than the time limit"),
+      std::string::npos);
   // A quick scene is unaffected, and a later evaluation is not interrupted by a stale limit.
   EXPECT_EQ(eval("(init-metric '(type \"Minkowski\"))", opts).calls.size(), 1u);
   EXPECT_EQ(eval("(do ((i 0 (+ i 1))) ((= i 100000)))").calls.size(), 0u);

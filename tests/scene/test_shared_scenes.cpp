@@ -198,8 +198,7 @@ TEST(SharedScenes, MorrisThorneHasOneFrameAndTwoCharts) {
   const auto devices = calls_of(d, "init-device");
   ASSERT_EQ(devices.size(), 1u);
   EXPECT_EQ(devices[0]->params.get_string("camera"), "cam2");
-  EXPECT_EQ(std::get<std::vector<double>>(setparam(*devices[0])[2].v),
-            (std::vector<double>{0.0, 1.0, 1.5707963, 0.0}));
+  EXPECT_EQ(std::get<std::vector<double>>(setparam(*devices[0])[2].v), (std::vector<double>{0.0, 1.0, 1.5707963, 0.0}));
   EXPECT_EQ(by_id(d, "bgimage")->params.get_number("chart"), 0.0);
   EXPECT_EQ(by_id(d, "bgimage2")->params.get_number("chart"), 1.0);
   EXPECT_EQ(calls_of(d, "init-camera").size(), 2u);

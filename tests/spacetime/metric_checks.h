@@ -37,9 +37,9 @@ inline double expect_christoffel_matches_ad(const Metric& m, const Vec4& x, doub
         const double ref = std::max(std::fabs(ad.G[i][j][k]), floor);
         const double d = std::fabs(closed.G[i][j][k] - ad.G[i][j][k]);
         worst = std::max(worst, d / ref);
-        EXPECT_LE(d, rel * ref) << m.name() << " Gamma^" << i << "_" << j << k << " at (" << x[0] << ", "
-                                << x[1] << ", " << x[2] << ", " << x[3] << "): closed " << closed.G[i][j][k]
-                                << " AD " << ad.G[i][j][k];
+        EXPECT_LE(d, rel * ref) << m.name() << " Gamma^" << i << "_" << j << k << " at (" << x[0] << ", " << x[1]
+                                << ", " << x[2] << ", " << x[3] << "): closed " << closed.G[i][j][k] << " AD "
+                                << ad.G[i][j][k];
       }
   return worst;
 }
@@ -203,9 +203,8 @@ inline double expect_jacobi_rhs_matches_riemann(const Metric& m, const Vec4& x, 
       double t_abs = 0;
       const double t = -gamma(mu, k, ve, &t_abs);
       const double diff = std::fabs(dy[kJacobiK + 4 * v + mu] - t);
-      EXPECT_LE(diff, rel * std::max(t_abs, 1e-300))
-          << m.name() << " transport of vector " << v << ", component " << mu << ": " << dy[kJacobiK + 4 * v + mu]
-          << " vs " << t;
+      EXPECT_LE(diff, rel * std::max(t_abs, 1e-300)) << m.name() << " transport of vector " << v << ", component " << mu
+                                                     << ": " << dy[kJacobiK + 4 * v + mu] << " vs " << t;
     }
   }
   for (int i = 0; i < 4; ++i) EXPECT_EQ(dy[i], k[i]);
@@ -221,8 +220,8 @@ inline void expect_orthonormal(const Metric& m, const Vec4& x, TetradKind kind, 
     for (int b = 0; b < 4; ++b) {
       const double eta = a == b ? (a == 0 ? -1.0 : 1.0) : 0.0;
       EXPECT_NEAR(dot(g, e[a], e[b]), eta, tol)
-          << m.name() << " " << tetrad_kind_name(kind) << " tetrad, g(e" << a << ", e" << b << ") at (" << x[0]
-          << ", " << x[1] << ", " << x[2] << ", " << x[3] << ")";
+          << m.name() << " " << tetrad_kind_name(kind) << " tetrad, g(e" << a << ", e" << b << ") at (" << x[0] << ", "
+          << x[1] << ", " << x[2] << ", " << x[3] << ")";
     }
   EXPECT_GT(e[0][0], 0.0) << m.name() << " " << tetrad_kind_name(kind) << ": e_(0) not future-directed";
 }

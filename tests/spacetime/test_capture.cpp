@@ -117,8 +117,8 @@ TEST(Capture, CertificateHoldsWhereverTheSampledPotentialSaysSo) {
       }
     }
   }
-  std::printf("capture certificate: %d certified, %d of %d clear cases, %d with a root\n", certified,
-              clear_certified, clear, with_root);
+  std::printf("capture certificate: %d certified, %d of %d clear cases, %d with a root\n", certified, clear_certified,
+              clear, with_root);
   EXPECT_GT(with_root, 300);
   EXPECT_GT(clear, 1000);
   EXPECT_GE(clear_certified, clear - clear / 100);
@@ -211,7 +211,8 @@ TEST(Capture, RayTurningJustOutsideThePhotonOrbitIsNotStopped) {
     for (const double sense : {1.0, -1.0}) {
       // Prograde when L/E > 0 (the equations are even in (E, L, k)).
       const Vec4 x_probe{{0, 10.0, 0.5 * kPi, 0}};
-      const Vec4 k_probe = local_null_direction(m->natural_tetrad(x_probe, TetradKind::Default), Vec3{0, 0, sense}, true);
+      const Vec4 k_probe =
+          local_null_direction(m->natural_tetrad(x_probe, TetradKind::Default), Vec3{0, 0, sense}, true);
       const KerrMinoConstants c_probe = kerr_mino_constants(1.0, a, x_probe, k_probe, 0.0);
       const double r_ph = photon_orbit(1.0, std::fabs(a), c_probe.L * c_probe.E * (a >= 0 ? 1 : -1) > 0);
       for (const Form& f : kForms) {
@@ -314,10 +315,11 @@ TEST(Capture, SphericalHolesStopOnlyRaysThatFallIn) {
     std::vector<std::pair<std::string, double>> params;
     double r_photon;
   };
-  const Case cases[] = {{"Schwarzschild", {{"mass", 1.0}}, 3.0},
-                        {"ReissnerNordstrom", {{"mass", 1.0}, {"charge", 0.6}}, 0.5 * (3.0 + std::sqrt(9.0 - 8 * 0.36))},
-                        {"ReissnerNordstrom", {{"mass", 1.0}, {"charge", 0.9}}, 0.5 * (3.0 + std::sqrt(9.0 - 8 * 0.81))},
-                        {"ReissnerNordstrom", {{"mass", 1.0}, {"charge", 1.05}}, 0.5 * (3.0 + std::sqrt(9.0 - 8 * 1.1025))}};
+  const Case cases[] = {
+      {"Schwarzschild", {{"mass", 1.0}}, 3.0},
+      {"ReissnerNordstrom", {{"mass", 1.0}, {"charge", 0.6}}, 0.5 * (3.0 + std::sqrt(9.0 - 8 * 0.36))},
+      {"ReissnerNordstrom", {{"mass", 1.0}, {"charge", 0.9}}, 0.5 * (3.0 + std::sqrt(9.0 - 8 * 0.81))},
+      {"ReissnerNordstrom", {{"mass", 1.0}, {"charge", 1.05}}, 0.5 * (3.0 + std::sqrt(9.0 - 8 * 1.1025))}};
   std::mt19937 rng(21);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   for (const Case& c : cases) {

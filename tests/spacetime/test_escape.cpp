@@ -45,10 +45,17 @@ double h2(const Metric& m, double q) {
 }  // namespace
 
 TEST(Escape, DeclaredByTheAsymptoticallyFlatMetrics) {
-  const std::set<std::string> flat = {"Minkowski",         "Schwarzschild",       "SchwarzschildCart",
-                                      "SchwarzschildIsotropic", "EddFinkIn",     "PainleveGullstrand",
-                                      "KerrBL",            "ReissnerNordstrom",   "JanisNewmanWinicour",
-                                      "MorrisThorne",      "Kruskal"};
+  const std::set<std::string> flat = {"Minkowski",
+                                      "Schwarzschild",
+                                      "SchwarzschildCart",
+                                      "SchwarzschildIsotropic",
+                                      "EddFinkIn",
+                                      "PainleveGullstrand",
+                                      "KerrBL",
+                                      "ReissnerNordstrom",
+                                      "JanisNewmanWinicour",
+                                      "MorrisThorne",
+                                      "Kruskal"};
   for (const std::string& n : metric_names()) {
     if (n == "Kottler") continue;
     EXPECT_EQ(make_metric(n)->asymptotically_flat(), flat.count(n) == 1) << n;
@@ -145,13 +152,20 @@ TEST(Escape, EscapedRaysNeverTurnBack) {
   // both forms: when a ray stops as escaped, following it further (escape off) to 1e4 times the
   // radius must never bring it closer to the origin.
   const std::vector<Case> cases = {
-      {"Schwarzschild", {}, true},   {"Schwarzschild", {}, false},
-      {"KerrBL", {{"angmom", 0.9}}, true}, {"KerrBL", {{"angmom", -0.998}}, true},
-      {"KerrBL", {{"angmom", 0.7}}, false}, {"SchwarzschildCart", {}},
-      {"SchwarzschildIsotropic", {}}, {"ReissnerNordstrom", {{"charge", 0.9}}},
-      {"ReissnerNordstrom", {{"charge", 1.1}}}, {"JanisNewmanWinicour", {{"gamma", 0.7}}},
-      {"JanisNewmanWinicour", {{"gamma", 0.3}}}, {"MorrisThorne", {}},
-      {"Minkowski", {}},  {"PainleveGullstrand", {}},
+      {"Schwarzschild", {}, true},
+      {"Schwarzschild", {}, false},
+      {"KerrBL", {{"angmom", 0.9}}, true},
+      {"KerrBL", {{"angmom", -0.998}}, true},
+      {"KerrBL", {{"angmom", 0.7}}, false},
+      {"SchwarzschildCart", {}},
+      {"SchwarzschildIsotropic", {}},
+      {"ReissnerNordstrom", {{"charge", 0.9}}},
+      {"ReissnerNordstrom", {{"charge", 1.1}}},
+      {"JanisNewmanWinicour", {{"gamma", 0.7}}},
+      {"JanisNewmanWinicour", {{"gamma", 0.3}}},
+      {"MorrisThorne", {}},
+      {"Minkowski", {}},
+      {"PainleveGullstrand", {}},
   };
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> U(0.0, 1.0);
@@ -163,8 +177,9 @@ TEST(Escape, EscapedRaysNeverTurnBack) {
       const bool cart = cartesian_chart(*m);
       const double q = c.name == std::string("MorrisThorne") ? 8 * U(rng) - 4 : 2.5 + 10 * U(rng);
       const double th = 0.3 + (kPi - 0.6) * U(rng), ph = 2 * kPi * U(rng);
-      const Vec4 x = cart ? Vec4{{0, q * std::sin(th) * std::cos(ph), q * std::sin(th) * std::sin(ph), q * std::cos(th)}}
-                          : Vec4{{0, q, th, ph}};
+      const Vec4 x = cart
+                         ? Vec4{{0, q * std::sin(th) * std::cos(ph), q * std::sin(th) * std::sin(ph), q * std::cos(th)}}
+                         : Vec4{{0, q, th, ph}};
       if (!m->is_valid(x)) continue;
       const Vec3 d = normalize(Vec3{2 * U(rng) - 1, 2 * U(rng) - 1, 2 * U(rng) - 1});
       const bool backward = n % 2 == 0;

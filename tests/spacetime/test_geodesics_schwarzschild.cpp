@@ -19,7 +19,7 @@ constexpr double kPi = 3.141592653589793238462643383280;
 
 struct AdaptiveCase {
   SolverKind kind;
-  double eps;  ///< eps_abs used for the precision tests (RK2 is 2nd order: looser to stay fast)
+  double eps;             ///< eps_abs used for the precision tests (RK2 is 2nd order: looser to stay fast)
   bool separable = true;  ///< Carter's equations in Mino time (kerr_mino.h), else the coordinate form
 };
 /// Every adaptive integrator, each through both forms of the geodesic equation.

@@ -211,12 +211,9 @@ double oscillator_error(SolverKind kind, int n) {
 
 TEST(Integrators, FixedStepConvergesAtNominalOrder) {
   const std::vector<OrderCase> cases = {
-      {SolverKind::RK2, 2, {128, 256, 512, 1024}},
-      {SolverKind::RK4, 4, {64, 128, 256, 512}},
-      {SolverKind::CashKarp45, 5, {32, 64, 128, 256}},
-      {SolverKind::Fehlberg45, 4, {64, 128, 256, 512}},
-      {SolverKind::DormandPrince54, 5, {32, 64, 128, 256}},
-      {SolverKind::DormandPrince853, 8, {8, 16, 32, 64}},
+      {SolverKind::RK2, 2, {128, 256, 512, 1024}},           {SolverKind::RK4, 4, {64, 128, 256, 512}},
+      {SolverKind::CashKarp45, 5, {32, 64, 128, 256}},       {SolverKind::Fehlberg45, 4, {64, 128, 256, 512}},
+      {SolverKind::DormandPrince54, 5, {32, 64, 128, 256}},  {SolverKind::DormandPrince853, 8, {8, 16, 32, 64}},
       {SolverKind::BulirschStoer, 8, {8, 16, 32, 64}},  // 4 extrapolation rows with fixed steps
       {SolverKind::RungeKuttaNystrom86, 8, {8, 16, 32, 64}},
   };
@@ -239,12 +236,9 @@ TEST(Integrators, KeplerOrbitFixedStepOrder) {
   // methods have only about one decade of h there, hence the looser slope tolerance.
   const double T = kTwoPi;
   const std::vector<OrderCase> cases = {
-      {SolverKind::RK2, 2, {320, 640, 1280, 2560}},
-      {SolverKind::RK4, 4, {640, 1280, 2560}},
-      {SolverKind::CashKarp45, 5, {80, 160, 320, 640}},
-      {SolverKind::Fehlberg45, 4, {226, 452, 905}},
-      {SolverKind::DormandPrince54, 5, {226, 452, 905}},
-      {SolverKind::DormandPrince853, 8, {28, 40, 56, 80}},
+      {SolverKind::RK2, 2, {320, 640, 1280, 2560}},      {SolverKind::RK4, 4, {640, 1280, 2560}},
+      {SolverKind::CashKarp45, 5, {80, 160, 320, 640}},  {SolverKind::Fehlberg45, 4, {226, 452, 905}},
+      {SolverKind::DormandPrince54, 5, {226, 452, 905}}, {SolverKind::DormandPrince853, 8, {28, 40, 56, 80}},
       {SolverKind::BulirschStoer, 8, {20, 28, 40, 56}},
   };
   for (const auto& c : cases) {

@@ -28,8 +28,14 @@ namespace {
 class ConformalRadiationFLRW final : public MetricCRTP<ConformalRadiationFLRW> {
  public:
   ConformalRadiationFLRW()
-      : MetricCRTP({"TestConformalFLRW", {"t", "x", "y", "z"}, CoordType::Cartesian, {}, {TetradKind::Default},
-                    "test metric t^2 eta", Vec4{{1.0, 0.0, 0.0, 0.0}}, {}}) {}
+      : MetricCRTP({"TestConformalFLRW",
+                    {"t", "x", "y", "z"},
+                    CoordType::Cartesian,
+                    {},
+                    {TetradKind::Default},
+                    "test metric t^2 eta",
+                    Vec4{{1.0, 0.0, 0.0, 0.0}},
+                    {}}) {}
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
     for (int i = 0; i < 4; ++i)

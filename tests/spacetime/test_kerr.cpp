@@ -68,8 +68,8 @@ TEST(KerrBL, ClosedChristoffelAndAccelMatchAD) {
     const Vec4 k{{1.0 + 0.5 * U(rng), U(rng), 0.1 * U(rng), 0.1 * U(rng)}};
     worst_a = std::max(worst_a, mc::expect_accel_matches_ad(*m, p.x, k));
   }
-  std::printf("KerrBL: worst relative |Gamma_closed - Gamma_AD| = %.3g, |accel - (-Gamma_AD k k)| = %.3g\n",
-              worst_G, worst_a);
+  std::printf("KerrBL: worst relative |Gamma_closed - Gamma_AD| = %.3g, |accel - (-Gamma_AD k k)| = %.3g\n", worst_G,
+              worst_a);
 }
 
 TEST(KerrBL, NaturalTetradsOrthonormal) {
@@ -110,11 +110,11 @@ TEST(KerrBL, StaticTetradFollowsMotion4DSignConvention) {
 }
 
 TEST(KerrBL, BadParametersAndPlacesAreErrors) {
-  EXPECT_THROW(make_metric("KerrBL", {{"angmom", 1.5}}), Error);          // |a| > M
-  EXPECT_THROW(make_metric("KerrBL", {{"angmom", -1.01}}), Error);        // |a| > M
-  EXPECT_THROW(make_metric("KerrBL", {{"mass", -1.0}}), Error);           // negative mass
-  EXPECT_THROW(make_metric("KerrBL", {{"mass", 0.3}}), Error);            // default a = 0.5 > M
-  EXPECT_THROW(make_metric("KerrBL", {{"angmon", 0.1}}), Error);          // unknown key
+  EXPECT_THROW(make_metric("KerrBL", {{"angmom", 1.5}}), Error);             // |a| > M
+  EXPECT_THROW(make_metric("KerrBL", {{"angmom", -1.01}}), Error);           // |a| > M
+  EXPECT_THROW(make_metric("KerrBL", {{"mass", -1.0}}), Error);              // negative mass
+  EXPECT_THROW(make_metric("KerrBL", {{"mass", 0.3}}), Error);               // default a = 0.5 > M
+  EXPECT_THROW(make_metric("KerrBL", {{"angmon", 0.1}}), Error);             // unknown key
   EXPECT_NO_THROW(make_metric("KerrBL", {{"mass", 1.0}, {"angmom", 1.0}}));  // extreme Kerr allowed
   auto m = make_metric("KerrBL", {{"mass", 1.0}, {"angmom", 0.9}});
   // A rejected value leaves the metric unchanged.
@@ -215,9 +215,10 @@ void constants_along_close_light_ray(bool separable) {
     const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
     if (r.reason != StopReason::Callback || rmin >= 4.0) continue;  // captured, or not close enough
     tested = true;
-    std::printf("KerrBL a=0.9 ray (%s): frac %.2f, r_min %.4f, %d steps; max rel drift E %.2g L %.2g Q %.2g, "
-                "|g(k,k)|/E^2 %.2g (Q0 = %.4g)\n",
-                separable ? "Mino" : "coordinates", frac, rmin, r.steps, dE, dL, dQ, dC, c0.Q);
+    std::printf(
+        "KerrBL a=0.9 ray (%s): frac %.2f, r_min %.4f, %d steps; max rel drift E %.2g L %.2g Q %.2g, "
+        "|g(k,k)|/E^2 %.2g (Q0 = %.4g)\n",
+        separable ? "Mino" : "coordinates", frac, rmin, r.steps, dE, dL, dQ, dC, c0.Q);
     EXPECT_GT(std::fabs(c0.Q), 1.0);  // a genuinely non-equatorial ray
     EXPECT_LE(dE, 1e-9);
     EXPECT_LE(dL, 1e-9);
@@ -267,14 +268,14 @@ void circular_photon_orbit(double a, bool prograde, bool separable, double& dr_m
 
 TEST(KerrBL, CircularPhotonOrbitsStayCircular) {
   for (bool separable : {false, true})
-  for (bool prograde : {true, false}) {
-    double dr = 0, dth = 0;
-    StopReason reason{};
-    circular_photon_orbit(0.9, prograde, separable, dr, dth, reason);
-    std::printf("KerrBL a=0.9 %s photon orbit (%s): max |r - r_ph| = %.3g over one revolution\n",
-                prograde ? "prograde" : "retrograde", separable ? "Mino" : "coordinates", dr);
-    EXPECT_EQ(reason, StopReason::Callback);
-    EXPECT_LT(dr, 1e-8);
-    EXPECT_LT(dth, 1e-12);
-  }
+    for (bool prograde : {true, false}) {
+      double dr = 0, dth = 0;
+      StopReason reason{};
+      circular_photon_orbit(0.9, prograde, separable, dr, dth, reason);
+      std::printf("KerrBL a=0.9 %s photon orbit (%s): max |r - r_ph| = %.3g over one revolution\n",
+                  prograde ? "prograde" : "retrograde", separable ? "Mino" : "coordinates", dr);
+      EXPECT_EQ(reason, StopReason::Callback);
+      EXPECT_LT(dr, 1e-8);
+      EXPECT_LT(dth, 1e-12);
+    }
 }

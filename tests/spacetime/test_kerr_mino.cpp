@@ -86,9 +86,10 @@ TEST(KerrMino, AgreesWithTheCoordinateFormOnRandomGeodesics) {
     EXPECT_LT(dt, 1e-8 * (1 + std::fabs(y[0][0]))) << "geodesic " << n;
     EXPECT_LT(dk, 1e-8 * kn) << "geodesic " << n;
   }
-  std::printf("Mino vs coordinate form: %d geodesics compared at lambda = 15 (%d captured by both): "
-              "worst relative difference x %.2g, k %.2g\n",
-              compared, captured, worst_x, worst_k);
+  std::printf(
+      "Mino vs coordinate form: %d geodesics compared at lambda = 15 (%d captured by both): "
+      "worst relative difference x %.2g, k %.2g\n",
+      compared, captured, worst_x, worst_k);
   EXPECT_GT(compared, 60);
 }
 
@@ -137,8 +138,8 @@ TEST(KerrMino, ConstantsExactNullConstraintKeptAndStepsInAffineUnits) {
   };
   double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
   const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
-  std::printf("KerrBL a=0.9, Mino: r_min %.3f, %d steps, rel. E %.2g L %.2g Q %.2g, |g(k,k)|/E^2 %.2g\n", rmin,
-              r.steps, dE, dL, dQ, dC);
+  std::printf("KerrBL a=0.9, Mino: r_min %.3f, %d steps, rel. E %.2g L %.2g Q %.2g, |g(k,k)|/E^2 %.2g\n", rmin, r.steps,
+              dE, dL, dQ, dC);
   EXPECT_EQ(r.reason, StopReason::BoundingBox);
   EXPECT_LT(rmin, 5.0);
   EXPECT_GT(std::fabs(c0.Q), 1.0);
@@ -235,7 +236,8 @@ TEST(KerrMino, RaysPassingCloseToTheAxisDoNotStall) {
       const double L = i < 0 ? 0.0 : (i % 2 ? -1.0 : 1.0) * std::pow(10.0, -9.0 + 7.0 * i / 28.0);
       const double det = -g[0][0] * g[3][3] + g[0][3] * g[0][3];  // of [[−g_tt, −g_tφ], [g_tφ, g_φφ]]
       Vec4 k{{(g[3][3] * 1.0 + g[0][3] * L) / det, 0.3, 0.0, (-g[0][3] * 1.0 - g[0][0] * L) / det}};
-      const double rest = g[0][0] * k[0] * k[0] + 2 * g[0][3] * k[0] * k[3] + g[3][3] * k[3] * k[3] + g[1][1] * k[1] * k[1];
+      const double rest =
+          g[0][0] * k[0] * k[0] + 2 * g[0][3] * k[0] * k[3] + g[3][3] * k[3] * k[3] + g[1][1] * k[1] * k[1];
       k[2] = -std::sqrt(-rest / g[2][2]);
       const KerrMinoConstants c0 = kerr_mino_constants(1.0, a, x, k, 0.0);
       SCOPED_TRACE(testing::Message() << "a = " << a << ", L/E = " << c0.L / c0.E);
@@ -254,7 +256,7 @@ TEST(KerrMino, RaysPassingCloseToTheAxisDoNotStall) {
       const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
       ++rays;
       ASSERT_EQ(r.reason, StopReason::LambdaMax) << stop_reason_name(r.reason) << " after " << r.steps << " steps";
-      EXPECT_LT(th_min, 0.01);  // it came to the pole ...
+      EXPECT_LT(th_min, 0.01);          // it came to the pole ...
       EXPECT_GT(std::fabs(y[2]), 0.1);  // ... and left it
       const Vec4 x1{{y[0], y[1], y[2], y[3]}}, k1{{y[4], y[5], y[6], y[7]}};
       const KerrMinoConstants c1 = kerr_mino_constants(1.0, a, x1, k1, 0.0);

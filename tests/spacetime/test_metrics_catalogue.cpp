@@ -51,60 +51,122 @@ TEST(MetricsCatalogue, ChristoffelsAndTetradsAtRandomPointsAndParameters) {
     std::function<Vec4(std::mt19937&)> point;
   };
   const std::vector<Case> cases = {
-      {"Goedel", {{"a", 0.7}, {"zeta", 0.2}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.1, 1.2), uni(r, -3, 3), uni(r, -5, 5)}}; }},
-      {"GoedelScaled", {{"rg", 2.5}, {"zeta", -0.3}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.1, 0.8), uni(r, -3, 3), uni(r, -5, 5)}}; }},
-      {"GoedelCart", {{"a", 0.7}, {"zeta", 0.2}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -0.8, 0.8), uni(r, -0.8, 0.8), uni(r, -5, 5)}}; }},
-      {"GoedelScaledCart", {{"rg", 2.5}, {"zeta", -0.3}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -0.5, 0.5), uni(r, -0.5, 0.5), uni(r, -5, 5)}}; }},
-      {"Kasner", {{"u", 2.5}},
-       [](std::mt19937& r) { return Vec4{{uni(r, 0.2, 5), uni(r, -5, 5), uni(r, -5, 5), uni(r, -5, 5)}}; }},
-      {"Curzon", {{"mass", 1.7}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.5, 8), uni(r, -3, 3), uni(r, -6, 6)}}; }},
-      {"CosmicStringSchwarzschild", {{"mass", 0.8}, {"beta", 0.3}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.7, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
-      {"MinkowskiConformal", {},
-       [](std::mt19937& r) { return Vec4{{uni(r, -3, 3), uni(r, 0.1, 3.0), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
-      {"SchwarzschildTortoise", {{"mass", 1.3}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -10, 40), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
-      {"MinkowskiRotLattice", {{"omega", 0.3}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.1, 3.2), uni(r, -3, 3), uni(r, -5, 5)}}; }},
-      {"StraightSpinningString", {{"a", 0.7}, {"k", 0.6}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.3, 9), uni(r, -3, 3), uni(r, -5, 5)}}; }},
-      {"SchwarzschildGravWave", {{"mass", 0.8}, {"epsilon", 0.05}, {"sigma", 0.5}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.5, 8), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
+      {"Goedel",
+       {{"a", 0.7}, {"zeta", 0.2}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 0.1, 1.2), uni(r, -3, 3), uni(r, -5, 5)}};
+       }},
+      {"GoedelScaled",
+       {{"rg", 2.5}, {"zeta", -0.3}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 0.1, 0.8), uni(r, -3, 3), uni(r, -5, 5)}};
+       }},
+      {"GoedelCart",
+       {{"a", 0.7}, {"zeta", 0.2}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, -0.8, 0.8), uni(r, -0.8, 0.8), uni(r, -5, 5)}};
+       }},
+      {"GoedelScaledCart",
+       {{"rg", 2.5}, {"zeta", -0.3}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, -0.5, 0.5), uni(r, -0.5, 0.5), uni(r, -5, 5)}};
+       }},
+      {"Kasner",
+       {{"u", 2.5}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, 0.2, 5), uni(r, -5, 5), uni(r, -5, 5), uni(r, -5, 5)}};
+       }},
+      {"Curzon",
+       {{"mass", 1.7}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 0.5, 8), uni(r, -3, 3), uni(r, -6, 6)}};
+       }},
+      {"CosmicStringSchwarzschild",
+       {{"mass", 0.8}, {"beta", 0.3}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 1.7, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}};
+       }},
+      {"MinkowskiConformal",
+       {},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -3, 3), uni(r, 0.1, 3.0), uni(r, 0.2, 2.9), uni(r, -3, 3)}};
+       }},
+      {"SchwarzschildTortoise",
+       {{"mass", 1.3}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, -10, 40), uni(r, 0.2, 2.9), uni(r, -3, 3)}};
+       }},
+      {"MinkowskiRotLattice",
+       {{"omega", 0.3}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 0.1, 3.2), uni(r, -3, 3), uni(r, -5, 5)}};
+       }},
+      {"StraightSpinningString",
+       {{"a", 0.7}, {"k", 0.6}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 1.3, 9), uni(r, -3, 3), uni(r, -5, 5)}};
+       }},
+      {"SchwarzschildGravWave",
+       {{"mass", 0.8}, {"epsilon", 0.05}, {"sigma", 0.5}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 2.5, 8), uni(r, 0.2, 2.9), uni(r, -3, 3)}};
+       }},
       // u = t − x across the wave and both flat regions.
-      {"PlaneGravWave", {{"long_ext", 0.8}, {"degree", 12}},
+      {"PlaneGravWave",
+       {{"long_ext", 0.8}, {"degree", 12}},
        [](std::mt19937& r) {
          const double t = uni(r, -3, 3);
          return Vec4{{t, t - uni(r, -1.5, 0.9), uni(r, -3, 3), uni(r, -3, 3)}};
        }},
       // ρ up to 8: both the series (ρ < 2) and the library Bessel functions.
-      {"BesselGravWaveCart", {{"c", 0.7}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, -6, 6), uni(r, -6, 6), uni(r, -5, 5)}}; }},
-      {"HalilsoyWave", {{"alpha", 0.6}, {"c", 0.8}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 0.2, 9), uni(r, -3, 3), uni(r, -5, 5)}}; }},
+      {"BesselGravWaveCart",
+       {{"c", 0.7}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, -6, 6), uni(r, -6, 6), uni(r, -5, 5)}};
+       }},
+      {"HalilsoyWave",
+       {{"alpha", 0.6}, {"c", 0.8}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 0.2, 9), uni(r, -3, 3), uni(r, -5, 5)}};
+       }},
       // Across the bubble wall (r_s near R = 1.5) and inside it.
-      {"AlcubierreWarp", {{"sigma", 5.0}, {"r", 1.5}, {"vs", 0.9}},
+      {"AlcubierreWarp",
+       {{"sigma", 5.0}, {"r", 1.5}, {"vs", 0.9}},
        [](std::mt19937& r) {
          const double t = uni(r, -2, 2);
          return Vec4{{t, 0.9 * t + uni(r, -2, 2), uni(r, -2, 2), uni(r, -2, 2)}};
        }},
       // ρ >= 2.5: g_φφ > 0 there, so that the comoving tetrad exists.
-      {"ChazyCurzonRot", {{"mass", 0.8}, {"p", -0.3}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.5, 8), uni(r, -3, 3), uni(r, -6, 6)}}; }},
-      {"TomimatsuSato", {{"k", 0.7}, {"p", 0.6}, {"q", -0.8}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.5, 9), uni(r, -0.95, 0.95), uni(r, -3, 3)}}; }},
-      {"Glampedakis", {{"mass", 1.2}, {"angmom", 0.7}, {"epsilon", 0.3}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 3.5, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
-      {"HartleThorneGB", {{"mass", 0.9}, {"angmom", 0.5}, {"eta", 0.8}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 3.0, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
-      {"ErezRosenVar", {{"mass", 1.3}, {"q", -0.7}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 2.8, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
-      {"Bonnor", {{"mass", 0.7}, {"b", 0.9}},
-       [](std::mt19937& r) { return Vec4{{uni(r, -5, 5), uni(r, 1.9, 12), uni(r, 0.2, 2.9), uni(r, -3, 3)}}; }},
+      {"ChazyCurzonRot",
+       {{"mass", 0.8}, {"p", -0.3}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 2.5, 8), uni(r, -3, 3), uni(r, -6, 6)}};
+       }},
+      {"TomimatsuSato",
+       {{"k", 0.7}, {"p", 0.6}, {"q", -0.8}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 2.5, 9), uni(r, -0.95, 0.95), uni(r, -3, 3)}};
+       }},
+      {"Glampedakis",
+       {{"mass", 1.2}, {"angmom", 0.7}, {"epsilon", 0.3}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 3.5, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}};
+       }},
+      {"HartleThorneGB",
+       {{"mass", 0.9}, {"angmom", 0.5}, {"eta", 0.8}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 3.0, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}};
+       }},
+      {"ErezRosenVar",
+       {{"mass", 1.3}, {"q", -0.7}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 2.8, 20), uni(r, 0.2, 2.9), uni(r, -3, 3)}};
+       }},
+      {"Bonnor",
+       {{"mass", 0.7}, {"b", 0.9}},
+       [](std::mt19937& r) {
+         return Vec4{{uni(r, -5, 5), uni(r, 1.9, 12), uni(r, 0.2, 2.9), uni(r, -3, 3)}};
+       }},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
@@ -123,8 +185,11 @@ TEST(MetricsCatalogue, ChristoffelsAndTetradsAtRandomPointsAndParameters) {
 /// Gödel's field equations: R_ab = u_a u_b/a² for the dust 4-velocity u = ∂_t (Gödel, RMP 21
 /// (1949) 447: dust of density ρ with 8πρ = 1/a² and Λ = −1/(2a²)), in all four charts.
 TEST(MetricsCatalogue, GoedelRicciIsDustAlongTheTimeLines) {
-  for (const auto& [name, a, scale] : std::vector<std::tuple<std::string, double, double>>{
-           {"Goedel", 0.8, 1.0}, {"GoedelCart", 0.8, 1.0}, {"GoedelScaled", 0.5, 3.0}, {"GoedelScaledCart", 0.5, 3.0}}) {
+  for (const auto& [name, a, scale] :
+       std::vector<std::tuple<std::string, double, double>>{{"Goedel", 0.8, 1.0},
+                                                            {"GoedelCart", 0.8, 1.0},
+                                                            {"GoedelScaled", 0.5, 3.0},
+                                                            {"GoedelScaledCart", 0.5, 3.0}}) {
     SCOPED_TRACE(name);
     const bool scaled = name.find("Scaled") != std::string::npos;
     const auto m = scaled ? make_metric(name, {{"rg", scale}}) : make_metric(name, {{"a", a}});
@@ -243,9 +308,7 @@ TEST(MetricsCatalogue, StraightSpinningStringIsMinkowskiInDisguise) {
   const Vec4 x{{0, 4.0, 0.2, 0.5}};
   const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{-0.8, 0.5, 0.1}, false);
   double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
-  auto flat = [kk](const double* s) {
-    return Vec3{s[1] * std::cos(kk * s[2]), s[1] * std::sin(kk * s[2]), s[3]};
-  };
+  auto flat = [kk](const double* s) { return Vec3{s[1] * std::cos(kk * s[2]), s[1] * std::sin(kk * s[2]), s[3]}; };
   const Vec3 p0 = flat(y);
   const double tp0 = x[0] - a * x[2];
   std::vector<std::pair<double, Vec3>> pts;
@@ -658,8 +721,9 @@ TEST(MetricsCatalogue, SchwarzschildGravWaveIsALinearisedVacuumPerturbation) {
 }
 
 /// PlaneGravWave: flat before (u < −a) and after (0 < u < 1) the wave; inside it the Ricci
-/// residual of the truncated sine series (relative to the curvature) decreases with its degree; and a light ray crossing the wave keeps
-/// the Killing constants p² k^y, q² k^z and −k^t + k^x (g_ab ξ^a k^b for ξ = ∂_y, ∂_z, ∂_t + ∂_x).
+/// residual of the truncated sine series (relative to the curvature) decreases with its degree; and a light ray
+/// crossing the wave keeps the Killing constants p² k^y, q² k^z and −k^t + k^x (g_ab ξ^a k^b for ξ = ∂_y, ∂_z, ∂_t +
+/// ∂_x).
 TEST(MetricsCatalogue, PlaneGravWaveIsFlatOutsideTheWaveAndKeepsItsKillingConstants) {
   const auto m = make_metric("PlaneGravWave", {{"long_ext", 1.3}});
   for (const Vec4& x : {Vec4{{0, 2.0, 0.3, -1}}, Vec4{{0.5, 0.2, 1, 2}}}) {  // u = −2 and u = 0.3
@@ -835,8 +899,8 @@ TEST(MetricsCatalogue, HalilsoyWaveIsTheBesselWaveAtAlphaZeroAndKeepsItsKillingC
 namespace {
 
 /// Einstein–Maxwell (non-null field) test: R = 0 and Rainich's algebraic condition
-/// R^a_c R^c_b = ¼ δ^a_b (R_cd R^cd) (Rainich, Trans. Amer. Math. Soc. 27 (1925) 106; Misner & Wheeler, Ann. Phys. 2 (1957) 525), relative
-/// to the size of R_ab R^ab; also checks that the Ricci tensor does not vanish (not vacuum).
+/// R^a_c R^c_b = ¼ δ^a_b (R_cd R^cd) (Rainich, Trans. Amer. Math. Soc. 27 (1925) 106; Misner & Wheeler, Ann. Phys. 2
+/// (1957) 525), relative to the size of R_ab R^ab; also checks that the Ricci tensor does not vanish (not vacuum).
 void expect_electrovac_rainich(const Metric& m, const Vec4& x) {
   Mat4 g;
   m.metric_tensor(x, g);
@@ -1017,7 +1081,8 @@ TEST(MetricsCatalogue, PetrovTypeDCLightFallsToTheHorizonFromEveryDirection) {
     cfg.eps_abs = 1e-8;
     cfg.max_steps = 5000;
     const GeodesicResult res = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
-    const std::string what = "d (" + std::to_string(d.x) + ", " + std::to_string(d.y) + ", " + std::to_string(d.z) + ")";
+    const std::string what =
+        "d (" + std::to_string(d.x) + ", " + std::to_string(d.y) + ", " + std::to_string(d.z) + ")";
     EXPECT_EQ(res.reason, StopReason::Invalid) << what << ": " << stop_reason_name(res.reason);
     EXPECT_NEAR(y[3], y0, 2 * eps_h) << what;  // G′(y0) = 4.26: G = eps_h at y0 + eps_h/4.26
     EXPECT_NEAR(E(y) / e0, 1.0, 1e-6) << what;

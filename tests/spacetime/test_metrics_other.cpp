@@ -30,9 +30,7 @@ struct Sample {
   Vec4 x;
 };
 
-double uni(std::mt19937& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
+double uni(std::mt19937& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 
 Vec3 random_unit(std::mt19937& rng) {
   const double z = uni(rng, -1, 1), ph = uni(rng, -M_PI, M_PI), s = std::sqrt(1 - z * z);
@@ -106,7 +104,8 @@ std::vector<Case> cases() {
       {"TeoSimpleWH", wormhole_sample, {TetradKind::Default, TetradKind::Static, TetradKind::LNRF}},
       {"KastorTraschen", kastor_sample, {TetradKind::Default, TetradKind::Static}},
       // |v_s| < 0.9 so that the static observer (|v_s f| < 1) exists everywhere.
-      {"AlcubierreWarpSimple", [](std::mt19937& r) { return alcubierre_sample(r, 0.9); },
+      {"AlcubierreWarpSimple",
+       [](std::mt19937& r) { return alcubierre_sample(r, 0.9); },
        {TetradKind::Default, TetradKind::Comoving, TetradKind::Static}},
       {"EinsteinRosenWaveWWB", erw_sample, {TetradKind::Default}},
       {"RotDihole", rotdihole_sample, {TetradKind::Default}},

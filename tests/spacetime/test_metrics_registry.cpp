@@ -240,10 +240,13 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
       {"SchwarzschildWT",
        [](const Metric& m, const Vec4& x) { return 24.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
       // Defaults a = epsilon = 0: Schwarzschild.
-      {"Glampedakis", [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
-      {"HartleThorneGB", [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
+      {"Glampedakis",
+       [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
+      {"HartleThorneGB",
+       [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
       // With q = 0 (kretschmann_params): Schwarzschild in Weyl form.
-      {"ErezRosenVar", [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
+      {"ErezRosenVar",
+       [](const Metric& m, const Vec4& x) { return 48.0 * std::pow(m.param("mass"), 2) / std::pow(x[1], 6); }},
       // Einstein static universe of unit radius: R_ijkl = g_ik g_jl − g_il g_jk on S³, K = 2·3·2 = 12.
       {"MinkowskiConformal", [](const Metric&, const Vec4&) { return 12.0; }},
       // Locally Schwarzschild: the conical deficit does not change the curvature.
@@ -293,7 +296,8 @@ const std::map<std::string, KFunc>& analytic_kretschmann() {
        [](const Metric& m, const Vec4& x) {
          const double kp = m.param("k"), C = 4.0 * m.param("mass") / (3.0 * M_PI), c = x[0];
          const int k = kp >= 1 ? 1 : (kp <= -1 ? -1 : 0);
-         const double R = k == 0 ? 2.25 * C * c * c : (k == 1 ? 0.5 * C * (1 - std::cos(c)) : 0.5 * C * (std::cosh(c) - 1));
+         const double R =
+             k == 0 ? 2.25 * C * c * c : (k == 1 ? 0.5 * C * (1 - std::cos(c)) : 0.5 * C * (std::cosh(c) - 1));
          const double R1 = k == 0 ? 4.5 * C * c : (k == 1 ? 0.5 * C * std::sin(c) : 0.5 * C * std::sinh(c));
          const double R2 = k == 0 ? 4.5 * C : (k == 1 ? 0.5 * C * std::cos(c) : 0.5 * C * std::cosh(c));
          return 12.0 * (std::pow(R * R2 - R1 * R1, 2) + std::pow(R1 * R1 + k * R * R, 2)) / std::pow(R, 8);
@@ -477,8 +481,8 @@ TEST_P(EveryMetric, KretschmannScalarMatchesTheAnalyticOne) {
   if (pit != kretschmann_params().end()) m->set_params(pit->second);
   for (const Vec4& x : probe_points(*m, 6)) {
     const double K = kretschmann(*m, x), ref = it->second(*m, x);
-    EXPECT_NEAR(K, ref, 1e-9 * std::max(std::fabs(ref), 1e-6)) << "at (" << x[0] << ", " << x[1] << ", " << x[2]
-                                                                << ", " << x[3] << ")";
+    EXPECT_NEAR(K, ref, 1e-9 * std::max(std::fabs(ref), 1e-6))
+        << "at (" << x[0] << ", " << x[1] << ", " << x[2] << ", " << x[3] << ")";
   }
 }
 

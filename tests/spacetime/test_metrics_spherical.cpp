@@ -32,8 +32,8 @@ double uniform(std::mt19937& rng, double a, double b) { return std::uniform_real
 /// Spherical-chart point with r in [r0, r1], θ away from the axis.
 Sampler spherical(double r0, double r1) {
   return [=](std::mt19937& rng) {
-    return Vec4{{uniform(rng, -5, 5), uniform(rng, r0, r1), uniform(rng, 0.15, M_PI - 0.15),
-                 uniform(rng, 0, 2 * M_PI)}};
+    return Vec4{
+        {uniform(rng, -5, 5), uniform(rng, r0, r1), uniform(rng, 0.15, M_PI - 0.15), uniform(rng, 0, 2 * M_PI)}};
   };
 }
 /// Cartesian-chart point at distance in [r0, r1] from the origin, random direction.
@@ -262,7 +262,7 @@ TEST(MetricsSpherical, BadParametersGiveErrors) {
       {"ReissnerNordstrom", {{"mass", -1}}},
       {"ReissnerNordstrom", {{"charge", inf}}},
       {"Kottler", {{"mass", -1}}},
-      {"Kottler", {{"lambda", 0.2}}},  // 9 Λ M² = 1.8 >= 1: no static region
+      {"Kottler", {{"lambda", 0.2}}},                  // 9 Λ M² = 1.8 >= 1: no static region
       {"Kottler", {{"lambda", 0.01}, {"mass", 4.0}}},  // 9 Λ M² = 1.44
       {"BarriolaVilenkin", {{"k", 0.0}}},
       {"BarriolaVilenkin", {{"k", 1.5}}},
@@ -415,22 +415,24 @@ TEST(MetricsSpherical, SchwarzschildChartsGiveTheRadialLightTravelTime) {
   const Vec3 n{1.0 / 3.0, 2.0 / 3.0, 2.0 / 3.0};  // unit vector, off the axes
 
   auto schw = make_metric("Schwarzschild");
-  const double t_s = time_at_radius(*schw, Vec4{{0, r1, std::acos(n.z), std::atan2(n.y, n.x)}}, Vec3{1, 0, 0},
-                                    [](const Vec4& x) { return x[1]; }, r2);
+  const double t_s = time_at_radius(
+      *schw, Vec4{{0, r1, std::acos(n.z), std::atan2(n.y, n.x)}}, Vec3{1, 0, 0}, [](const Vec4& x) { return x[1]; },
+      r2);
   EXPECT_NEAR(t_s, expected, 1e-8 * expected);
 
   auto cart = make_metric("SchwarzschildCart");
-  const double t_c = time_at_radius(*cart, Vec4{{0, r1 * n.x, r1 * n.y, r1 * n.z}}, n,
-                                    [](const Vec4& x) { return std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]); }, r2);
+  const double t_c = time_at_radius(
+      *cart, Vec4{{0, r1 * n.x, r1 * n.y, r1 * n.z}}, n,
+      [](const Vec4& x) { return std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]); }, r2);
   EXPECT_NEAR(t_c, expected, 1e-8 * expected);
 
   // Isotropic radius: r = ρ (1 + M/(2ρ))²  <=>  ρ = (r − M + sqrt(r² − 2Mr))/2.
   auto rho_of = [&](double r) { return 0.5 * (r - M + std::sqrt(r * r - 2 * M * r)); };
   auto iso = make_metric("SchwarzschildIsotropic");
   const double rho1 = rho_of(r1);
-  const double t_i = time_at_radius(*iso, Vec4{{0, rho1 * n.x, rho1 * n.y, rho1 * n.z}}, n,
-                                    [](const Vec4& x) { return std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]); },
-                                    rho_of(r2));
+  const double t_i = time_at_radius(
+      *iso, Vec4{{0, rho1 * n.x, rho1 * n.y, rho1 * n.z}}, n,
+      [](const Vec4& x) { return std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]); }, rho_of(r2));
   EXPECT_NEAR(t_i, expected, 1e-8 * expected);
 }
 

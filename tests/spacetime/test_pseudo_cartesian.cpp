@@ -16,7 +16,8 @@ TEST_P(PseudoCartesian, JacobianIsTheDerivativeOfTheMap) {
   const auto m = make_metric(GetParam());
   const Vec4 x = m->info().sample_pos;
   double J[3][3];
-  if (!m->pseudo_cartesian_jacobian(x, J)) GTEST_SKIP() << m->name() << " has no closed-form Jacobian (custom coordinates)";
+  if (!m->pseudo_cartesian_jacobian(x, J))
+    GTEST_SKIP() << m->name() << " has no closed-form Jacobian (custom coordinates)";
   for (int j = 0; j < 3; ++j) {
     // Central difference, step h: error O(h² |p'''|) ~ 1e-10 for the sample positions' scale.
     const double h = 1e-5 * std::max(1.0, std::fabs(x[j + 1]));

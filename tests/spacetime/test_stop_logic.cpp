@@ -139,7 +139,7 @@ TEST(StopLogic, HorizonEpsIsAMetricSetting) {
   EXPECT_FALSE(m->is_valid(Vec4{{0, 2.019, 1, 0}}));
   EXPECT_TRUE(m->is_valid(Vec4{{0, 2.021, 1, 0}}));
   EXPECT_FALSE(m->clone()->is_valid(Vec4{{0, 2.019, 1, 0}}));  // copies keep it
-  m->set_param("mass", 2.0);                                    // and parameter changes too
+  m->set_param("mass", 2.0);                                   // and parameter changes too
   EXPECT_FALSE(m->is_valid(Vec4{{0, 4.039, 1, 0}}));
   EXPECT_TRUE(m->is_valid(Vec4{{0, 4.041, 1, 0}}));
   EXPECT_THROW(m->set_horizon_eps(0.0), Error);

@@ -19,8 +19,10 @@ inline std::vector<std::string> catalogue_commands() {
   bool in_table = false;
   static const std::regex name("`([a-z0-9-]+)`");
   for (std::string line; std::getline(in, line);) {
-    if (line.rfind("## 1.", 0) == 0) in_table = true;
-    else if (line.rfind("## ", 0) == 0 || line.rfind("### ", 0) == 0) in_table = false;
+    if (line.rfind("## 1.", 0) == 0)
+      in_table = true;
+    else if (line.rfind("## ", 0) == 0 || line.rfind("### ", 0) == 0)
+      in_table = false;
     if (!in_table || line.rfind("| `", 0) != 0) continue;
     const std::string first = line.substr(1, line.find('|', 1) - 1);
     for (std::sregex_iterator it(first.begin(), first.end(), name), end; it != end; ++it) out.push_back((*it)[1]);

@@ -27,16 +27,17 @@ namespace geovis {
 class AlcubierreWarp final : public MetricCRTP<AlcubierreWarp> {
  public:
   AlcubierreWarp()
-      : MetricCRTP({"AlcubierreWarp",
-                    {"t", "x", "y", "z"},
-                    CoordType::Cartesian,
-                    {{"r", 1.0, 0.0, 1e300, true, false, "radius R > 0 of the warp bubble"},
-                     {"sigma", 8.0, 0.0, 1e300, true, false, "sharpness sigma > 0 of the bubble wall"},
-                     {"vs", 1.0, -1e300, 1e300, false, false, "velocity v_s of the warp bubble along x (may exceed 1)"}},
-                    {TetradKind::Default, TetradKind::Comoving, TetradKind::Static},
-                    "Alcubierre warp drive with tanh wall (Alcubierre, CQG 11 (1994) L73)",
-                    Vec4{{0, 0, -10, 0}},
-                    {{"vs", 0.0}}}) {
+      : MetricCRTP(
+            {"AlcubierreWarp",
+             {"t", "x", "y", "z"},
+             CoordType::Cartesian,
+             {{"r", 1.0, 0.0, 1e300, true, false, "radius R > 0 of the warp bubble"},
+              {"sigma", 8.0, 0.0, 1e300, true, false, "sharpness sigma > 0 of the bubble wall"},
+              {"vs", 1.0, -1e300, 1e300, false, false, "velocity v_s of the warp bubble along x (may exceed 1)"}},
+             {TetradKind::Default, TetradKind::Comoving, TetradKind::Static},
+             "Alcubierre warp drive with tanh wall (Alcubierre, CQG 11 (1994) L73)",
+             Vec4{{0, 0, -10, 0}},
+             {{"vs", 0.0}}}) {
     on_params_changed();
   }
 

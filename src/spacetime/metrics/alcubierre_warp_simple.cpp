@@ -19,16 +19,18 @@ namespace geovis {
 class AlcubierreWarpSimple final : public MetricCRTP<AlcubierreWarpSimple> {
  public:
   AlcubierreWarpSimple()
-      : MetricCRTP({"AlcubierreWarpSimple",
-                    {"t", "x", "y", "z"},
-                    CoordType::Cartesian,
-                    {{"dr", 0.1, 0.0, 1e300, true, false, "thickness dR > 0 of the bubble wall (f falls from 1 to 0 over R +- dR/2)"},
-                     {"r", 1.0, 0.0, 1e300, true, false, "radius R > 0 of the warp bubble"},
-                     {"vs", 1.0, -1e300, 1e300, false, false, "velocity v_s of the warp bubble along x (may exceed 1)"}},
-                    {TetradKind::Default, TetradKind::Comoving, TetradKind::Static},
-                    "Alcubierre warp drive with polynomial wall (Alcubierre, CQG 11 (1994) L73)",
-                    Vec4{{0, -3, 0, 0}},
-                    {{"vs", 0.0}}}) {
+      : MetricCRTP(
+            {"AlcubierreWarpSimple",
+             {"t", "x", "y", "z"},
+             CoordType::Cartesian,
+             {{"dr", 0.1, 0.0, 1e300, true, false,
+               "thickness dR > 0 of the bubble wall (f falls from 1 to 0 over R +- dR/2)"},
+              {"r", 1.0, 0.0, 1e300, true, false, "radius R > 0 of the warp bubble"},
+              {"vs", 1.0, -1e300, 1e300, false, false, "velocity v_s of the warp bubble along x (may exceed 1)"}},
+             {TetradKind::Default, TetradKind::Comoving, TetradKind::Static},
+             "Alcubierre warp drive with polynomial wall (Alcubierre, CQG 11 (1994) L73)",
+             Vec4{{0, -3, 0, 0}},
+             {{"vs", 0.0}}}) {
     on_params_changed();
   }
 
@@ -81,8 +83,8 @@ class AlcubierreWarpSimple final : public MetricCRTP<AlcubierreWarpSimple> {
     Tetrad e;
     if (!alcubierre::tetrad(vf, kind == TetradKind::Comoving, e)) {
       std::ostringstream os;
-      os << "AlcubierreWarpSimple: no static observer at (" << x[0] << ", " << x[1] << ", " << x[2] << ", "
-         << x[3] << "): v_s f = " << vf << " (|v_s f| >= 1, d/dt is not timelike here); use the comoving frame";
+      os << "AlcubierreWarpSimple: no static observer at (" << x[0] << ", " << x[1] << ", " << x[2] << ", " << x[3]
+         << "): v_s f = " << vf << " (|v_s f| >= 1, d/dt is not timelike here); use the comoving frame";
       throw Error(os.str());
     }
     return e;

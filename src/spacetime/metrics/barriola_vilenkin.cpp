@@ -21,7 +21,8 @@ class BarriolaVilenkin final : public MetricCRTP<BarriolaVilenkin> {
                     {{"k", 0.8, 0.0, 1.0, true, false,
                       "solid-angle factor k in (0, 1] (k^2 = 1 - 8 pi G eta^2; k = 1 is flat space)"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "global monopole (Barriola & Vilenkin, PRL 63 (1989) 341; Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    "global monopole (Barriola & Vilenkin, PRL 63 (1989) 341; Mueller & Grave, Catalogue of "
+                    "Spacetimes, arXiv:0904.4184)",
                     Vec4{{0, 6, M_PI / 2, 0}},
                     {{"k", 1.0}}}) {
     on_params_changed();
@@ -59,7 +60,8 @@ class BarriolaVilenkin final : public MetricCRTP<BarriolaVilenkin> {
 
   /// r > 0 (the conical singularity at the origin) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
-    return x[1] > 1e-12 && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
+    return x[1] > 1e-12 && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
+           x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
   /// Effective potential, circular orbits and the embedding cone z = √(1 − k²) r (static_spherical.h).

@@ -111,8 +111,8 @@ class Bonnor final : public MetricCRTP<Bonnor> {
     if (is_valid(x)) diagonal(x, d);
     if (!is_valid(x) || !diagonal_static_tetrad(d.h, e)) {
       std::ostringstream os;
-      os << "Bonnor: no static observer at (r, theta) = (" << x[1] << ", " << x[2] << ") (needs r > m + sqrt(m^2 + b^2) = "
-         << r_break_ << " and theta off the axis)";
+      os << "Bonnor: no static observer at (r, theta) = (" << x[1] << ", " << x[2]
+         << ") (needs r > m + sqrt(m^2 + b^2) = " << r_break_ << " and theta off the axis)";
       throw Error(os.str());
     }
     return e;

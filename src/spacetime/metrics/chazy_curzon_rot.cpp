@@ -85,7 +85,8 @@ class ChazyCurzonRot final : public MetricCRTP<ChazyCurzonRot> {
       const int c = coord[i];
       d.dg[c][0][0] = W_d[i] * iW2;
       d.dg[c][0][2] = d.dg[c][2][0] = A * W_d[i] * iW2 - A_d[i] * iW;
-      d.dg[c][2][2] = (i == 0 ? 2.0 * rho * W : 0.0) + rho * rho * W_d[i] - 2.0 * A * A_d[i] * iW + A * A * W_d[i] * iW2;
+      d.dg[c][2][2] =
+          (i == 0 ? 2.0 * rho * W : 0.0) + rho * rho * W_d[i] - 2.0 * A * A_d[i] * iW + A * A * W_d[i] * iW2;
       d.dg[c][1][1] = d.dg[c][3][3] = (W_d[i] + 2.0 * W * k_d[i]) * e2k;
     }
   }

@@ -67,13 +67,14 @@ class DeSitterUnivConformal final : public MetricCRTP<DeSitterUnivConformal> {
 
   /// Before future infinity: T < −1e-12 (Motion4D); any T for p < 0.
   bool is_valid(const Vec4& x) const override {
-    return (!conformal_ || x[0] + 1e-12 < 0.0) && std::isfinite(x[0]) && std::isfinite(x[1]) &&
-           std::isfinite(x[2]) && std::isfinite(x[3]);
+    return (!conformal_ || x[0] + 1e-12 < 0.0) && std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) &&
+           std::isfinite(x[3]);
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
-    if (!is_valid(x)) throw Error("DeSitterUnivConformal: no observer at T = " + std::to_string(x[0]) + " (needs T < 0)");
+    if (!is_valid(x))
+      throw Error("DeSitterUnivConformal: no observer at T = " + std::to_string(x[0]) + " (needs T < 0)");
     const double f = conformal_ ? -H_ * x[0] : 1.0;
     Tetrad e{};
     for (int a = 0; a < 4; ++a) e[a][a] = f;

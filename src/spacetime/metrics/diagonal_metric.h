@@ -26,8 +26,8 @@ struct DiagonalMetric {
 /// Fills d for a static, spherically symmetric line element in (t, r, θ, φ):
 ///   ds² = −A(r) dt² + B(r) dr² + C(r) (dθ² + sin²θ dφ²),
 /// given A, B, C and their r-derivatives.
-inline void spherical_diagonal(double A, double dA, double B, double dB, double C, double dC,
-                               double theta, DiagonalMetric& d) {
+inline void spherical_diagonal(double A, double dA, double B, double dB, double C, double dC, double theta,
+                               DiagonalMetric& d) {
   double st, ct;
   fast_sincos(theta, st, ct);
   d = DiagonalMetric{};

@@ -18,7 +18,8 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
                     CoordType::Spherical,
                     {{"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0 of the black hole (r_s = 2M)"}},
                     {TetradKind::Default, TetradKind::Static, TetradKind::Freefall},
-                    "Schwarzschild black hole in ingoing Eddington-Finkelstein coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    "Schwarzschild black hole in ingoing Eddington-Finkelstein coordinates (Mueller & Grave, Catalogue "
+                    "of Spacetimes, arXiv:0904.4184)",
                     Vec4{{0, 6, M_PI / 2, 0}},
                     {{"mass", 0.0}}}) {
     on_params_changed();
@@ -76,7 +77,8 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
   /// The chart is regular across the horizon: valid for r > 0 (curvature singularity; small
   /// margin) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
-    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
+    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
+           x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
   /// Break condition by direction (integrators.h, MetricSystem::valid): a backward-traced
@@ -136,8 +138,8 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
       e[1][1] = 1.0;
     } else {
       if (!(r > rs_))
-        throw Error("EddFinkIn: no static observer at r = " + std::to_string(r) +
-                    " <= r_s = " + std::to_string(rs_) + " (use localframe freefall inside the horizon)");
+        throw Error("EddFinkIn: no static observer at r = " + std::to_string(r) + " <= r_s = " + std::to_string(rs_) +
+                    " (use localframe freefall inside the horizon)");
       const double w = std::sqrt(1.0 - rs_ / r);
       e[0][0] = 1.0 / w;
       e[1][0] = 1.0 / w;

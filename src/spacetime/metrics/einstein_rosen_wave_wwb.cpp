@@ -33,7 +33,8 @@ class EinsteinRosenWaveWWB final : public MetricCRTP<EinsteinRosenWaveWWB> {
                     {{"a", 1.0, 0.0, 1e300, true, false, "width a > 0 of the Weber-Wheeler-Bonnor pulse"},
                      {"c", 1.0, -1e300, 1e300, false, false, "amplitude c of the pulse (c = 0: flat)"}},
                     {TetradKind::Default},
-                    "Einstein-Rosen wave, Weber-Wheeler-Bonnor pulse (Weber & Wheeler, RMP 29 (1957) 509; Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    "Einstein-Rosen wave, Weber-Wheeler-Bonnor pulse (Weber & Wheeler, RMP 29 (1957) 509; Mueller & "
+                    "Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
                     Vec4{{0, 5, 0, 0}},
                     {{"c", 0.0}}}) {
     on_params_changed();
@@ -72,8 +73,8 @@ class EinsteinRosenWaveWWB final : public MetricCRTP<EinsteinRosenWaveWWB> {
   ///   ∂ψ = ψ (∂u/(2u) − ∂S/S),
   ///   ∂γ = c²/(2a²) [−2a² ∂Q + ∂P/S − P ∂S/S²],  P = ρ² − a² − t², Q = ρ²B/D², B = A² − 4a²t²,
   ///   ∂Q = (∂(ρ²) B + ρ² ∂B)/D² − 2ρ²B ∂D/D³,  ∂B = 2A∂A − 8a²t ∂t.
-  void potential_derivs(double t, double rho, double& gam, double& psi, double& gam_t, double& gam_r,
-                        double& psi_t, double& psi_r) const {
+  void potential_derivs(double t, double rho, double& gam, double& psi, double& gam_t, double& gam_r, double& psi_t,
+                        double& psi_r) const {
     const double t2 = t * t, r2 = rho * rho;
     const double A = a2_ + r2 - t2;
     const double B = A * A - 4.0 * a2_ * t2;

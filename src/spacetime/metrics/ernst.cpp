@@ -21,7 +21,8 @@ class Ernst final : public MetricCRTP<Ernst> {
                       "magnetic field strength B (any real; only B^2 enters the metric)"},
                      {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0 of the black hole (r_s = 2M)"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "black hole in a Melvin magnetic universe (Ernst, J. Math. Phys. 17 (1976) 54; Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    "black hole in a Melvin magnetic universe (Ernst, J. Math. Phys. 17 (1976) 54; Mueller & Grave, "
+                    "Catalogue of Spacetimes, arXiv:0904.4184)",
                     Vec4{{0, 6, M_PI / 2, 0}},
                     {{"b", 0.0}, {"mass", 0.0}}}) {
     on_params_changed();

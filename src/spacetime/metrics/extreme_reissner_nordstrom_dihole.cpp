@@ -95,8 +95,8 @@ class ExtremeReissnerNordstromDihole final : public MetricCRTP<ExtremeReissnerNo
     const double U = potential(x, dU);
     if (!std::isfinite(U)) {
       std::ostringstream os;
-      os << "ExtremeReissnerNordstromDihole: no static observer at a horizon point (" << x[1] << ", " << x[2]
-         << ", " << x[3] << ")";
+      os << "ExtremeReissnerNordstromDihole: no static observer at a horizon point (" << x[1] << ", " << x[2] << ", "
+         << x[3] << ")";
       throw Error(os.str());
     }
     Tetrad e{};

@@ -44,8 +44,8 @@ class GoedelScaledCart final : public MetricCRTP<GoedelScaledCart> {
     Tetrad e;
     if (!goedel::cart_tetrad(0.5, zeta_, x[1], x[2], e)) {
       std::ostringstream os;
-      os << "GoedelScaledCart: no observer rotating with zeta = " << zeta_ << " at (X, Y) = (" << x[1] << ", "
-         << x[2] << ") (its worldline is not timelike there)";
+      os << "GoedelScaledCart: no observer rotating with zeta = " << zeta_ << " at (X, Y) = (" << x[1] << ", " << x[2]
+         << ") (its worldline is not timelike there)";
       throw Error(os.str());
     }
     for (int a = 0; a < 4; ++a)

@@ -28,16 +28,17 @@ namespace geovis {
 class HalilsoyWave final : public MetricCRTP<HalilsoyWave> {
  public:
   HalilsoyWave()
-      : MetricCRTP({"HalilsoyWave",
-                    {"t", "rho", "phi", "z"},
-                    CoordType::Cylindrical,
-                    {{"alpha", 0.0, -1e300, 1e300, false, false, "polarisation angle alpha (0: Einstein-Rosen Bessel wave)"},
-                     {"c", 1.0, -1e300, 1e300, false, false, "amplitude C of the wave (C = 0: flat)"}},
-                    {TetradKind::Default},
-                    "Halilsoy cross-polarised standing cylindrical wave (Halilsoy, Nuovo Cimento B 102 (1988) 563; "
-                    "Mueller & Grave, arXiv:0904.4184)",
-                    Vec4{{0, 5, 0, 0}},
-                    {{"c", 0.0}}}) {
+      : MetricCRTP(
+            {"HalilsoyWave",
+             {"t", "rho", "phi", "z"},
+             CoordType::Cylindrical,
+             {{"alpha", 0.0, -1e300, 1e300, false, false, "polarisation angle alpha (0: Einstein-Rosen Bessel wave)"},
+              {"c", 1.0, -1e300, 1e300, false, false, "amplitude C of the wave (C = 0: flat)"}},
+             {TetradKind::Default},
+             "Halilsoy cross-polarised standing cylindrical wave (Halilsoy, Nuovo Cimento B 102 (1988) 563; "
+             "Mueller & Grave, arXiv:0904.4184)",
+             Vec4{{0, 5, 0, 0}},
+             {{"c", 0.0}}}) {
     on_params_changed();
   }
 
@@ -96,7 +97,8 @@ class HalilsoyWave final : public MetricCRTP<HalilsoyWave> {
     for (int m = 0; m < 2; ++m) {
       d.dg[m][0][0] = -(V_d[m] + 2.0 * V * k_d[m]) * e2k;
       d.dg[m][1][1] = -d.dg[m][0][0];
-      d.dg[m][2][2] = V_d[m] * rho * rho + (m == 1 ? 2.0 * V * rho : 0.0) + 2.0 * A * A_d[m] * iV - A * A * V_d[m] * iV2;
+      d.dg[m][2][2] =
+          V_d[m] * rho * rho + (m == 1 ? 2.0 * V * rho : 0.0) + 2.0 * A * A_d[m] * iV - A * A * V_d[m] * iV2;
       d.dg[m][2][3] = d.dg[m][3][2] = A_d[m] * iV - A * V_d[m] * iV2;
       d.dg[m][3][3] = -V_d[m] * iV2;
     }

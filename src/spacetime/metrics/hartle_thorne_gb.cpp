@@ -23,7 +23,8 @@ class HartleThorneGB final : public MetricCRTP<HartleThorneGB> {
                      {"eta", 0.0, -1e300, 1e300, false, false, "quadrupole deviation eta (epsilon = eta a^2)"},
                      {"mass", 1.0, 0.0, 1e300, true, false, "mass M > 0"}},
                     {TetradKind::Default},
-                    "Hartle-Thorne in quasi-Kerr form (Hartle & Thorne, ApJ 153 (1968) 807; Glampedakis & Babak, CQG 23 (2006) 4167)",
+                    "Hartle-Thorne in quasi-Kerr form (Hartle & Thorne, ApJ 153 (1968) 807; Glampedakis & Babak, CQG "
+                    "23 (2006) 4167)",
                     Vec4{{0, 10, M_PI / 2, 0}},
                     {}}) {
     on_params_changed();

@@ -27,7 +27,8 @@ class JanisNewmanWinicour final : public MetricCRTP<JanisNewmanWinicour> {
                       "naked singularity at r = 2M/gamma)"},
                      {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0"}},
                     {TetradKind::Default},
-                    "Janis-Newman-Winicour naked singularity (Janis, Newman & Winicour, PRL 20 (1968) 878; Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    "Janis-Newman-Winicour naked singularity (Janis, Newman & Winicour, PRL 20 (1968) 878; Mueller & "
+                    "Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
                     Vec4{{0, 6, M_PI / 2, 0}},
                     {{"mass", 0.0}}}) {
     on_params_changed();
@@ -82,7 +83,8 @@ class JanisNewmanWinicour final : public MetricCRTP<JanisNewmanWinicour> {
   /// γ = 1 both are the horizon r_s, where the break margin horizon_eps applies as in
   /// Schwarzschild: r_break = max(r_c, (r_s/γ)(1 + horizon_eps)).
   bool is_valid(const Vec4& x) const override {
-    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
+    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
+           x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
   /// Escape (escape.h): h² = α^(1−2γ) r², (ln h²)' = (2r − (1 + 2γ) b)/(r (r − b)) with

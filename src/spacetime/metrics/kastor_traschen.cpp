@@ -21,18 +21,19 @@ namespace geovis {
 class KastorTraschen final : public MetricCRTP<KastorTraschen> {
  public:
   KastorTraschen()
-      : MetricCRTP({"KastorTraschen",
-                    {"t", "x", "y", "z"},
-                    CoordType::Cartesian,
-                    {{"h", 0.0, -1e300, 1e300, false, false, "Hubble constant H of the de Sitter background (a = exp(H t))"},
-                     {"m1", 1.0, 0.0, 1e300, false, false, "mass (= charge) of black hole 1, >= 0"},
-                     {"m2", 1.0, 0.0, 1e300, false, false, "mass (= charge) of black hole 2, >= 0"},
-                     {"z1", 1.0, -1e300, 1e300, false, false, "z position of black hole 1 (on the z axis)"},
-                     {"z2", -1.0, -1e300, 1e300, false, false, "z position of black hole 2 (on the z axis)"}},
-                    {TetradKind::Default, TetradKind::Static},
-                    "Kastor-Traschen: two extreme Reissner-Nordstrom black holes in de Sitter (PRD 47 (1993) 5370)",
-                    Vec4{{0, 3, 0, 0}},
-                    {{"h", 0.0}, {"m1", 0.0}, {"m2", 0.0}}}) {
+      : MetricCRTP(
+            {"KastorTraschen",
+             {"t", "x", "y", "z"},
+             CoordType::Cartesian,
+             {{"h", 0.0, -1e300, 1e300, false, false, "Hubble constant H of the de Sitter background (a = exp(H t))"},
+              {"m1", 1.0, 0.0, 1e300, false, false, "mass (= charge) of black hole 1, >= 0"},
+              {"m2", 1.0, 0.0, 1e300, false, false, "mass (= charge) of black hole 2, >= 0"},
+              {"z1", 1.0, -1e300, 1e300, false, false, "z position of black hole 1 (on the z axis)"},
+              {"z2", -1.0, -1e300, 1e300, false, false, "z position of black hole 2 (on the z axis)"}},
+             {TetradKind::Default, TetradKind::Static},
+             "Kastor-Traschen: two extreme Reissner-Nordstrom black holes in de Sitter (PRD 47 (1993) 5370)",
+             Vec4{{0, 3, 0, 0}},
+             {{"h", 0.0}, {"m1", 0.0}, {"m2", 0.0}}}) {
     on_params_changed();
   }
 

@@ -29,10 +29,10 @@ namespace {
 /// dual number when the Jacobi equation needs the symbols' derivatives (spacetime/jacobi.h).
 template <class T>
 struct KerrGamma {
-  T t_tr, t_tth, t_rph, t_thph;                  // Γ^t
-  T r_tt, r_tph, r_rr, r_rth, r_thth, r_phph;    // Γ^r
+  T t_tr, t_tth, t_rph, t_thph;                      // Γ^t
+  T r_tt, r_tph, r_rr, r_rth, r_thth, r_phph;        // Γ^r
   T th_tt, th_tph, th_rr, th_rth, th_thth, th_phph;  // Γ^θ
-  T ph_tr, ph_tth, ph_rph, ph_thph;              // Γ^φ
+  T ph_tr, ph_tth, ph_rph, ph_thph;                  // Γ^φ
 };
 
 template <class T>
@@ -42,11 +42,11 @@ inline KerrGamma<T> kerr_gamma(double rs, double a, const T& r, const T& theta) 
   const T st2 = st * st, ct2 = ct * ct, stct = st * ct;
   const T r2 = r * r;
   const double a2 = a * a;
-  const T sigma = r2 + a2 * ct2;         // Σ
-  const T delta = r2 - rs * r + a2;      // Δ
+  const T sigma = r2 + a2 * ct2;     // Σ
+  const T delta = r2 - rs * r + a2;  // Δ
   const T r2a2 = r2 + a2;
   const T A = r2a2 * sigma + rs * r * a2 * st2;
-  const T w = r2 - a2 * ct2;             // r² − a² cos²θ, a recurring factor
+  const T w = r2 - a2 * ct2;  // r² − a² cos²θ, a recurring factor
   const T is = 1.0 / sigma, is2 = is * is, is3 = is2 * is;
   const T id = 1.0 / delta;
   const T cot = ct / st;
@@ -86,7 +86,8 @@ class KerrBL final : public MetricCRTP<KerrBL> {
                       "specific angular momentum a = J/M of the black hole, |a| <= mass"},
                      {"mass", 1.0, 0.0, 1e300, false, false, "mass M of the black hole (r_s = 2M)"}},
                     {TetradKind::Default, TetradKind::Static, TetradKind::LNRF},
-                    "Kerr black hole in Boyer-Lindquist coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    "Kerr black hole in Boyer-Lindquist coordinates (Mueller & Grave, Catalogue of Spacetimes, "
+                    "arXiv:0904.4184)",
                     Vec4{{0, 10, M_PI / 2, 0}},
                     {{"angmom", 0.0}, {"mass", 0.0}}}) {
     on_params_changed();
@@ -161,7 +162,7 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     const double sigma = r2 + a2c2, delta = r2 - rs_ * r + a2_;
     const double is = 1.0 / sigma;
     const double u = rs_ * r * is;
-    const double ur = rs_ * (a2c2 - r2) * is * is;        // ∂_r u
+    const double ur = rs_ * (a2c2 - r2) * is * is;          // ∂_r u
     const double uth = 2.0 * rs_ * r * a2_ * sc * is * is;  // ∂_θ u
     // Metric components.
     const double gtt = u - 1.0, gtp = -a_ * s2 * u, B = r2 + a2_ + a2_ * s2 * u, gpp = B * s2;

@@ -15,17 +15,18 @@ namespace geovis {
 class Kottler final : public MetricCRTP<Kottler> {
  public:
   Kottler()
-      : MetricCRTP({"Kottler",
-                    {"t", "r", "theta", "phi"},
-                    CoordType::Spherical,
-                    {{"lambda", 0.05, -1e300, 1e300, false, false,
-                      "cosmological constant Lambda (any sign; for Lambda > 0 a static region needs "
-                      "9 Lambda M^2 < 1)"},
-                     {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0"}},
-                    {TetradKind::Default, TetradKind::Static},
-                    "Schwarzschild-(anti-)de Sitter (Kottler) (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
-                    Vec4{{0, 4, M_PI / 2, 0}},
-                    {{"lambda", 0.0}, {"mass", 0.0}}}) {
+      : MetricCRTP(
+            {"Kottler",
+             {"t", "r", "theta", "phi"},
+             CoordType::Spherical,
+             {{"lambda", 0.05, -1e300, 1e300, false, false,
+               "cosmological constant Lambda (any sign; for Lambda > 0 a static region needs "
+               "9 Lambda M^2 < 1)"},
+              {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0"}},
+             {TetradKind::Default, TetradKind::Static},
+             "Schwarzschild-(anti-)de Sitter (Kottler) (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+             Vec4{{0, 4, M_PI / 2, 0}},
+             {{"lambda", 0.0}, {"mass", 0.0}}}) {
     on_params_changed();
   }
 

@@ -6,11 +6,16 @@ namespace geovis {
 class Minkowski final : public MetricCRTP<Minkowski> {
  public:
   Minkowski()
-      : MetricCRTP({"Minkowski", {"t", "x", "y", "z"}, CoordType::Cartesian, {}, {TetradKind::Default},
-                    "flat spacetime in Cartesian coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
-                    Vec4{{0, 0, 0, 0}},
-                    {},
-                    /*inertial_cartesian=*/true}) {}
+      : MetricCRTP(
+            {"Minkowski",
+             {"t", "x", "y", "z"},
+             CoordType::Cartesian,
+             {},
+             {TetradKind::Default},
+             "flat spacetime in Cartesian coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+             Vec4{{0, 0, 0, 0}},
+             {},
+             /*inertial_cartesian=*/true}) {}
 
   template <class T>
   void g_tmpl(const Vec4T<T>&, Mat4T<T>& g) const {

@@ -60,16 +60,16 @@ class MinkowskiConformal final : public MetricCRTP<MinkowskiConformal> {
 
   /// Motion4D's chart 1e-8 <= ξ < π, −π < ψ < π, off the polar axis.
   bool is_valid(const Vec4& x) const override {
-    return x[1] >= 1e-8 && x[1] < M_PI && x[0] > -M_PI && x[0] < M_PI && std::isfinite(x[2]) &&
-           std::isfinite(x[3]) && x[2] != 0.0;
+    return x[1] >= 1e-8 && x[1] < M_PI && x[0] > -M_PI && x[0] < M_PI && std::isfinite(x[2]) && std::isfinite(x[3]) &&
+           x[2] != 0.0;
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     const double sx = std::sin(x[1]), st = std::sin(x[2]);
     if (!(sx > 0.0) || st == 0.0)
-      throw Error("MinkowskiConformal: no tetrad at xi = " + std::to_string(x[1]) + ", theta = " +
-                  std::to_string(x[2]) + " (needs 0 < xi < pi, off the axis)");
+      throw Error("MinkowskiConformal: no tetrad at xi = " + std::to_string(x[1]) +
+                  ", theta = " + std::to_string(x[2]) + " (needs 0 < xi < pi, off the axis)");
     Tetrad e{};
     e[0][0] = 1.0;
     e[1][1] = 1.0;

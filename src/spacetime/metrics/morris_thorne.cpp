@@ -25,7 +25,8 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
                     CoordType::Spherical,
                     {{"b0", 1.0, 0.0, 1e300, true, false, "throat radius b0 > 0 of the wormhole"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "Morris-Thorne wormhole, proper radial length l (Morris & Thorne, Am. J. Phys. 56 (1988) 395; Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    "Morris-Thorne wormhole, proper radial length l (Morris & Thorne, Am. J. Phys. 56 (1988) 395; "
+                    "Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
                     Vec4{{0, 5, M_PI / 2, 0}},
                     {}}) {
     on_params_changed();
@@ -73,7 +74,8 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
 
   /// The spacetime is regular everywhere; only the polar axis is a coordinate singularity.
   bool is_valid(const Vec4& x) const override {
-    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
+    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
+           x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
   /// Escape (escape.h) into either universe: h² = b0² + l² (A = 1) grows with |l| on both sides

@@ -19,7 +19,8 @@ class PainleveGullstrand final : public MetricCRTP<PainleveGullstrand> {
                     CoordType::Spherical,
                     {{"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0 of the black hole (r_s = 2M)"}},
                     {TetradKind::Default, TetradKind::Static, TetradKind::Freefall},
-                    "Schwarzschild black hole in Painleve-Gullstrand coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    "Schwarzschild black hole in Painleve-Gullstrand coordinates (Mueller & Grave, Catalogue of "
+                    "Spacetimes, arXiv:0904.4184)",
                     Vec4{{0, 6, M_PI / 2, 0}},
                     {{"mass", 0.0}}}) {
     on_params_changed();
@@ -80,15 +81,15 @@ class PainleveGullstrand final : public MetricCRTP<PainleveGullstrand> {
     const double q = rs_ / (2.0 * r * r);
     const double ang = k[2] * k[2] + st * st * k[3] * k[3];
     a[0] = -(w * q * k[0] * k[0] + 2.0 * q * k[0] * k[1] + w / (2.0 * r) * k[1] * k[1]) + w * r * ang;
-    a[1] = -(rs_ * rmrs / (2.0 * r * r * r) * k[0] * k[0] - 2.0 * w * q * k[0] * k[1] - q * k[1] * k[1]) +
-           rmrs * ang;
+    a[1] = -(rs_ * rmrs / (2.0 * r * r * r) * k[0] * k[0] - 2.0 * w * q * k[0] * k[1] - q * k[1] * k[1]) + rmrs * ang;
     a[2] = -2.0 / r * k[1] * k[2] + st * ct * k[3] * k[3];
     a[3] = -2.0 / r * k[1] * k[3] - 2.0 * ct / st * k[2] * k[3];
   }
 
   /// Regular across the horizon: valid for r > 0 (small margin) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
-    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) && x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
+    return x[1] > r_min_ && std::isfinite(x[0]) && std::isfinite(x[2]) && std::isfinite(x[3]) &&
+           x[2] != 0.0;  // sin θ == 0 iff θ == 0 (double θ)
   }
 
   /// Break condition by direction (integrators.h, MetricSystem::valid): a backward-traced

@@ -32,7 +32,8 @@ class PlaneGravWave final : public MetricCRTP<PlaneGravWave> {
       : MetricCRTP({"PlaneGravWave",
                     {"t", "x", "y", "z"},
                     CoordType::Cartesian,
-                    {{"degree", 30.0, 1.0, 1e6, false, false, "degree n of the sine polynomial for m'(u) (truncated to an integer)"},
+                    {{"degree", 30.0, 1.0, 1e6, false, false,
+                      "degree n of the sine polynomial for m'(u) (truncated to an integer)"},
                      {"long_ext", 1.0, 1e-6, 1e300, false, false, "longitudinal extension a of the wave"}},
                     {TetradKind::Default},
                     "Plane gravitational sandwich wave (Rindler, Relativity (2006); Mueller & Grave, Catalogue of "

@@ -73,13 +73,15 @@ inline void derivs(double M_, double a_, double a2_, double eps_, const Vec4& x,
   const double ktt = -1.0 + 2.0 * M * r * iS;
   const double ktt_d[2] = {2.0 * M * (Sig - 2.0 * r2) * iS2, -2.0 * M * r * Sig_d[1] * iS2};
   const double ktp = -2.0 * M * a * r * s2 * iS;
-  const double ktp_d[2] = {-2.0 * M * a * s2 * (Sig - 2.0 * r2) * iS2, -2.0 * M * a * r * (2.0 * sc * Sig - s2 * Sig_d[1]) * iS2};
+  const double ktp_d[2] = {-2.0 * M * a * s2 * (Sig - 2.0 * r2) * iS2,
+                           -2.0 * M * a * r * (2.0 * sc * Sig - s2 * Sig_d[1]) * iS2};
   const double krr = Sig / Del;
   const double krr_d[2] = {(Sig_d[0] * Del - Sig * Del_r) / (Del * Del), Sig_d[1] / Del};
   const double kqq = Sig;
   const double kqq_d[2] = {Sig_d[0], Sig_d[1]};
   const double P = r2 + a2 + 2.0 * M * a2 * r * s2 * iS;
-  const double P_d[2] = {2.0 * r + 2.0 * M * a2 * s2 * (Sig - 2.0 * r2) * iS2, 2.0 * M * a2 * r * (2.0 * sc * Sig - s2 * Sig_d[1]) * iS2};
+  const double P_d[2] = {2.0 * r + 2.0 * M * a2 * s2 * (Sig - 2.0 * r2) * iS2,
+                         2.0 * M * a2 * r * (2.0 * sc * Sig - s2 * Sig_d[1]) * iS2};
   const double kpp = P * s2;
   const double kpp_d[2] = {P_d[0] * s2, P_d[1] * s2 + 2.0 * sc * P};
   // deviation

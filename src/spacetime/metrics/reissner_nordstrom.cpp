@@ -16,17 +16,18 @@ namespace geovis {
 class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
  public:
   ReissnerNordstrom()
-      : MetricCRTP({"ReissnerNordstrom",
-                    {"t", "r", "theta", "phi"},
-                    CoordType::Spherical,
-                    {{"charge", 0.1, -1e300, 1e300, false, false,
-                      "electric charge Q (geometrized units); |Q| <= M: black hole with horizon "
-                      "r+ = M + sqrt(M^2 - Q^2), |Q| > M: naked singularity at r = 0"},
-                     {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0"}},
-                    {TetradKind::Default, TetradKind::Static},
-                    "charged black hole (Reissner-Nordstrom) (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
-                    Vec4{{0, 6, M_PI / 2, 0}},
-                    {{"charge", 0.0}, {"mass", 0.0}}}) {
+      : MetricCRTP(
+            {"ReissnerNordstrom",
+             {"t", "r", "theta", "phi"},
+             CoordType::Spherical,
+             {{"charge", 0.1, -1e300, 1e300, false, false,
+               "electric charge Q (geometrized units); |Q| <= M: black hole with horizon "
+               "r+ = M + sqrt(M^2 - Q^2), |Q| > M: naked singularity at r = 0"},
+              {"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0"}},
+             {TetradKind::Default, TetradKind::Static},
+             "charged black hole (Reissner-Nordstrom) (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+             Vec4{{0, 6, M_PI / 2, 0}},
+             {{"charge", 0.0}, {"mass", 0.0}}}) {
     on_params_changed();
   }
 
@@ -111,7 +112,8 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
     // Outer horizon r+ = M + sqrt(M² − Q²) (Catalogue of Spacetimes, Reissner-Nordström);
     // no horizon when |Q| > M.
     r_plus_ = Q2_ <= M_ * M_ ? M_ + std::sqrt(M_ * M_ - Q2_) : 0.0;
-    r_min_ = r_plus_ > 0.0 ? r_plus_ * (1.0 + horizon_eps_) : 1e-8 * std::max(M_, std::sqrt(Q2_));  // Metric::horizon_eps
+    r_min_ =
+        r_plus_ > 0.0 ? r_plus_ * (1.0 + horizon_eps_) : 1e-8 * std::max(M_, std::sqrt(Q2_));  // Metric::horizon_eps
     if (!(r_min_ > 0.0)) r_min_ = 1e-300;  // M = Q = 0: Minkowski, only r > 0 required
   }
 

@@ -21,16 +21,19 @@ namespace geovis {
 class RotDihole final : public MetricCRTP<RotDihole> {
  public:
   RotDihole()
-      : MetricCRTP({"RotDihole",
-                    {"t", "x", "y", "z"},
-                    CoordType::Cartesian,
-                    {{"mass1", 1.0, 0.0, 1e300, false, false, "mass (= charge) M1 >= 0 of hole 1, at (0, -sin wt, cos wt)"},
-                     {"mass2", 1.0, 0.0, 1e300, false, false, "mass (= charge) M2 >= 0 of hole 2, at (0, sin wt, -cos wt)"},
-                     {"omega", 0.0, -1e300, 1e300, false, false, "angular frequency w of the holes' revolution about the x axis"}},
-                    {TetradKind::Default},
-                    "extreme Reissner-Nordstrom dihole, optionally revolving (Motion4D RotDihole; Majumdar-Papapetrou, Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
-                    Vec4{{0, 3, 0, 0}},
-                    {{"mass1", 0.0}, {"mass2", 0.0}}}) {
+      : MetricCRTP(
+            {"RotDihole",
+             {"t", "x", "y", "z"},
+             CoordType::Cartesian,
+             {{"mass1", 1.0, 0.0, 1e300, false, false, "mass (= charge) M1 >= 0 of hole 1, at (0, -sin wt, cos wt)"},
+              {"mass2", 1.0, 0.0, 1e300, false, false, "mass (= charge) M2 >= 0 of hole 2, at (0, sin wt, -cos wt)"},
+              {"omega", 0.0, -1e300, 1e300, false, false,
+               "angular frequency w of the holes' revolution about the x axis"}},
+             {TetradKind::Default},
+             "extreme Reissner-Nordstrom dihole, optionally revolving (Motion4D RotDihole; Majumdar-Papapetrou, "
+             "Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+             Vec4{{0, 3, 0, 0}},
+             {{"mass1", 0.0}, {"mass2", 0.0}}}) {
     on_params_changed();
   }
 
@@ -62,8 +65,8 @@ class RotDihole final : public MetricCRTP<RotDihole> {
     const double q1 = m1_ / (r1 * r1 * r1), q2 = m2_ / (r2 * r2 * r2);
     const double U = 1.0 + m1_ / r1 + m2_ / r2;
     // ∂_μ U = −Σ M_k (∂_μ r_k²)/(2 r_k³); ∂_t r1² = 2ω(y1 c + z1 s), ∂_t r2² = −2ω(y2 c + z2 s).
-    const double dU[4] = {-q1 * omega_ * (y1 * c + z1 * s) + q2 * omega_ * (y2 * c + z2 * s),
-                          -(q1 + q2) * x[1], -(q1 * y1 + q2 * y2), -(q1 * z1 + q2 * z2)};
+    const double dU[4] = {-q1 * omega_ * (y1 * c + z1 * s) + q2 * omega_ * (y2 * c + z2 * s), -(q1 + q2) * x[1],
+                          -(q1 * y1 + q2 * y2), -(q1 * z1 + q2 * z2)};
     const double iU = 1.0 / U, U2 = U * U;
     G.G[0][0][0] = -dU[0] * iU;
     for (int i = 1; i < 4; ++i) {
@@ -105,8 +108,8 @@ class RotDihole final : public MetricCRTP<RotDihole> {
     }
     const double s = std::sin(omega_ * x[0]), c = std::cos(omega_ * x[0]);
     const double y1 = x[2] + s, z1 = x[3] - c, y2 = x[2] - s, z2 = x[3] + c;
-    const double U = 1.0 + m1_ / std::sqrt(x[1] * x[1] + y1 * y1 + z1 * z1) +
-                     m2_ / std::sqrt(x[1] * x[1] + y2 * y2 + z2 * z2);
+    const double U =
+        1.0 + m1_ / std::sqrt(x[1] * x[1] + y1 * y1 + z1 * z1) + m2_ / std::sqrt(x[1] * x[1] + y2 * y2 + z2 * z2);
     Tetrad e{};
     e[0][0] = U;
     for (int i = 1; i < 4; ++i) e[i][i] = 1.0 / U;

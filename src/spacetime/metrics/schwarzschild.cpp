@@ -15,7 +15,8 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
                     CoordType::Spherical,
                     {{"mass", 1.0, 0.0, 1e300, false, false, "mass M of the black hole (r_s = 2M)"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "Schwarzschild black hole in Schwarzschild coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    "Schwarzschild black hole in Schwarzschild coordinates (Mueller & Grave, Catalogue of Spacetimes, "
+                    "arXiv:0904.4184)",
                     Vec4{{0, 6, M_PI / 2, 0}},
                     {{"mass", 0.0}}}) {
     on_params_changed();
@@ -98,7 +99,9 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
   std::vector<MetricFunction> functions() const override {
     const double rs = rs_;
     return static_spherical_functions(
-        [rs](double r) { return StaticSphericalFunctions{1.0 - rs / r, rs / (r * r), 1.0 / (1.0 - rs / r), r * r, 2.0 * r}; },
+        [rs](double r) {
+          return StaticSphericalFunctions{1.0 - rs / r, rs / (r * r), 1.0 / (1.0 - rs / r), r * r, 2.0 * r};
+        },
         rs, 10.0 * std::max(rs, 1.0));
   }
 

@@ -20,7 +20,8 @@ class SchwarzschildCart final : public MetricCRTP<SchwarzschildCart> {
                     CoordType::Cartesian,
                     {{"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0 of the black hole (r_s = 2M)"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "Schwarzschild black hole in pseudo-Cartesian coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    "Schwarzschild black hole in pseudo-Cartesian coordinates (Mueller & Grave, Catalogue of "
+                    "Spacetimes, arXiv:0904.4184)",
                     Vec4{{0, 6, 0, 0}},
                     {{"mass", 0.0}}}) {
     on_params_changed();
@@ -56,8 +57,7 @@ class SchwarzschildCart final : public MetricCRTP<SchwarzschildCart> {
       G.G[0][0][i] = G.G[0][i][0] = c_ttr * n[i];
       G.G[i][0][0] = c_rtt * n[i];
       for (int j = 1; j < 4; ++j)
-        for (int k = 1; k < 4; ++k)
-          G.G[i][j][k] = n[i] * (-(c_ttr + c_perp) * n[j] * n[k] + (j == k ? c_perp : 0.0));
+        for (int k = 1; k < 4; ++k) G.G[i][j][k] = n[i] * (-(c_ttr + c_perp) * n[j] * n[k] + (j == k ? c_perp : 0.0));
     }
   }
 

@@ -17,10 +17,10 @@ class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
       : MetricCRTP({"SchwarzschildIsotropic",
                     {"t", "x", "y", "z"},
                     CoordType::Cartesian,
-                    {{"mass", 1.0, 0.0, 1e300, false, false,
-                      "mass M >= 0 of the black hole (horizon at rho = M/2)"}},
+                    {{"mass", 1.0, 0.0, 1e300, false, false, "mass M >= 0 of the black hole (horizon at rho = M/2)"}},
                     {TetradKind::Default, TetradKind::Static},
-                    "Schwarzschild black hole in isotropic coordinates (Mueller & Grave, Catalogue of Spacetimes, arXiv:0904.4184)",
+                    "Schwarzschild black hole in isotropic coordinates (Mueller & Grave, Catalogue of Spacetimes, "
+                    "arXiv:0904.4184)",
                     Vec4{{0, 6, 0, 0}},
                     {{"mass", 0.0}}}) {
     on_params_changed();
@@ -84,8 +84,8 @@ class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
   /// ρ_ph; ρ = |x| = |p|, dρ/dλ ∝ x·k.
   bool escapes(const Vec4& x, const Vec4& k, double r_min, double& radius) const {
     const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
-    return escapes_spherical(rho, x[1] * k[1] + x[2] * k[2] + x[3] * k[3], (2.0 + std::sqrt(3.0)) * rho_s_, r_min,
-                             rho, radius);
+    return escapes_spherical(rho, x[1] * k[1] + x[2] * k[2] + x[3] * k[3], (2.0 + std::sqrt(3.0)) * rho_s_, r_min, rho,
+                             radius);
   }
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
@@ -114,8 +114,6 @@ class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
   double rho_s_ = 0.5, rho_min_ = 0.5;
 };
 
-std::unique_ptr<Metric> make_metric_SchwarzschildIsotropic() {
-  return std::make_unique<SchwarzschildIsotropic>();
-}
+std::unique_ptr<Metric> make_metric_SchwarzschildIsotropic() { return std::make_unique<SchwarzschildIsotropic>(); }
 
 }  // namespace geovis

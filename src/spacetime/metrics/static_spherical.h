@@ -28,8 +28,8 @@ struct StaticSphericalFunctions {
 
 /// The three extras over r in [r0, r1] (r0: the inner edge, e.g. the horizon; the embedding
 /// starts there). `abc` must be callable on [r0, r1]; it may return NaN outside its domain.
-inline std::vector<MetricFunction> static_spherical_functions(
-    std::function<StaticSphericalFunctions(double)> abc, double r0, double r1) {
+inline std::vector<MetricFunction> static_spherical_functions(std::function<StaticSphericalFunctions(double)> abc,
+                                                              double r0, double r1) {
   std::vector<MetricFunction> out;
   out.push_back({"effective potential of light V(r) = -g_tt/g_phiphi at theta = pi/2 (E^2/L^2 >= V)", "r", r0, r1,
                  [abc](double r) -> double {
@@ -50,8 +50,8 @@ inline std::vector<MetricFunction> static_spherical_functions(
                    if (r == r0) return 0.0;
                    const double U = std::sqrt(r - r0);
                    constexpr int kPanels = 64;
-                   static constexpr double xg[5] = {0.0, -0.5384693101056831, 0.5384693101056831,
-                                                    -0.9061798459386640, 0.9061798459386640};
+                   static constexpr double xg[5] = {0.0, -0.5384693101056831, 0.5384693101056831, -0.9061798459386640,
+                                                    0.9061798459386640};
                    static constexpr double wg[5] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
                                                     0.2369268850561891, 0.2369268850561891};
                    double z = 0;

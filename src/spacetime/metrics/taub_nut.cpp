@@ -117,7 +117,7 @@ class TaubNUT final : public MetricCRTP<TaubNUT> {
   void on_params_changed() override {
     l_ = p(0);
     M_ = p(1);
-    r_plus_ = M_ + std::sqrt(M_ * M_ + l_ * l_);  // root of Δ = 0
+    r_plus_ = M_ + std::sqrt(M_ * M_ + l_ * l_);                       // root of Δ = 0
     r_min_ = r_plus_ > 0.0 ? r_plus_ * (1.0 + horizon_eps_) : 1e-300;  // Metric::horizon_eps
   }
 
