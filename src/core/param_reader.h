@@ -6,6 +6,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/params.h"
@@ -38,6 +39,10 @@ class ParamReader {
   const ParamSpec& spec(std::string_view key) const;
 
   [[noreturn]] void fail(std::string_view key, std::string_view message) const { ps_.fail(key, message); }
+  template <class F>
+  decltype(auto) blame(std::string_view key, F&& f) const {
+    return ps_.blame(key, std::forward<F>(f));
+  }
 
  private:
   const ParamSet& ps_;

@@ -139,6 +139,18 @@ class ParamSet {
 
   /// Throws SceneError for this command/key.
   [[noreturn]] void fail(std::string_view key, std::string_view message) const;
+  /// Runs f() (building the object a key describes) and reports any Error it throws as a
+  /// SceneError of this command and `key`; a SceneError (already located) passes unchanged.
+  template <class F>
+  decltype(auto) blame(std::string_view key, F&& f) const {
+    try {
+      return f();
+    } catch (const SceneError&) {
+      throw;
+    } catch (const Error& e) {
+      fail(key, e.what());
+    }
+  }
 
   /// Checks keys against `specs`: an unknown key is a warning (error when diag.strict) with the
   /// closest valid key; a repeated non-repeatable key, a missing required key, a value of the

@@ -138,15 +138,9 @@ const TypeRegistrar<ObjectType> comp_object{{{"comp-object",
                                              [](const ParamReader& keys, BuildContext& ctx) -> SceneObjectPtr {
                                                const ParamSet& ps = keys.params();
                                                auto comp = std::make_shared<CompoundObject>(group_children(ps, ctx));
-                                               if (ps.has("transform")) {
-                                                 try {
-                                                   comp->set_transform(ps.get_transform("transform"));
-                                                 } catch (const SceneError&) {
-                                                   throw;
-                                                 } catch (const Error& e) {
-                                                   ps.fail("transform", e.what());
-                                                 }
-                                               }
+                                               if (ps.has("transform"))
+                                                 ps.blame("transform",
+                                                          [&] { comp->set_transform(ps.get_transform("transform")); });
                                                comp->id = ps.get_string("id", "");
                                                return comp;
                                              },

@@ -453,18 +453,14 @@ SceneObjectPtr make_local_comp(const ParamReader& keys, BuildContext& ctx) {
   }
   SceneObjectPtr child = children.size() == 1 ? children[0] : std::make_shared<CompoundObject>(children);
   auto metric = require_metric(ps, ctx, has_motion ? "motion" : "localtetrad");
-  try {
+  return ps.blame("obj", [&]() -> SceneObjectPtr {
     auto obj = has_motion ? std::make_shared<LocalObject>(
                                 child, LocalFrame(metric, ctx.ref(ctx.motions, ps, "motion", "motion")))
                           : std::make_shared<LocalObject>(
                                 child, LocalFrame(metric, ctx.ref(ctx.tetrads, ps, "localtetrad", "local tetrad")));
     obj->id = ps.get_string("id", "");
     return obj;
-  } catch (const SceneError&) {
-    throw;
-  } catch (const Error& e) {
-    ps.fail("obj", e.what());
-  }
+  });
 }
 
 const TypeRegistrar<ObjectType> registrar{

@@ -147,14 +147,8 @@ const TypeRegistrar<ObjectType> registrar{
        const std::string file = keys.string("filename");
        const std::string dir = keys.string("pathname");
        const std::string name = dir.empty() ? file : dir + "/" + file;
-       std::shared_ptr<MeshObject> mesh;
-       try {
-         mesh = MeshObject::load(find_file(name, ctx.search_paths, "OBJ mesh"));
-       } catch (const SceneError&) {
-         throw;
-       } catch (const Error& e) {
-         keys.fail("filename", e.what());
-       }
+       const std::shared_ptr<MeshObject> mesh =
+           keys.blame("filename", [&] { return MeshObject::load(find_file(name, ctx.search_paths, "OBJ mesh")); });
        if (!keys.has("rotate")) return finish_primitive(keys, ctx, mesh);
        const auto r = keys.vector("rotate", 4);
        Vec3 axis{r[1], r[2], r[3]};

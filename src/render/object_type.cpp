@@ -56,14 +56,10 @@ SceneObjectPtr finish_primitive(const ParamReader& keys, BuildContext& ctx, std:
   }
   data.objtype = keys.integer("objtype") == 0 ? ObjType::Local : ObjType::InCoords;
   if (ps.has("transform") || pre_rotation) {
-    try {
+    ps.blame("transform", [&] {
       const Transform t = ps.get_transform("transform", Transform::identity(3));
       data.set_transform(pre_rotation ? t * *pre_rotation : t);
-    } catch (const SceneError&) {
-      throw;
-    } catch (const Error& e) {
-      ps.fail("transform", e.what());
-    }
+    });
   }
   obj->chart = keys.integer("chart");
   obj->id = ps.get_string("id", "");
@@ -71,7 +67,7 @@ SceneObjectPtr finish_primitive(const ParamReader& keys, BuildContext& ctx, std:
   if (ps.has("motion")) {
     const MotionPtr& motion = ctx.ref(ctx.motions, ps, "motion", "motion");
     auto metric = require_metric(ps, ctx, "motion");
-    try {
+    return ps.blame("motion", [&]() -> SceneObjectPtr {
       const bool pseudo_cartesian =
           std::string_view(motion->type_name()) == "ConstVelocity" && !metric->info().inertial_cartesian;
       if (pseudo_cartesian) {
@@ -88,11 +84,7 @@ SceneObjectPtr finish_primitive(const ParamReader& keys, BuildContext& ctx, std:
       moving->chart = obj->chart;
       if (pseudo_cartesian) return std::make_shared<PseudoCartesianMotionObject>(moving);
       return moving;
-    } catch (const SceneError&) {
-      throw;
-    } catch (const Error& e) {
-      ps.fail("motion", e.what());
-    }
+    });
   }
   return obj;
 }

@@ -295,14 +295,10 @@ const TypeRegistrar<TextureType> image_texture{
        const std::string file = keys.string("file");
        const auto sampling = static_cast<ImageTexture::Sampling>(
            keys.choice_index("sampling", ImageTexture::sampling_names(), "sampling"));
-       try {
+       return keys.blame("file", [&]() -> std::shared_ptr<Texture2D> {
          return std::make_shared<ImageTexture>(load_image_cached(find_file(file, ctx.search_paths, "texture image")),
                                                sampling);
-       } catch (const SceneError&) {
-         throw;
-       } catch (const Error& e) {
-         keys.fail("file", e.what());
-       }
+       });
      }}};
 
 }  // namespace

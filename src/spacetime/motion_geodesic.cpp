@@ -93,14 +93,10 @@ MotionPtr make_geodesic(const ParamReader& keys, std::shared_ptr<const Metric> m
     ps.fail("forward", "a Geodesic motion needs `forward` and/or `backward` (proper-time ranges > 0)");
   SolverConfig cfg = solver;
   if (ps.has("stepsize")) cfg.step_size = keys.number("stepsize");
-  try {
+  return keys.blame("pos", [&]() -> MotionPtr {
     return std::make_shared<GeodesicMotion>(metric, cfg, pos, e, keys.number("tau0"), forward, backward,
                                             keys.integer("maxnumpoints"));
-  } catch (const SceneError&) {
-    throw;
-  } catch (const Error& err) {
-    ps.fail("pos", err.what());
-  }
+  });
 }
 
 const TypeRegistrar<MotionType> geodesic{

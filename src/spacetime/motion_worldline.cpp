@@ -282,13 +282,9 @@ MotionPtr make_worldline(const ParamReader& keys, std::shared_ptr<const Metric> 
     ps.fail("e0..e3", err.what());
   }
   const double tau0 = have_tau ? taus.front() : keys.number("tau0");
-  try {
+  return ps.blame(key, [&]() -> MotionPtr {
     return std::make_shared<WorldlineMotion>(metric, std::move(events), std::move(taus), frame, tau0);
-  } catch (const SceneError&) {
-    throw;
-  } catch (const Error& err) {
-    ps.fail(key, err.what());
-  }
+  });
 }
 
 const TypeRegistrar<MotionType> worldline{
