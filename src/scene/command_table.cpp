@@ -18,6 +18,7 @@
 #include "spacetime/metric_registry.h"
 #include "spacetime/motion_factory.h"
 #include "spacetime/solver_type.h"
+#include "spacetime/tetrad.h"
 
 namespace geovis {
 
@@ -90,37 +91,28 @@ std::vector<ParamSpec> keys_init_raygen(const std::string&) {
 
 std::vector<ParamSpec> keys_local_tetrad(const std::string&) {
   using T = ParamType;
-  return {{"id", T::String, "id"},
-          {"pos", T::Any, "position #(t x1 x2 x3)"},
-          {"vel", T::Vec4, "coordinate four-velocity"},
-          {"localvel", T::Vec3, "3-velocity relative to the natural tetrad"},
-          {"e0", T::Vec4, "base vector e0"},
-          {"e1", T::Vec4, "base vector e1"},
-          {"e2", T::Vec4, "base vector e2"},
-          {"e3", T::Vec4, "base vector e3"},
-          {"incoords", T::Bool, "#t: e0..e3 in coordinates; #f: relative to the natural tetrad"},
-          {"metric", T::String, "metric id"},
-          {"localframe", T::Any, "natural tetrad kind (gpTetrad* constant)"}};
+  std::vector<ParamSpec> keys = {{"id", T::String, "id"}, {"metric", T::String, "metric id"}};
+  const auto& tetrad = tetrad_param_specs();
+  keys.insert(keys.end(), tetrad.begin(), tetrad.end());
+  return keys;
 }
 
 std::vector<ParamSpec> keys_init_projector(const std::string&) {
   using T = ParamType;
-  return {{"id", T::String, "id"},
-          {"raygen", T::String, "ray generator id"},
-          {"localtetrad", T::String, "observer's local tetrad id"},
-          {"motion", T::String, "observer's motion id"},
-          {"actualpos", T::Int, "point of the motion the observer is at"},
-          {"color", T::Vec3, "background colour"},
-          {"errcolor", T::Vec3, "colour of rays stopped by an integration error"},
-          {"cstrcolor", T::Vec3, "colour of rays stopped by the constraint check"},
-          {"breakcolor", T::Vec3, "colour of rays stopped by the metric's break condition"},
-          {"pos", T::Any, "observer position (instead of localtetrad)"},
-          {"e0", T::Vec4, "base vector e0"},
-          {"e1", T::Vec4, "base vector e1"},
-          {"e2", T::Vec4, "base vector e2"},
-          {"e3", T::Vec4, "base vector e3"},
-          {"incoords", T::Bool, "#t: e0..e3 in coordinates"},
-          {"localframe", T::Any, "natural tetrad kind"}};
+  std::vector<ParamSpec> keys = {
+      {"id", T::String, "id"},
+      {"raygen", T::String, "ray generator id"},
+      {"localtetrad", T::String, "observer's local tetrad id"},
+      {"motion", T::String, "observer's motion id"},
+      {"actualpos", T::Int, "point of the motion the observer is at", false, false, 0.0, ParamRange::non_negative()},
+      {"color", T::Vec3, "background colour", false, false, std::vector<double>{0, 0, 0}},
+      {"errcolor", T::Vec3, "colour of rays stopped by an integration error (default: the background)"},
+      {"cstrcolor", T::Vec3, "colour of rays stopped by the constraint check (default: black)"},
+      {"breakcolor", T::Vec3, "colour of rays stopped by the metric's break condition (default: cstrcolor, else black)"}};
+  // The observer's own tetrad, instead of localtetrad.
+  const auto tetrad = tetrad_param_specs({"pos", "e0", "e1", "e2", "e3", "incoords", "localframe"});
+  keys.insert(keys.end(), tetrad.begin(), tetrad.end());
+  return keys;
 }
 
 std::vector<ParamSpec> keys_init_device(const std::string&) {

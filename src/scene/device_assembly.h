@@ -85,10 +85,12 @@ class DeviceBuild {
     // -- projector: observer, ray generator, colours --
     const DefPtr& proj = Impl::resolve(defs_, device_ps, "projector", Kind::Projector, dev_.seq);
     const ParamSet& projector_ps = proj->ps;
-    job.background = color3(projector_ps, "color", Color{0, 0, 0});
-    if (projector_ps.has("errcolor")) job.error_color = color3(projector_ps, "errcolor", Color{});
-    if (projector_ps.has("cstrcolor")) job.constraint_color = color3(projector_ps, "cstrcolor", Color{});
-    if (projector_ps.has("breakcolor")) job.break_color = color3(projector_ps, "breakcolor", Color{});
+    const std::vector<ParamSpec> projector_specs = find_scene_command("init-projector")->keys(std::string());
+    const ParamReader projector_keys(projector_ps, projector_specs);
+    job.background = color3(projector_keys, "color");
+    if (projector_ps.has("errcolor")) job.error_color = color3(projector_keys, "errcolor");
+    if (projector_ps.has("cstrcolor")) job.constraint_color = color3(projector_keys, "cstrcolor");
+    if (projector_ps.has("breakcolor")) job.break_color = color3(projector_keys, "breakcolor");
     std::string observer_kind;
     job.observer = observer_of(proj, observer_kind);
     if (!metric_->is_valid(job.observer.pos))
@@ -272,7 +274,8 @@ class DeviceBuild {
       const DefPtr& motion_def = Impl::resolve(defs_, projector_ps, "motion", Kind::Motion, proj->seq);
       const MotionPtr mo = motion_of(motion_def);
       const auto& samples = mo->samples();
-      const int n = projector_ps.get_int("actualpos", 0);
+      const std::vector<ParamSpec> projector_specs = find_scene_command("init-projector")->keys(std::string());
+      const int n = ParamReader(projector_ps, projector_specs).integer("actualpos");
       if (n < 0 || n >= static_cast<int>(samples.size()))
         projector_ps.fail("actualpos", "point " + std::to_string(n) + " does not exist: motion \"" + motion_def->id +
                                            "\" has " + std::to_string(samples.size()) + " points (0 to " +
@@ -353,8 +356,8 @@ class DeviceBuild {
     return std::shared_ptr<const Metric>(std::move(m));
   }
 
-  static Color color3(const ParamSet& ps, std::string_view key, Color def) {
-    const auto v = ps.get_vector(key, 3, std::vector<double>{def.r, def.g, def.b});
+  static Color color3(const ParamReader& keys, std::string_view key) {
+    const auto v = keys.vector(key, 3);
     return Color{v[0], v[1], v[2]};
   }
 

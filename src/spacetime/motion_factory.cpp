@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/param_reader.h"
+#include "spacetime/tetrad.h"
 
 namespace geovis {
 
@@ -20,15 +21,9 @@ std::vector<ParamSpec> common_specs() {
 }  // namespace
 
 std::vector<ParamSpec> motion_frame_specs() {
-  return {
-      {"e0", ParamType::Vec4, "base vector e0 (relative to the natural tetrad unless incoords)"},
-      {"e1", ParamType::Vec4, "base vector e1"},
-      {"e2", ParamType::Vec4, "base vector e2"},
-      {"e3", ParamType::Vec4, "base vector e3"},
-      {"incoords", ParamType::Bool, "#t: e0..e3 are coordinate components"},
-      {"localframe", ParamType::Any, "natural tetrad kind (name or 0..6)"},
-      {"tau0", ParamType::Number, "proper time at the start event", false, false, 0.0},
-  };
+  std::vector<ParamSpec> specs = tetrad_param_specs({"e0", "e1", "e2", "e3", "incoords", "localframe"});
+  specs.push_back({"tau0", ParamType::Number, "proper time at the start event", false, false, 0.0});
+  return specs;
 }
 
 Vec3 motion_vector_key(const Param& p, const ParamSet& ps, size_t n, std::vector<double>& out) {

@@ -3,8 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.h"
+#include "core/param_reader.h"
 
 namespace geovis {
 
@@ -21,6 +23,13 @@ std::string vec_str(const Vec4& v) {
 }
 
 const char* const kKindNames[] = {"default", "static", "lnrf", "freefall", "comoving", "cylinder", "cartesian"};
+
+/// The natural tetrad of one of kKindNames (the default of the `localframe` spec).
+TetradKind tetrad_kind_named(const std::string& name) {
+  for (int i = 0; i < 7; ++i)
+    if (name == kKindNames[i]) return static_cast<TetradKind>(i);
+  throw std::logic_error("tetrad_kind_named: no natural tetrad \"" + name + "\"");
+}
 
 }  // namespace
 
@@ -180,7 +189,38 @@ TetradKind tetrad_kind_from_param(const ParamSet& ps, std::string_view key, Tetr
   ps.fail(key, "unknown natural tetrad \"" + s + "\"" + did_you_mean(s, names) + " (valid: " + join(names) + ")");
 }
 
+const std::vector<ParamSpec>& tetrad_param_specs() {
+  using T = ParamType;
+  static const std::vector<ParamSpec> specs = {
+      {"pos", T::Any, "position #(t x1 x2 x3) (GeoViS also accepts a 5-vector; its first four entries are used)"},
+      {"vel", T::Vec4, "coordinate four-velocity of the observer (instead of localvel)"},
+      {"localvel", T::Vec3, "3-velocity relative to the natural tetrad (|v| < 1)", false, false,
+       std::vector<double>{0, 0, 0}},
+      {"e0", T::Vec4, "base vector e0 (relative to the natural tetrad unless incoords)", false, false,
+       std::vector<double>{1, 0, 0, 0}},
+      {"e1", T::Vec4, "base vector e1", false, false, std::vector<double>{0, 1, 0, 0}},
+      {"e2", T::Vec4, "base vector e2", false, false, std::vector<double>{0, 0, 1, 0}},
+      {"e3", T::Vec4, "base vector e3", false, false, std::vector<double>{0, 0, 0, 1}},
+      {"incoords", T::Bool, "#t: e0..e3 are coordinate components; #f: relative to the natural tetrad", false, false,
+       false},
+      {"localframe", T::Any,
+       "natural tetrad: default, static, lnrf, freefall, comoving, cylinder, cartesian (or GeoViS's gpTetrad* "
+       "constant 0..6)",
+       false, false, std::string(kKindNames[static_cast<int>(TetradKind::Default)])},
+  };
+  return specs;
+}
+
+std::vector<ParamSpec> tetrad_param_specs(std::initializer_list<std::string_view> keys) {
+  std::vector<ParamSpec> out;
+  for (std::string_view k : keys)
+    for (const ParamSpec& s : tetrad_param_specs())
+      if (s.key == k) out.push_back(s);
+  return out;
+}
+
 TetradSpec tetrad_spec_from_params(const ParamSet& ps, bool require_pos, Vec4 default_pos) {
+  const ParamReader keys(ps, tetrad_param_specs());
   TetradSpec spec;
   if (require_pos || ps.has("pos")) {
     const std::vector<double> p = ps.get_vector_any("pos", {4, 5});
@@ -190,15 +230,15 @@ TetradSpec tetrad_spec_from_params(const ParamSet& ps, bool require_pos, Vec4 de
   }
   for (int a = 0; a < 4; ++a) {
     const char key[3] = {'e', static_cast<char>('0' + a), '\0'};
-    const std::vector<double> v = ps.get_vector(
-        key, 4, std::vector<double>{a == 0 ? 1.0 : 0.0, a == 1 ? 1.0 : 0.0, a == 2 ? 1.0 : 0.0, a == 3 ? 1.0 : 0.0});
+    const std::vector<double> v = keys.vector(key, 4);
     spec.e[a] = Vec4{{v[0], v[1], v[2], v[3]}};
   }
-  spec.incoords = ps.get_bool("incoords", false);
-  spec.frame = tetrad_kind_from_param(ps, "localframe", TetradKind::Default);
+  spec.incoords = keys.boolean("incoords");
+  spec.frame = ps.has("localframe") ? tetrad_kind_from_param(ps, "localframe", TetradKind::Default)
+                                    : tetrad_kind_named(std::get<std::string>(keys.spec("localframe").def->v));
   if (ps.has("localvel") && ps.has("vel"))
     ps.fail("vel", "give either `vel` (coordinate four-velocity) or `localvel` (local 3-velocity), not both");
-  const std::vector<double> lv = ps.get_vector("localvel", 3, std::vector<double>{0, 0, 0});
+  const std::vector<double> lv = keys.vector("localvel", 3);
   spec.localvel = Vec3{lv[0], lv[1], lv[2]};
   if (dot(spec.localvel, spec.localvel) >= 1.0)
     ps.fail("localvel",

@@ -7,8 +7,10 @@
 // g(e_(a), e_(b)) = η_ab and e_(0) future-directed timelike.
 #pragma once
 
+#include <initializer_list>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/params.h"
 #include "spacetime/metric.h"
@@ -92,6 +94,14 @@ Tetrad build_tetrad(const Metric& m, const TetradSpec& spec, double tol = kUserT
 /// a name ("default", "static", "lnrf", "freefall", "comoving", "cylinder", "cartesian";
 /// `init-motion`). Unknown names/values give a SceneError naming the key with the closest name.
 TetradKind tetrad_kind_from_param(const ParamSet& ps, std::string_view key, TetradKind def);
+
+/// The keys of a user tetrad (`local-tetrad`, an `init-projector` observer, a motion's start frame)
+/// with the defaults tetrad_spec_from_params uses: e_(a) = the natural tetrad's own vectors, given
+/// relative to it (incoords #f), the default natural tetrad, at rest (localvel #(0 0 0)); `pos` and
+/// `vel` have none. One list, so the scene reference shows what the code does.
+const std::vector<ParamSpec>& tetrad_param_specs();
+/// The entries of tetrad_param_specs() named in `keys`, in that order.
+std::vector<ParamSpec> tetrad_param_specs(std::initializer_list<std::string_view> keys);
 
 /// Reads pos (4-vector, or GeoViS's 5-vector whose first 4 entries are used), e0..e3, incoords,
 /// localframe, localvel and vel from a `local-tetrad` or `init-motion` parameter set. `pos` is
