@@ -156,6 +156,12 @@ Tetrad tetrad_for_four_velocity(const Metric& m, const Vec4& x, const Tetrad& re
 
 Tetrad build_tetrad(const Metric& m, const TetradSpec& spec, double tol) {
   require_valid_position(m, spec.pos, "tetrad position");
+  if (spec.incoords && !tetrad_spec_boosted(spec)) {
+    // A frame given in coordinates needs no natural tetrad, which may not exist there (no static
+    // observer inside a horizon: GeoViS's fallIntoBH places its freely falling observer there).
+    check_orthonormal(m, spec.pos, spec.e, tol, "tetrad e0..e3 (in coordinates)");
+    return gram_schmidt(m, spec.pos, spec.e);
+  }
   const Tetrad nat = m.natural_tetrad(spec.pos, spec.frame);
   Tetrad E = spec.incoords ? spec.e : tetrad_from_local(nat, spec.e);
   check_orthonormal(m, spec.pos, E, tol, spec.incoords ? "tetrad e0..e3 (in coordinates)" : "tetrad e0..e3");
@@ -188,6 +194,8 @@ TetradKind tetrad_kind_from_param(const ParamSet& ps, std::string_view key, Tetr
     if (l == kKindNames[i] || l == std::string("gptetrad") + kKindNames[i]) return static_cast<TetradKind>(i);
   ps.fail(key, "unknown natural tetrad \"" + s + "\"" + did_you_mean(s, names) + " (valid: " + join(names) + ")");
 }
+
+bool tetrad_spec_boosted(const TetradSpec& spec) { return spec.has_vel || dot(spec.localvel, spec.localvel) != 0.0; }
 
 const std::vector<ParamSpec>& tetrad_param_specs() {
   using T = ParamType;
@@ -260,13 +268,13 @@ Tetrad tetrad_from_params(const ParamSet& ps, const Metric& m, Vec4* pos_out) {
   } catch (const Error& e) {
     ps.fail("pos", e.what());
   }
-  Tetrad nat{};
-  try {
-    nat = m.natural_tetrad(spec.pos, spec.frame);
-  } catch (const Error& e) {
-    ps.fail("localframe", e.what());
+  if (!spec.incoords || tetrad_spec_boosted(spec)) {
+    try {
+      m.natural_tetrad(spec.pos, spec.frame);
+    } catch (const Error& e) {
+      ps.fail("localframe", e.what());
+    }
   }
-  (void)nat;
   try {
     TetradSpec no_boost = spec;
     no_boost.localvel = Vec3{0, 0, 0};

@@ -95,6 +95,9 @@ Tetrad build_tetrad(const Metric& m, const TetradSpec& spec, double tol = kUserT
 /// `init-motion`). Unknown names/values give a SceneError naming the key with the closest name.
 TetradKind tetrad_kind_from_param(const ParamSet& ps, std::string_view key, TetradKind def);
 
+/// Whether the spec asks for a boost (vel, or a non-zero localvel) relative to its natural tetrad.
+bool tetrad_spec_boosted(const TetradSpec& spec);
+
 /// The keys of a user tetrad (`local-tetrad`, an `init-projector` observer, a motion's start frame)
 /// with the defaults tetrad_spec_from_params uses: e_(a) = the natural tetrad's own vectors, given
 /// relative to it (incoords #f), the default natural tetrad, at rest (localvel #(0 0 0)); `pos` and

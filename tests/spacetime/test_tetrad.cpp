@@ -63,6 +63,32 @@ TEST(Tetrad, InCoordinatesIsCheckedWithTheMetric) {
   EXPECT_NE(error_of([&] { build_tetrad(*m, spec); }).find("g(e0,e0) = -0.8 instead of -1"), std::string::npos);
 }
 
+TEST(Tetrad, InCoordinatesNeedsNoStaticObserverInsideTheHorizon) {
+  // Ingoing Eddington–Finkelstein (M = 1) at r = 1.5 < r_s: g_vv = 1/3, g_vr = 1, g_rr = 0. A radially
+  // infalling observer with u^r = −1 has (1/3)(u^v)² − 2u^v + 1 = 0, u^v = 3 − √6 (future: v grows);
+  // e1 = (∂_r + g(u, ∂_r) u)/g(u, ∂_r) with g(u, ∂_r) = u^v; e2 = ∂_θ/r, e3 = ∂_φ/(r sin θ). GeoViS's
+  // fallIntoBH gives such a frame in coordinates: no static observer (natural tetrad) exists there.
+  auto m = make_metric("EddFinkIn");
+  const double r = 1.5, th = 1.0, uv = 3 - std::sqrt(6.0);
+  TetradSpec spec;
+  spec.pos = Vec4{{0, r, th, 0}};
+  spec.incoords = true;
+  spec.e[0] = Vec4{{uv, -1, 0, 0}};
+  spec.e[1] = Vec4{{uv, (1 - uv) / uv, 0, 0}};
+  spec.e[2] = Vec4{{0, 0, 1 / r, 0}};
+  spec.e[3] = Vec4{{0, 0, 0, 1 / (r * std::sin(th))}};
+  EXPECT_LT(orthonormality_error(*m, spec.pos, spec.e), 1e-14);
+  const Tetrad e = build_tetrad(*m, spec);
+  for (int a = 0; a < 4; ++a)
+    for (int mu = 0; mu < 4; ++mu) EXPECT_NEAR(e[a][mu], spec.e[a][mu], 1e-14) << a << mu;
+  // Relative to the natural (static) tetrad, or boosted from it, the frame cannot be built there.
+  spec.incoords = false;
+  EXPECT_NE(error_of([&] { build_tetrad(*m, spec); }), "");
+  spec.incoords = true;
+  spec.localvel = Vec3{0.1, 0, 0};
+  EXPECT_NE(error_of([&] { build_tetrad(*m, spec); }), "");
+}
+
 TEST(Tetrad, BoostMatchesTheFourVelocityAndStaysOrthonormal) {
   auto m = make_metric("Schwarzschild");
   const Vec4 x{{0, 6, M_PI / 2, 0}};
