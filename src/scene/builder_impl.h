@@ -300,6 +300,7 @@ struct SceneBuilder::Impl {
     c.step_ctrl = keys.boolean("step_ctrl");
     c.step_size = keys.number("step_size");
     c.step_max = keys.number("max_step");
+    c.step_max_separable = ps.has("max_step");
     c.eps_abs = keys.number("eps_abs");
     c.eps_rel = keys.number("eps_rel");
     c.separable = keys.boolean("separable");

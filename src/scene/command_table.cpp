@@ -56,7 +56,7 @@ std::vector<ParamSpec> bounding_box_keys() {
 
 std::vector<ParamSpec> keys_init_solver(const std::string&) {
   using T = ParamType;
-  const SolverConfig d;  // GeoViS's defaults (spacetime/geodesic.h)
+  const SolverConfig d;  // GeoViS's defaults (spacetime/geodesic.h), except max_step (below)
   std::vector<ParamSpec> keys = {
       {"type", T::String, "integrator name (GeoViS nickname or full name)", true},
       {"id", T::String, "id"},
@@ -65,7 +65,10 @@ std::vector<ParamSpec> keys_init_solver(const std::string&) {
       {"geoddir", T::String, "forward or backward", false, false, std::string("forward")},
       {"step_ctrl", T::Bool, "adaptive step size control", false, false, d.step_ctrl},
       {"step_size", T::Number, "initial or fixed step size", false, false, d.step_size, ParamRange::positive()},
-      {"max_step", T::Number, "maximal step size", false, false, d.step_max, ParamRange::positive()},
+      {"max_step", T::Number,
+       "maximal step size in the affine parameter (GeoViS's default 1); Carter's separated equations (separable "
+       "#t) take it only when it is given",
+       false, false, 1.0, ParamRange::positive()},
       {"eps_abs", T::Number, "absolute tolerance", false, false, d.eps_abs, ParamRange::non_negative()},
       {"eps_rel", T::Number, "relative tolerance", false, false, d.eps_rel, ParamRange::non_negative()},
       {"separable", T::Bool,

@@ -66,7 +66,12 @@ struct SolverConfig {
   double eps_rel = 0.0;     ///< GeoViS default
   bool step_ctrl = true;    ///< false: fixed step `step_size`
   double step_size = 0.01;  ///< initial (or fixed) step |h|
-  double step_max = 1e10;   ///< maximal |h|
+  double step_max = 1e10;   ///< maximal |h| in the affine parameter (scenes: GeoViS's max_step, default 1)
+  /// step_max also limits Carter's separated equations (`separable`). The scene builder clears it
+  /// when the scene gives no max_step: GeoViS's default of 1 belongs to its coordinate form, whose
+  /// error control can step over a thin feature of the metric (a warp bubble) that it never
+  /// samples, while the separated equations' right-hand side is one polynomial in 1/r and cos θ.
+  bool step_max_separable = true;
   double step_min = 1e-14;  ///< below this the integration stops with StepUnderflow
   int max_steps = 3000;     ///< maximal number of accepted steps (GeoViS maxNumPoints)
   double lambda_max = std::numeric_limits<double>::infinity();  ///< maximal |affine parameter|

@@ -102,8 +102,10 @@ void kerr_mino_to_bl(const KerrMinoConstants& c, const PolarOffset& polar, const
               (ddph * sigma - dy[I::PHI] * dsig) * i3}};
 }
 
-GeodesicResult integrate_kerr_mino(double M, double a, double r_break, const SolverConfig& cfg, double* y_io,
+GeodesicResult integrate_kerr_mino(double M, double a, double r_break, const SolverConfig& cfg_in, double* y_io,
                                    double lambda0, StepCallback cb) {
+  SolverConfig cfg = cfg_in;
+  if (!cfg_in.step_max_separable) cfg.step_max = SolverConfig{}.step_max;
   const Vec4 x0{{y_io[0], y_io[1], y_io[2], y_io[3]}};
   const Vec4 k0{{y_io[4], y_io[5], y_io[6], y_io[7]}};
   const double mu2 = -constraint_target(cfg.type);
