@@ -304,6 +304,49 @@ TEST(ObjLocal, ConstVelocityBoostedSphereMatchesAnalytic) {
   EXPECT_GT(hits, 3);
 }
 
+TEST(ObjLocal, OneSegmentAcrossTheWholeSceneHitsAsAnalytic) {
+  // A straight light ray in Minkowski is one segment (render/straight_ray.h): segments of length
+  // 400, far longer than the body and its motion's time scales, must find the analytic first hit
+  // of the moving sphere (v = 0.6, sampled worldline τ in [−40, 40] and ConstVelocity boost) and of
+  // the rotating paddle, as the short steps of the tests above do.
+  auto metric = minkowski();
+  auto sphere = std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{1, 1, 1});
+  LocalObject sampled(sphere, LocalFrame(metric, std::make_shared<UniformMotion>(Vec3{0.6, 0, 0}, -40, 40)));
+  ConstVelocityMotion::Op boost;
+  boost.v = {0.6, 0, 0};
+  LocalObject boosted(
+      sphere, LocalFrame(metric, std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{boost})));
+  const double L = 400, t_o = 10;
+  const Vec3 p{0, -10, 0};
+  int hits = 0;
+  for (double ax = -0.2; ax <= 0.2; ax += 0.02) {
+    const Vec3 n = normalize(Vec3{ax, 1.0, 0.03});
+    double lambda;
+    const bool expect_hit = analytic_moving_sphere(0.6, 1.0, t_o, p, n, lambda);
+    for (const LocalObject* obj : {&sampled, &boosted}) {
+      Hit hit;
+      ASSERT_EQ(obj->intersect(testing::light_segment(t_o, p, n, L), hit), expect_hit) << ax;
+      if (!expect_hit) continue;
+      ++hits;
+      EXPECT_NEAR(hit.s * L, lambda, 1e-9) << ax;
+      EXPECT_NEAR(norm(hit.point), 1.0, 1e-9);
+    }
+  }
+  EXPECT_GT(hits, 10);  // 9 directions hit, both objects
+  // The paddle of RotatingThinPaddleIsNotMissedOnALongStep on one segment 20 times as long: the
+  // same first event (found there to 1e-6 of a 20-long step: λ = 13.58...).
+  ConstVelocityMotion::Op rot;
+  rot.is_boost = false;
+  rot.omega = 0.4;
+  rot.axis = {0, 0, 1};
+  LocalObject paddle(std::make_shared<Box>(Vec3{-2, -0.05, -1}, Vec3{2, 0.05, 1}),
+                     LocalFrame(metric, std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{rot})));
+  Hit h20, h400;
+  ASSERT_TRUE(paddle.intersect(testing::light_segment(14, {1.8, -14, 0}, {0, 1, 0}, 20), h20));
+  ASSERT_TRUE(paddle.intersect(testing::light_segment(14, {1.8, -14, 0}, {0, 1, 0}, 400), h400));
+  EXPECT_NEAR(h400.s * 400, h20.s * 20, 1e-8);
+}
+
 /// Relativistic addition: lab velocity of a body moving with u' in a frame that moves with V
 /// (Jackson eq. 11.31): u = [u'_∥ + V + u'_⊥ / γ_V] / (1 + V·u').
 Vec3 add_velocities(const Vec3& V, const Vec3& up) {
