@@ -382,15 +382,48 @@ bool LocalObject::intersect_pieces(const Segment& seg, double s0, double s1, int
 
 bool LocalObject::intersect_per_box(const Segment& seg, Hit& hit) const {
   // Every tube box the segment passes (chunk unions first, as world_tube_test) gives the piece of
-  // the segment inside it; a hit event lies on the body at its time, hence inside the box of that
-  // time, hence in that box's piece. Each piece only accepts a hit closer than the best so far, so
-  // the order of the boxes does not matter.
+  // the segment inside it at the box's times; a hit event lies on the body at its time, hence in
+  // the piece of the box of that time. Overlapping pieces of consecutive boxes are merged while the
+  // frame's tetrad differs from that of the piece's first box by at most kMaxFrameChange (an
+  // inertial frame — a geodesic in Minkowski — merges all of them), so that the frozen frame of
+  // one piece maps it as the frames of short segments would. Each piece only accepts a hit closer
+  // than the best so far, so their order does not matter.
   const double ta = std::min(seg.x0[0], seg.x1[0]) - tube_margin_t_;
   const double tb = std::max(seg.x0[0], seg.x1[0]) + tube_margin_t_;
   const Vec3 d = seg.p1 - seg.p0;
   const Vec3 inv{1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
   const Vec4 dseg = frame_.delta(seg.x1, seg.x0);
+  const double dt = seg.x1[0] - seg.x0[0];
+  const auto& samples = frame_.motion()->samples();
+  auto same_frame = [&samples](size_t a, size_t b) {
+    const Tetrad& ea = samples[a].e;
+    const Tetrad& eb = samples[b].e;
+    double diff = 0, size = 1;
+    for (int i = 0; i < 4; ++i)
+      for (int mu = 0; mu < 4; ++mu) {
+        diff = std::max(diff, std::fabs(ea[i][mu] - eb[i][mu]));
+        size = std::max(size, std::fabs(ea[i][mu]));
+      }
+    return diff <= kMaxFrameChange * size;
+  };
   bool found = false;
+  double cu0 = 0, cu1 = -1;  // the piece being merged (empty: cu1 < cu0) and its first box
+  size_t c_first = 0;
+  auto test_piece = [&](double u0, double u1) {
+    if (!(u1 > u0) || hit.s <= u0) return;
+    Segment piece = seg;
+    piece.x0 = seg.x0 + u0 * dseg;
+    piece.x1 = seg.x0 + u1 * dseg;
+    piece.p0 = seg.p0 + u0 * d;
+    piece.p1 = seg.p0 + u1 * d;
+    Hit h = hit;
+    h.s = hit.valid() ? (hit.s - u0) / (u1 - u0) : hit.s;
+    if (intersect_piece(piece, h)) {
+      hit = h;
+      hit.s = u0 + h.s * (u1 - u0);
+      found = true;
+    }
+  };
   auto it = std::lower_bound(chunks_.begin(), chunks_.end(), ta, [](const TubeBox& b, double t) { return b.t1 < t; });
   for (; it != chunks_.end() && it->t0 <= tb; ++it) {
     double c0 = 0, c1 = 1;
@@ -401,21 +434,27 @@ bool LocalObject::intersect_per_box(const Segment& seg, Hit& hit) const {
       const TubeBox& b = tube_[j];
       if (b.t1 < ta || b.t0 > tb) continue;
       double u0 = 0, u1 = 1;
-      if (!segment_box(seg.p0, inv, b.box, u0, u1) || !(u1 > u0) || hit.s <= u0) continue;
-      Segment piece = seg;
-      piece.x0 = seg.x0 + u0 * dseg;
-      piece.x1 = seg.x0 + u1 * dseg;
-      piece.p0 = seg.p0 + u0 * d;
-      piece.p1 = seg.p0 + u1 * d;
-      Hit h = hit;
-      h.s = hit.valid() ? (hit.s - u0) / (u1 - u0) : hit.s;
-      if (intersect_piece(piece, h)) {
-        hit = h;
-        hit.s = u0 + h.s * (u1 - u0);
-        found = true;
+      if (!segment_box(seg.p0, inv, b.box, u0, u1)) continue;
+      // ... at the box's times: the body's events inside the box lie within tube_margin_t_ of
+      // its worldline times [t0, t1].
+      if (dt != 0) {
+        const double ua = (b.t0 - tube_margin_t_ - seg.x0[0]) / dt, ub = (b.t1 + tube_margin_t_ - seg.x0[0]) / dt;
+        u0 = std::max(u0, std::min(ua, ub));
+        u1 = std::min(u1, std::max(ua, ub));
       }
+      if (!(u1 > u0)) continue;
+      if (cu1 >= cu0 && u1 >= cu0 && u0 <= cu1 && same_frame(c_first, j)) {
+        cu0 = std::min(cu0, u0);
+        cu1 = std::max(cu1, u1);
+        continue;
+      }
+      test_piece(cu0, cu1);
+      cu0 = u0;
+      cu1 = u1;
+      c_first = j;
     }
   }
+  test_piece(cu0, cu1);
   return found;
 }
 

@@ -80,6 +80,9 @@ class LocalObject final : public SceneObject {
   /// A segment longer in coordinate time than this many body radii (a straight ray in Minkowski,
   /// render/straight_ray.h) is tested box by box against a sampled world tube.
   static constexpr double kLongSegment = 4.0;
+  /// Largest change of the tetrad components (relative to their size) within one merged piece of
+  /// a long segment (intersect_per_box).
+  static constexpr double kMaxFrameChange = 1e-3;
   LocalObject(SceneObjectPtr child, LocalFrame frame);
   bool intersect(const Segment& seg, Hit& hit) const override;
   Bounds3 bounds() const override { return bounds_; }

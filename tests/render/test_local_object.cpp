@@ -50,10 +50,14 @@ class UniformMotion final : public Motion {
   std::vector<MotionSample> samples_;
 };
 
-/// At rest at the origin, axes turning about z with angular velocity ω (defined for all τ).
+/// At rest at the origin, axes turning about z with angular velocity ω (defined for all τ, or
+/// sampled every dtau on [tau_lo, tau_hi] like a Worldline motion).
 class SpinningMotion final : public Motion {
  public:
   explicit SpinningMotion(double omega) : omega_(omega) { samples_.push_back(at_proper_time(0)); }
+  SpinningMotion(double omega, double tau_lo, double tau_hi, double dtau) : omega_(omega), bounded_(true) {
+    for (double tau = tau_lo; tau <= tau_hi + 1e-9; tau += dtau) samples_.push_back(at_proper_time(tau));
+  }
   MotionSample at_proper_time(double tau) const override {
     MotionSample s;
     s.tau = tau;
@@ -68,10 +72,11 @@ class SpinningMotion final : public Motion {
   }
   MotionSample at_coordinate_time(double t) const override { return at_proper_time(t); }
   const std::vector<MotionSample>& samples() const override { return samples_; }
-  bool unbounded() const override { return true; }
+  bool unbounded() const override { return !bounded_; }
 
  private:
   double omega_;
+  bool bounded_ = false;
   std::vector<MotionSample> samples_;
 };
 
@@ -441,6 +446,18 @@ TEST(ObjLocal, RotatingThinPaddleIsNotMissedOnALongStep) {
   // The point of the test is the hit itself; its place is checked to 2e-5 in λ, far below the
   // paddle's thickness (measured: 8e-7 with pieces of 1/16 rad).
   EXPECT_NEAR(hit.s, hi / 20, 1e-6);
+  // The same turning frame as a sampled worldline (no polyline there: one frozen frame per piece,
+  // and the pieces of the tube boxes are merged only while the frame has not turned,
+  // LocalObject::intersect_per_box), on segments of 20 and of 400 (a straight ray).
+  LocalObject sampled(std::make_shared<Box>(Vec3{-2, -0.05, -1}, Vec3{2, 0.05, 1}),
+                      LocalFrame(metric, std::make_shared<SpinningMotion>(omega, -400, 20, 0.05)));
+  // One frozen frame per piece places the hit on a chord of the turning path: 8e-5 from the exact
+  // event (measured), well inside the paddle's thickness 0.1.
+  Hit h20s, h400s;
+  ASSERT_TRUE(sampled.intersect(testing::light_segment(t_o, {1.8, -14, 0}, {0, 1, 0}, 20), h20s));
+  ASSERT_TRUE(sampled.intersect(testing::light_segment(t_o, {1.8, -14, 0}, {0, 1, 0}, 400), h400s));
+  EXPECT_NEAR(h20s.s * 20, hi, 2e-4);
+  EXPECT_NEAR(h400s.s * 400, h20s.s * 20, 1e-9);
 }
 
 TEST(ObjLocal, RotatingClockHandHasNoHolesNearItsTip) {
