@@ -344,8 +344,9 @@ TEST(ObjLocal, OneSegmentAcrossTheWholeSceneHitsAsAnalytic) {
   rot.is_boost = false;
   rot.omega = 0.4;
   rot.axis = {0, 0, 1};
-  LocalObject paddle(std::make_shared<Box>(Vec3{-2, -0.05, -1}, Vec3{2, 0.05, 1}),
-                     LocalFrame(metric, std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{rot})));
+  LocalObject paddle(
+      std::make_shared<Box>(Vec3{-2, -0.05, -1}, Vec3{2, 0.05, 1}),
+      LocalFrame(metric, std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{rot})));
   Hit h20, h400;
   ASSERT_TRUE(paddle.intersect(testing::light_segment(14, {1.8, -14, 0}, {0, 1, 0}, 20), h20));
   ASSERT_TRUE(paddle.intersect(testing::light_segment(14, {1.8, -14, 0}, {0, 1, 0}, 400), h400));
