@@ -163,6 +163,15 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
         inertial_origin_ = true;
         origin_at_t0_ = {a[1], a[2], a[3]};
         origin_velocity_ = Vec3{b[1], b[2], b[3]} - origin_at_t0_;
+        // Boosts first: the object's time t' is the origin's proper time τ, its rotations turn the
+        // axes about the resting origin, so the event x lies at object position X at τ = t'
+        // exactly where LocalFrame finds it by Newton's iteration and the tetrad at τ.
+        bool boosts_first = true, rotated = false;
+        for (const ConstVelocityMotion::Op& op : cv->ops()) {
+          if (op.is_boost && rotated) boosts_first = false;
+          rotated = rotated || !op.is_boost;
+        }
+        if (boosts_first) rigid_motion_ = cv;
       }
     }
     // Analytic motion defined for all times (ConstVelocity): the tube is built per segment from
@@ -254,16 +263,29 @@ bool LocalObject::world_tube_test(const Segment& seg, double& s0, double& s1) co
     // Box around the worldline between the segment's times (± margin), widened by the object's
     // radius. Analytic unbounded motions are inertial for the origin (ConstVelocity: rotations
     // turn the axes only), so the chord between the two end events is the worldline.
+    if (inertial_origin_) {
+      // The body's lab-simultaneous slice lies within radius_pc_ of the origin o(t) = o₀ + t v: the
+      // segment's event at fraction s, (t0 + s Δt, p0 + s Δp), can lie on the body only where
+      // |A + s B| <= R with A = p0 − o(t0), B = Δp − Δt v — one quadratic, exact for a segment of
+      // any length (a straight ray across the whole scene is one segment).
+      const Vec3 A = seg.p0 - (origin_at_t0_ + seg.x0[0] * origin_velocity_);
+      const Vec3 B = (seg.p1 - seg.p0) - (seg.x1[0] - seg.x0[0]) * origin_velocity_;
+      const double a = dot(B, B), b = dot(A, B), c = dot(A, A) - radius_pc_ * radius_pc_;
+      if (!(a > 0)) return c <= 0;
+      const double disc = b * b - a * c;
+      if (!(disc >= 0)) return false;
+      const double root = std::sqrt(disc);
+      s0 = std::max(0.0, (-b - root) / a);
+      s1 = std::min(1.0, (-b + root) / a);
+      return s0 <= s1;
+    }
     const double ta = std::min(seg.x0[0], seg.x1[0]) - tube_margin_t_;
     const double tb = std::max(seg.x0[0], seg.x1[0]) + tube_margin_t_;
     const Motion& m = *frame_.motion();
     Bounds3 box;
     for (double t : {ta, tb}) {
       Vec3 p;
-      if (inertial_origin_)
-        p = origin_at_t0_ + t * origin_velocity_;
-      else
-        frame_.metric().to_pseudo_cartesian(m.at_coordinate_time(t).x, p);
+      frame_.metric().to_pseudo_cartesian(m.at_coordinate_time(t).x, p);
       box.expand(p);
     }
     const double w = radius_pc_;
@@ -298,13 +320,35 @@ bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
   if (seg.chart0 != chart || seg.chart1 != chart) return false;
   double s0 = 0, s1 = 1;
   if (!world_tube_test(seg, s0, s1)) return false;
+  if (!tube_.empty() && std::fabs(seg.x1[0] - seg.x0[0]) > kLongSegment * radius_local_)
+    return intersect_per_box(seg, hit);
   const double turn = rotation_rate_ * std::fabs(seg.x1[0] - seg.x0[0]) * (s1 - s0);
   if (!(turn > kMaxTurnPerPiece)) return intersect_piece(seg, hit);
-  // A rotating frame: the pieces of the part inside the tube in order, the first hit is the
-  // closest. Hit::s of a piece is mapped to and from the fraction of the whole segment.
   const int n = static_cast<int>(std::min<double>(kMaxPieces, std::ceil(turn / kMaxTurnPerPiece)));
+  return intersect_pieces(seg, s0, s1, n, hit);
+}
+
+bool LocalObject::local_event(const Vec4& x, double& tau, Vec3& X) const {
+  if (rigid_motion_) {
+    const Vec4 o = rigid_motion_->to_object_frame(x);
+    tau = o[0];
+    X = spatial(o);
+    return true;
+  }
+  if (!frame_.simultaneous_tau(x, tau)) return false;
+  X = spatial(frame_.to_local(frame_.state(tau), x));
+  return true;
+}
+
+bool LocalObject::intersect_pieces(const Segment& seg, double s0, double s1, int n, Hit& hit) const {
+  // A rotating frame: the pieces of the part inside the tube in order, the first hit is the
+  // closest. Hit::s of a piece is mapped to and from the fraction of the whole segment. A piece
+  // starts where the previous one ended (the same event, bit for bit), so each boundary is mapped
+  // into the local frame once.
   const Vec4 dseg = frame_.delta(seg.x1, seg.x0);
   const Vec3 dp = seg.p1 - seg.p0;
+  PieceEnds ends;
+  bool have_start = false;
   for (int i = 0; i < n; ++i) {
     const double fa = s0 + (s1 - s0) * i / n, fb = i + 1 == n ? s1 : s0 + (s1 - s0) * (i + 1) / n;
     if (hit.s <= fa) return false;
@@ -313,22 +357,114 @@ bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
     piece.x1 = seg.x0 + fb * dseg;
     piece.p0 = seg.p0 + fa * dp;
     piece.p1 = seg.p0 + fb * dp;
+    if (!have_start) {
+      ends.tau0 = rigid_motion_ ? 0.0 : frame_.motion()->at_coordinate_time(piece.x0[0]).tau;
+      have_start = local_event(piece.x0, ends.tau0, ends.X0);
+      if (!have_start) continue;
+    }
+    ends.tau1 = ends.tau0;
+    if (!local_event(piece.x1, ends.tau1, ends.X1)) {
+      have_start = false;
+      continue;
+    }
     Hit h = hit;
     h.s = hit.valid() ? (hit.s - fa) / (fb - fa) : hit.s;
-    if (intersect_piece(piece, h)) {
+    if (intersect_piece(piece, h, &ends)) {
       hit = h;
       hit.s = fa + h.s * (fb - fa);
       return true;
     }
+    ends.tau0 = ends.tau1;
+    ends.X0 = ends.X1;
   }
   return false;
 }
 
-bool LocalObject::intersect_piece(const Segment& seg, Hit& hit) const {
+bool LocalObject::intersect_per_box(const Segment& seg, Hit& hit) const {
+  // Every tube box the segment passes (chunk unions first, as world_tube_test) gives the piece of
+  // the segment inside it at the box's times; a hit event lies on the body at its time, hence in
+  // the piece of the box of that time. Overlapping pieces of consecutive boxes are merged while the
+  // frame's tetrad differs from that of the piece's first box by at most kMaxFrameChange (an
+  // inertial frame — a geodesic in Minkowski — merges all of them), so that the frozen frame of
+  // one piece maps it as the frames of short segments would. Each piece only accepts a hit closer
+  // than the best so far, so their order does not matter.
+  const double ta = std::min(seg.x0[0], seg.x1[0]) - tube_margin_t_;
+  const double tb = std::max(seg.x0[0], seg.x1[0]) + tube_margin_t_;
+  const Vec3 d = seg.p1 - seg.p0;
+  const Vec3 inv{1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
+  const Vec4 dseg = frame_.delta(seg.x1, seg.x0);
+  const double dt = seg.x1[0] - seg.x0[0];
+  const auto& samples = frame_.motion()->samples();
+  auto same_frame = [&samples](size_t a, size_t b) {
+    const Tetrad& ea = samples[a].e;
+    const Tetrad& eb = samples[b].e;
+    double diff = 0, size = 1;
+    for (int i = 0; i < 4; ++i)
+      for (int mu = 0; mu < 4; ++mu) {
+        diff = std::max(diff, std::fabs(ea[i][mu] - eb[i][mu]));
+        size = std::max(size, std::fabs(ea[i][mu]));
+      }
+    return diff <= kMaxFrameChange * size;
+  };
+  bool found = false;
+  double cu0 = 0, cu1 = -1;  // the piece being merged (empty: cu1 < cu0) and its first box
+  size_t c_first = 0;
+  auto test_piece = [&](double u0, double u1) {
+    if (!(u1 > u0) || hit.s <= u0) return;
+    Segment piece = seg;
+    piece.x0 = seg.x0 + u0 * dseg;
+    piece.x1 = seg.x0 + u1 * dseg;
+    piece.p0 = seg.p0 + u0 * d;
+    piece.p1 = seg.p0 + u1 * d;
+    Hit h = hit;
+    h.s = hit.valid() ? (hit.s - u0) / (u1 - u0) : hit.s;
+    if (intersect_piece(piece, h)) {
+      hit = h;
+      hit.s = u0 + h.s * (u1 - u0);
+      found = true;
+    }
+  };
+  auto it = std::lower_bound(chunks_.begin(), chunks_.end(), ta, [](const TubeBox& b, double t) { return b.t1 < t; });
+  for (; it != chunks_.end() && it->t0 <= tb; ++it) {
+    double c0 = 0, c1 = 1;
+    if (!segment_box(seg.p0, inv, it->box, c0, c1)) continue;
+    const size_t first = static_cast<size_t>(it - chunks_.begin()) * kChunk;
+    const size_t last = std::min(tube_.size(), first + kChunk);
+    for (size_t j = first; j < last; ++j) {
+      const TubeBox& b = tube_[j];
+      if (b.t1 < ta || b.t0 > tb) continue;
+      double u0 = 0, u1 = 1;
+      if (!segment_box(seg.p0, inv, b.box, u0, u1)) continue;
+      // ... at the box's times: the body's events inside the box lie within tube_margin_t_ of
+      // its worldline times [t0, t1].
+      if (dt != 0) {
+        const double ua = (b.t0 - tube_margin_t_ - seg.x0[0]) / dt, ub = (b.t1 + tube_margin_t_ - seg.x0[0]) / dt;
+        u0 = std::max(u0, std::min(ua, ub));
+        u1 = std::min(u1, std::max(ua, ub));
+      }
+      if (!(u1 > u0)) continue;
+      if (cu1 >= cu0 && u1 >= cu0 && u0 <= cu1 && same_frame(c_first, j)) {
+        cu0 = std::min(cu0, u0);
+        cu1 = std::max(cu1, u1);
+        continue;
+      }
+      test_piece(cu0, cu1);
+      cu0 = u0;
+      cu1 = u1;
+      c_first = j;
+    }
+  }
+  test_piece(cu0, cu1);
+  return found;
+}
+
+bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends) const {
   const Vec4 dseg = frame_.delta(seg.x1, seg.x0);
   Vec4 x_ref = seg.x0 + 0.5 * dseg;
   double tau = 0;
-  if (frame_.moving() && frame_.motion()->unbounded()) {
+  if (rigid_motion_) {
+    tau = rigid_motion_->to_object_frame(x_ref)[0];  // exact: the object time is τ
+  } else if (frame_.moving() && frame_.motion()->unbounded()) {
     tau = frame_.motion()->at_coordinate_time(x_ref[0]).tau;
   } else if (frame_.moving()) {
     // Initial guess: the sample whose coordinate time is closest to the event's.
@@ -349,14 +485,18 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit) const {
   Hit polyline;
   bool have_polyline = false;
   if (rotation_rate_ > 0) {
-    double ta = tau, tb = tau;
-    if (!frame_.simultaneous_tau(seg.x0, ta) || !frame_.simultaneous_tau(seg.x1, tb)) return false;
-    const Vec4 X0 = frame_.to_local(frame_.state(ta), seg.x0), X1 = frame_.to_local(frame_.state(tb), seg.x1);
+    PieceEnds own;
+    if (!ends) {
+      own.tau0 = own.tau1 = tau;
+      if (!local_event(seg.x0, own.tau0, own.X0) || !local_event(seg.x1, own.tau1, own.X1)) return false;
+      ends = &own;
+    }
+    const double ta = ends->tau0, tb = ends->tau1;
     Segment ls;
     ls.x0 = seg.x0;
     ls.x1 = seg.x1;
-    ls.p0 = spatial(X0);
-    ls.p1 = spatial(X1);
+    ls.p0 = ends->X0;
+    ls.p1 = ends->X1;
     ls.chart0 = ls.chart1 = child_->chart;
     ls.metric = seg.metric;
     polyline = hit;

@@ -30,6 +30,8 @@
 
 namespace geovis {
 
+class ConstVelocityMotion;
+
 /// A local frame: a static tetrad (fixed event and base vectors) or a moving tetrad (Motion).
 class LocalFrame {
  public:
@@ -75,6 +77,12 @@ class LocalObject final : public SceneObject {
   /// the ray's true path at distance R from the axis.
   static constexpr double kMaxTurnPerPiece = 1.0 / 16;
   static constexpr int kMaxPieces = 4096;
+  /// A segment longer in coordinate time than this many body radii (a straight ray in Minkowski,
+  /// render/straight_ray.h) is tested box by box against a sampled world tube.
+  static constexpr double kLongSegment = 4.0;
+  /// Largest change of the tetrad components (relative to their size) within one merged piece of
+  /// a long segment (intersect_per_box).
+  static constexpr double kMaxFrameChange = 1e-3;
   LocalObject(SceneObjectPtr child, LocalFrame frame);
   bool intersect(const Segment& seg, Hit& hit) const override;
   Bounds3 bounds() const override { return bounds_; }
@@ -91,8 +99,22 @@ class LocalObject final : public SceneObject {
   /// Whether the segment passes the world tube; [s0, s1] narrowed to the fraction of the segment
   /// inside it where known (the analytic-motion box), else left as given.
   bool world_tube_test(const Segment& seg, double& s0, double& s1) const;
-  /// The intersection test of one piece of a segment (one frame state found by iteration).
-  bool intersect_piece(const Segment& seg, Hit& hit) const;
+  /// Local coordinates of a piece's ends, each mapped with the frame of its own time (τ, X).
+  struct PieceEnds {
+    double tau0, tau1;
+    Vec3 X0, X1;
+  };
+  /// The intersection test of one piece of a segment (one frame state found by iteration);
+  /// `ends`: its ends' local coordinates when already known (rotating frames).
+  bool intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends = nullptr) const;
+  /// Local coordinates X of event x in the frame of the worldline event simultaneous with it, and
+  /// that event's proper time τ (initial guess in, result out); false where there is none.
+  bool local_event(const Vec4& x, double& tau, Vec3& X) const;
+  /// The rotating frame's pieces of the part [s0, s1] of a segment, in order, each end mapped once.
+  bool intersect_pieces(const Segment& seg, double s0, double s1, int n, Hit& hit) const;
+  /// A sampled world tube and a segment much longer in time than the body: each tube box the
+  /// segment passes is tested as its own piece (the frozen frame of one piece stays near the body).
+  bool intersect_per_box(const Segment& seg, Hit& hit) const;
   /// Pseudo-Cartesian radius covering a local sphere of radius_local_ at frame state s.
   double pseudo_cartesian_radius(const LocalFrame::State& s) const;
   /// Coordinate-time spread of the body's simultaneous events at frame state s.
@@ -115,6 +137,10 @@ class LocalObject final : public SceneObject {
   /// origin_at_t0_ + t·origin_velocity_ (saves evaluating the motion in the world-tube test).
   bool inertial_origin_ = false;
   Vec3 origin_at_t0_, origin_velocity_;
+  /// ConstVelocity in Minkowski with every boost before every rotation: the object's frame is an
+  /// inertial frame turned rigidly about its origin, and the local coordinates of an event are
+  /// its object coordinates (ConstVelocityMotion::to_object_frame), in closed form.
+  const ConstVelocityMotion* rigid_motion_ = nullptr;
   Bounds3 bounds_;
 };
 

@@ -4,6 +4,9 @@
 // Ray traversal integrates the null geodesic backwards; every accepted step becomes a Segment in
 // pseudo-Cartesian coordinates (paper §2.3). Objects test the straight segment and report the
 // closest hit as the fraction `s` along it; the tracer refines the hit to integration precision.
+// A segment may be arbitrarily long in space and time (in Minkowski the whole ray is one segment,
+// spacetime/straight_ray.h): an object whose test needs short pieces (a moving or turning local
+// object, render/local_object.h) cuts the segment itself.
 #pragma once
 
 #include <algorithm>

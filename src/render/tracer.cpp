@@ -8,6 +8,7 @@
 #include "spacetime/circular_orbit.h"
 #include "spacetime/jacobi.h"
 #include "spacetime/metric.h"
+#include "spacetime/straight_ray.h"
 
 namespace geovis {
 
@@ -136,11 +137,19 @@ Vec4 start_state(const Observer& obs, const Vec3& n, GeodesicSystem system, doub
   return k0;
 }
 
+/// The ray's geodesic: integrated, or in a flat metric in inertial Cartesian coordinates the exact
+/// straight line as one step (spacetime/straight_ray.h; `straight`).
+GeodesicResult integrate_ray(const Metric& m, bool straight, const SolverConfig& cfg, GeodesicSystem system, double* y,
+                             StepCallback cb) {
+  if (straight) return integrate_straight(cfg, system, y, 0.0, m.asymptotically_flat(), cb);
+  return m.integrate(cfg, system, y, 0.0, cb);
+}
+
 /// Hit search: integrates the ray and tests every accepted step's chord against the scene
 /// (pseudo-Cartesian segment, paper §2.3); a chord hit is refined on the curved step
 /// (refine_hit) and ends the integration. `observe_step` (may be empty) sees every step first.
-GeodesicResult search_hit(const Metric& m, const SolverConfig& cfg, GeodesicSystem system, double* y, RayState& rs,
-                          FunctionRef<void(const StepView&)> observe_step) {
+GeodesicResult search_hit(const Metric& m, bool straight, const SolverConfig& cfg, GeodesicSystem system, double* y,
+                          RayState& rs, FunctionRef<void(const StepView&)> observe_step) {
   auto on_step = [&rs, observe_step](const StepView& st) -> StepAction {
     if (observe_step) observe_step(st);
     if (!rs.scene) return StepAction::Continue;
@@ -176,7 +185,7 @@ GeodesicResult search_hit(const Metric& m, const SolverConfig& cfg, GeodesicSyst
     }
     return StepAction::Stop;
   };
-  return m.integrate(cfg, system, y, 0.0, on_step);
+  return integrate_ray(m, straight, cfg, system, y, on_step);
 }
 
 /// A ray without a hit ends where the integration stopped. With the Jacobi filter, the Jacobi
@@ -184,7 +193,7 @@ GeodesicResult search_hit(const Metric& m, const SolverConfig& cfg, GeodesicSyst
 /// step control before the ray reaches the metric's break radius; the ray's fate must not depend
 /// on the filter (GeoViS gives a ray that runs into the hole its constraint colour in every
 /// filter), so the geodesic alone, integrated again from `y_start`, decides how it ends.
-void end_without_hit(const Metric& m, const SolverConfig& cfg, GeodesicSystem system, const double* y,
+void end_without_hit(const Metric& m, bool straight, const SolverConfig& cfg, GeodesicSystem system, const double* y,
                      const double* y_start, const GeodesicResult& gr, TraceStats& stats, TraceResult& res) {
   res.pos = vec4_at(y);
   res.k = vec4_at(y + 4);
@@ -194,7 +203,7 @@ void end_without_hit(const Metric& m, const SolverConfig& cfg, GeodesicSystem sy
                                            gr.reason == StopReason::NotFinite || gr.reason == StopReason::MaxSteps)) {
     double yg[kMaxSystemDim] = {};
     for (int i = 0; i < 8; ++i) yg[i] = y_start[i];
-    const GeodesicResult g2 = m.integrate(cfg, GeodesicSystem::Geodesic, yg, 0.0, {});
+    const GeodesicResult g2 = integrate_ray(m, straight, cfg, GeodesicSystem::Geodesic, yg, {});
     stats.steps += g2.steps;
     stats.rhs_evals += g2.rhs_evals;
     res.reason = g2.reason;
@@ -306,6 +315,11 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   // reach the origin or its bounds are unknown: never); nothing at all without a scene.
   cfg_.capture_radius = job.scene ? job.scene->inner_radius() : std::numeric_limits<double>::infinity();
   point_lights_ = job.metric->info().inertial_cartesian && job.lights.shadows && !job.lights.lights.empty();
+  // Flat inertial coordinates: the rays are straight lines, no integrator (spacetime/straight_ray.h).
+  // Here and not in the metric's integrate(): only the renderer's light rays are one step each —
+  // motions along geodesics need their worldline sampled, `geovis geodesic` prints the steps — and
+  // the objects test such a step whole however long it is (render/local_object.h).
+  straight_ = job.metric->info().inertial_cartesian;
 }
 
 TraceResult Tracer::trace_direction(const Vec3& d, TraceStats& stats) const { return trace_direction(d, stats, {}); }
@@ -324,12 +338,12 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats,
   RayState rs;
   rs.metric = &m;
   rs.scene = job_.scene.get();
-  const GeodesicResult gr = search_hit(m, cfg_, system_, y, rs, observe_step);
+  const GeodesicResult gr = search_hit(m, straight_, cfg_, system_, y, rs, observe_step);
   stats.steps += gr.steps;
   stats.rhs_evals += gr.rhs_evals;
   res.reason = gr.reason;
   if (!rs.hit) {
-    end_without_hit(m, cfg_, system_, y, y_start, gr, stats, res);
+    end_without_hit(m, straight_, cfg_, system_, y, y_start, gr, stats, res);
     res.color = stop_color(res.reason);
     return res;
   }

@@ -1,5 +1,6 @@
 // Per-pixel light-ray tracing (paper §2.2-2.4): camera direction -> initial null direction at the
-// observer (eq. 7) -> backward geodesic integration with the metric's inlined integrator -> every
+// observer (eq. 7) -> backward geodesic integration with the metric's inlined integrator (in flat
+// inertial coordinates the exact straight line, spacetime/straight_ray.h) -> every
 // accepted step is a straight Segment in pseudo-Cartesian coordinates tested against the scene ->
 // the first hit is refined on the curved step (Hermite dense output) -> shading and the filter data
 // (catalogue §3).
@@ -84,6 +85,7 @@ class Tracer {
   SolverConfig cfg_;
   GeodesicSystem system_;
   bool point_lights_;  ///< shadow rays possible: Minkowski, lights with shadows on
+  bool straight_;      ///< straight rays without integrator: Minkowski (spacetime/straight_ray.h)
 };
 
 }  // namespace geovis

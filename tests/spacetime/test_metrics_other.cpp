@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -291,6 +292,81 @@ TEST(KastorTraschen, ReducesToExtremeReissnerNordstromIsotropic) {
         EXPECT_NEAR(gd[i][j], ref, 2.0 * eps * (1 + eps) * std::fabs(ern[i]));
       }
   }
+}
+
+namespace {
+/// GeoViS's kastorTraschen.scm: H = 0.02, m1 = m2 = 1 at z = ±4, the observer at rest at x = 40,
+/// Cash–Karp at eps_abs 1e-12, maxNumPoints 6000, box ±200. Integrates the backward light ray
+/// leaving the observer in local direction d.
+GeodesicResult kastor_scene_ray(const Metric& m, const Vec3& d, double* y) {
+  const Vec4 obs{{0, 40, 0, 0}};
+  const Vec4 k = local_null_direction(m.natural_tetrad(obs), d, true);
+  for (int i = 0; i < 4; ++i) y[i] = obs[i], y[4 + i] = k[i];
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-12;
+  cfg.step_size = 0.01;
+  cfg.max_steps = 6000;
+  cfg.box_ll = Vec4{{-DBL_MAX, -200, -200, -200}};
+  cfg.box_ur = Vec4{{DBL_MAX, 200, 200, 200}};
+  return m.integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
+}
+double kastor_omega(const Vec4& x, double h) {
+  const double r1 = std::sqrt(x[1] * x[1] + x[2] * x[2] + (x[3] - 4) * (x[3] - 4));
+  const double r2 = std::sqrt(x[1] * x[1] + x[2] * x[2] + (x[3] + 4) * (x[3] + 4));
+  return 1.0 + (1.0 / r1 + 1.0 / r2) / std::exp(h * x[0]);
+}
+const Params kKastorScene = {{"h", 0.02}, {"m1", 1.0}, {"m2", 1.0}, {"z1", 4.0}, {"z2", -4.0}};
+}  // namespace
+
+TEST(KastorTraschen, RayIntoAHoleStopsAtTheRedshiftMargin) {
+  // Aimed at hole 1: the ray's comoving distance from the hole freezes while t → −∞ (the horizon
+  // a r_1 → 0); before the Ω margin it ran to maxNumPoints (docs/PERFORMANCE.md). It must now
+  // stop with Invalid (horizon), long before the step budget, where 1/Ω² reaches horizon_eps.
+  auto m = make_metric("KastorTraschen", kKastorScene);
+  double y[8];
+  const GeodesicResult r = kastor_scene_ray(*m, Vec3{-40, 0, 4}, y);
+  EXPECT_EQ(r.reason, StopReason::Invalid);
+  EXPECT_LT(r.steps, 6000 / 3);  // before: all 6000
+  const double om = kastor_omega(Vec4{{y[0], y[1], y[2], y[3]}}, 0.02);
+  const double om_break = 1.0 / std::sqrt(m->horizon_eps());  // 100
+  EXPECT_LE(om, om_break);
+  EXPECT_GT(om, 0.5 * om_break) << "stopped before the margin";
+}
+
+TEST(KastorTraschen, RayFarFromTheHolesIsUnaffectedByTheMargin) {
+  // Passing ~24 from the origin (the holes at z = ±4): the same steps and end as with a margin so
+  // small (1e-300) that it never fires.
+  auto m = make_metric("KastorTraschen", kKastorScene);
+  auto no_margin = make_metric("KastorTraschen", kKastorScene);
+  no_margin->set_horizon_eps(1e-300);
+  double y[8], y0[8];
+  const GeodesicResult r = kastor_scene_ray(*m, Vec3{-40, 30, 0}, y);
+  const GeodesicResult r0 = kastor_scene_ray(*no_margin, Vec3{-40, 30, 0}, y0);
+  EXPECT_EQ(r.reason, StopReason::BoundingBox);
+  EXPECT_EQ(r.reason, r0.reason);
+  EXPECT_EQ(r.steps, r0.steps);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(y[i], y0[i]);
+}
+
+TEST(KastorTraschen, ValidWhereverOmegaIsModerate) {
+  // The margin cuts only where Ω > 1/√horizon_eps = 100: every point with Ω < 99 (random times
+  // and places, both holes) stays valid, every point with Ω > 101 is not.
+  auto m = make_metric("KastorTraschen", kKastorScene);
+  std::mt19937 rng(13);
+  int moderate = 0, large = 0;
+  for (int n = 0; n < 4000; ++n) {
+    const Vec4 x{{uni(rng, -400, 50), uni(rng, -6, 6), uni(rng, -6, 6), uni(rng, -10, 10)}};
+    const double om = kastor_omega(x, 0.02);
+    if (om < 99) {
+      ++moderate;
+      EXPECT_TRUE(m->is_valid(x)) << "Ω = " << om;
+    } else if (om > 101) {
+      ++large;
+      EXPECT_FALSE(m->is_valid(x)) << "Ω = " << om;
+    }
+  }
+  EXPECT_GT(moderate, 100);
+  EXPECT_GT(large, 100);
 }
 
 // ---- de Sitter: light propagation and Λ -----------------------------------------------------------
