@@ -217,7 +217,10 @@ nlohmann::json PixelRayTracer::trace(const ChannelImage& data, const std::string
   if (!(std::fabs(path.natural_scale - 1) < 1e-12))
     differs.push_back("the observer moves in the natural frame: its affine parameter is " + num(path.natural_scale) +
                       " times this one");
-  if (s.step_ctrl != d.step_ctrl || s.step_size != d.step_size || s.step_min != d.step_min || s.step_max != d.step_max)
+  // Carter's separated equations ignore a max_step the scene did not give (SolverConfig::step_max_separable).
+  const bool step_max_acts = !(s.separable && m.has_separable_geodesics()) || s.step_max_separable;
+  if (s.step_ctrl != d.step_ctrl || s.step_size != d.step_size || s.step_min != d.step_min ||
+      (step_max_acts && s.step_max != d.step_max))
     differs.push_back("step settings (step_ctrl/step_size/step_min/step_max)");
   if (s.constraint_tol != d.constraint_tol || s.reproject != d.reproject) differs.push_back("constraint settings");
   j["geodesic"] = {{"command", cmd},
