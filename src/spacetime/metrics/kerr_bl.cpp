@@ -144,6 +144,48 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     set(3, 2, 3, k.ph_thph);
   }
 
+  /// The Jacobi system's terms (JacobiTerms, metric_kernel.h) from the twenty symbols evaluated
+  /// once on duals seeded along the two Jacobi fields (only their r and θ components enter, as Γ
+  /// depends on r and θ only), contracted with k symbol by symbol instead of over all 64 entries:
+  /// Gk[μ][b] = Γ^μ_{bc} k^c and dGkk[f][μ] = Y_f^ν ∂_ν Γ^μ_{ab} k^a k^b.
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    using D = Dual<double, 2>;
+    D r(x[1]), th(x[2]);
+    for (int f = 0; f < 2; ++f) {
+      r.d[f] = Y[f][1];
+      th.d[f] = Y[f][2];
+    }
+    const KerrGamma<D> g = kerr_gamma(rs_, a_, r, th);
+    const double kt = k[0], kr = k[1], kh = k[2], kp = k[3];
+    // Γ^t and Γ^φ have the same non-zero pattern (tr, tθ, rφ, θφ), as have Γ^r and Γ^θ
+    // (tt, tφ, rr, rθ, θθ, φφ).
+    auto odd = [&](double* Gk, const D& tr, const D& tth, const D& rph, const D& thph, double* dGkk) {
+      Gk[0] = tr.v * kr + tth.v * kh;
+      Gk[1] = tr.v * kt + rph.v * kp;
+      Gk[2] = tth.v * kt + thph.v * kp;
+      Gk[3] = rph.v * kr + thph.v * kh;
+      const double qtr = 2.0 * kt * kr, qth = 2.0 * kt * kh, qrp = 2.0 * kr * kp, qhp = 2.0 * kh * kp;
+      for (int f = 0; f < 2; ++f) dGkk[f] = tr.d[f] * qtr + tth.d[f] * qth + rph.d[f] * qrp + thph.d[f] * qhp;
+    };
+    auto even = [&](double* Gk, const D& tt, const D& tph, const D& rr, const D& rth, const D& thth, const D& phph,
+                    double* dGkk) {
+      Gk[0] = tt.v * kt + tph.v * kp;
+      Gk[1] = rr.v * kr + rth.v * kh;
+      Gk[2] = rth.v * kr + thth.v * kh;
+      Gk[3] = tph.v * kt + phph.v * kp;
+      const double qtt = kt * kt, qtp = 2.0 * kt * kp, qrr = kr * kr, qrh = 2.0 * kr * kh, qhh = kh * kh, qpp = kp * kp;
+      for (int f = 0; f < 2; ++f)
+        dGkk[f] = tt.d[f] * qtt + tph.d[f] * qtp + rr.d[f] * qrr + rth.d[f] * qrh + thth.d[f] * qhh + phph.d[f] * qpp;
+    };
+    double d[4][2];
+    odd(t.Gk[0], g.t_tr, g.t_tth, g.t_rph, g.t_thph, d[0]);
+    even(t.Gk[1], g.r_tt, g.r_tph, g.r_rr, g.r_rth, g.r_thth, g.r_phph, d[1]);
+    even(t.Gk[2], g.th_tt, g.th_tph, g.th_rr, g.th_rth, g.th_thth, g.th_phph, d[2]);
+    odd(t.Gk[3], g.ph_tr, g.ph_tth, g.ph_rph, g.ph_thph, d[3]);
+    for (int f = 0; f < 2; ++f)
+      for (int mu = 0; mu < 4; ++mu) t.dGkk[f][mu] = d[mu][f];
+  }
+
   /// a^μ = −Γ^μ_{ab} k^a k^b (hot path of every Kerr ray), evaluated in the covariant form
   ///   a^μ = g^{μν} F_ν,  F_ν = ½ ∂_ν g_ab k^a k^b − k^c ∂_c g_νb k^b,
   /// which is −Γ^μ_{ab} k^a k^b with Γ = ½ g^{μν}(∂_a g_νb + ∂_b g_νa − ∂_ν g_ab) contracted. g
