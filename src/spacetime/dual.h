@@ -1,8 +1,9 @@
 // Forward-mode automatic differentiation with four infinitesimal parts, one per coordinate.
 // Dual<double> carries ∂_μ f; Dual<Dual<double>> carries ∂_μ∂_ν f (needed for ∂Γ and the
-// Riemann tensor). Dual<double, K> carries K directional derivatives instead, Y_k^μ ∂_μ f for K
-// chosen directions (seed_directions): the Jacobi system needs ∂Γ only along its two fields. Used as the fallback Christoffel source for any metric and as the oracle in
-// tests (every closed-form Christoffel symbol is checked against it).
+// Riemann tensor). Used as the fallback Christoffel source for any metric and as the oracle in
+// tests (every closed-form Christoffel symbol is checked against it). Dual<double, K> carries K
+// directional derivatives Y_k^μ ∂_μ f instead (seed_directions): the Jacobi system needs ∂Γ only
+// along its two fields.
 #pragma once
 
 #include <cmath>
