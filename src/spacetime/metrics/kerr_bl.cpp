@@ -214,12 +214,12 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     // r-derivatives.
     const T idd = 1.0 / (delta * s2);  // 1/(Δ sin²θ)
     const T id = idd * s2;             // 1/Δ
-    const T gtt_r = ur, gtp_r = -a_ * s2 * ur, grr_r = (2.0 * r - sigma * (2.0 * r - rs_) * id) * id,
-                 ghh_r = 2.0 * r, gpp_r = (2.0 * r + a2_ * s2 * ur) * s2;
+    const T gtt_r = ur, gtp_r = -a_ * s2 * ur, grr_r = (2.0 * r - sigma * (2.0 * r - rs_) * id) * id, ghh_r = 2.0 * r,
+            gpp_r = (2.0 * r + a2_ * s2 * ur) * s2;
     // θ-derivatives (∂_θ Σ = −2a² sinθ cosθ).
     const T dsig = -2.0 * a2_ * sc;
     const T gtt_h = uth, gtp_h = -a_ * (2.0 * sc * u + s2 * uth), grr_h = dsig * id, ghh_h = dsig,
-                 gpp_h = a2_ * (2.0 * sc * u + s2 * uth) * s2 + 2.0 * B * sc;
+            gpp_h = a2_ * (2.0 * sc * u + s2 * uth) * s2 + 2.0 * B * sc;
     // D_X[ν] = ∂_X g_νb k^b and Q_X = ∂_X g_ab k^a k^b.
     const T Drt = gtt_r * kt + gtp_r * kph, Drr = grr_r * kr, Drh = ghh_r * kth, Drp = gtp_r * kt + gpp_r * kph;
     const T Dht = gtt_h * kt + gtp_h * kph, Dhr = grr_h * kr, Dhh = ghh_h * kth, Dhp = gtp_h * kt + gpp_h * kph;
