@@ -1,7 +1,9 @@
 // Forward-mode automatic differentiation with four infinitesimal parts, one per coordinate.
 // Dual<double> carries ∂_μ f; Dual<Dual<double>> carries ∂_μ∂_ν f (needed for ∂Γ and the
 // Riemann tensor). Used as the fallback Christoffel source for any metric and as the oracle in
-// tests (every closed-form Christoffel symbol is checked against it).
+// tests (every closed-form Christoffel symbol is checked against it). Dual<double, K> carries K
+// directional derivatives Y_k^μ ∂_μ f instead (seed_directions): the Jacobi system needs ∂Γ only
+// along its two fields.
 #pragma once
 
 #include <cmath>
@@ -11,10 +13,10 @@
 
 namespace geovis {
 
-template <class T>
+template <class T, int K = 4>
 struct Dual {
   T v{};     ///< value
-  T d[4]{};  ///< partial derivatives with respect to x^0..x^3
+  T d[K]{};  ///< ∂_0..∂_3 (K = 4, seed), or K directional derivatives (seed_directions)
 
   constexpr Dual() = default;
   constexpr Dual(double x) : v(x) {}  // NOLINT: implicit from constants, as for double
@@ -29,32 +31,32 @@ struct Dual {
   friend Dual operator+(const Dual& a, const Dual& b) {
     Dual r;
     r.v = a.v + b.v;
-    for (int i = 0; i < 4; ++i) r.d[i] = a.d[i] + b.d[i];
+    for (int i = 0; i < K; ++i) r.d[i] = a.d[i] + b.d[i];
     return r;
   }
   friend Dual operator-(const Dual& a, const Dual& b) {
     Dual r;
     r.v = a.v - b.v;
-    for (int i = 0; i < 4; ++i) r.d[i] = a.d[i] - b.d[i];
+    for (int i = 0; i < K; ++i) r.d[i] = a.d[i] - b.d[i];
     return r;
   }
   friend Dual operator-(const Dual& a) {
     Dual r;
     r.v = -a.v;
-    for (int i = 0; i < 4; ++i) r.d[i] = -a.d[i];
+    for (int i = 0; i < K; ++i) r.d[i] = -a.d[i];
     return r;
   }
   friend Dual operator*(const Dual& a, const Dual& b) {
     Dual r;
     r.v = a.v * b.v;
-    for (int i = 0; i < 4; ++i) r.d[i] = a.d[i] * b.v + a.v * b.d[i];
+    for (int i = 0; i < K; ++i) r.d[i] = a.d[i] * b.v + a.v * b.d[i];
     return r;
   }
   friend Dual operator/(const Dual& a, const Dual& b) {
     Dual r;
     const T inv = T(1.0) / b.v;
     r.v = a.v * inv;
-    for (int i = 0; i < 4; ++i) r.d[i] = (a.d[i] - r.v * b.d[i]) * inv;
+    for (int i = 0; i < K; ++i) r.d[i] = (a.d[i] - r.v * b.d[i]) * inv;
     return r;
   }
   friend Dual operator+(const Dual& a, double b) { return a + Dual(b); }
@@ -64,7 +66,7 @@ struct Dual {
   friend Dual operator*(const Dual& a, double b) {
     Dual r;
     r.v = a.v * b;
-    for (int i = 0; i < 4; ++i) r.d[i] = a.d[i] * b;
+    for (int i = 0; i < K; ++i) r.d[i] = a.d[i] * b;
     return r;
   }
   friend Dual operator*(double a, const Dual& b) { return b * a; }
@@ -82,111 +84,111 @@ struct Dual {
 };
 
 /// Chain rule helper: f(a) with f(a.v) = fv and f'(a.v) = dfv.
-template <class T>
-inline Dual<T> chain(const Dual<T>& a, const T& fv, const T& dfv) {
-  Dual<T> r;
+template <class T, int K>
+inline Dual<T, K> chain(const Dual<T, K>& a, const T& fv, const T& dfv) {
+  Dual<T, K> r;
   r.v = fv;
-  for (int i = 0; i < 4; ++i) r.d[i] = dfv * a.d[i];
+  for (int i = 0; i < K; ++i) r.d[i] = dfv * a.d[i];
   return r;
 }
 
 // Plain-double overloads so generic metric code can call value_of etc. on any scalar.
 inline double value_of(double x) { return x; }
-template <class T>
-inline double value_of(const Dual<T>& x) {
+template <class T, int K>
+inline double value_of(const Dual<T, K>& x) {
   return value_of(x.v);
 }
 
-template <class T>
-inline Dual<T> sqrt(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> sqrt(const Dual<T, K>& a) {
   using std::sqrt;
   T s = sqrt(a.v);
   return chain(a, s, T(0.5) / s);
 }
-template <class T>
-inline Dual<T> sin(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> sin(const Dual<T, K>& a) {
   using std::cos;
   using std::sin;
   return chain(a, sin(a.v), cos(a.v));
 }
-template <class T>
-inline Dual<T> cos(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> cos(const Dual<T, K>& a) {
   using std::cos;
   using std::sin;
   return chain(a, cos(a.v), -sin(a.v));
 }
-template <class T>
-inline Dual<T> tan(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> tan(const Dual<T, K>& a) {
   using std::tan;
   T t = tan(a.v);
   return chain(a, t, T(1.0) + t * t);
 }
-template <class T>
-inline Dual<T> exp(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> exp(const Dual<T, K>& a) {
   using std::exp;
   T e = exp(a.v);
   return chain(a, e, e);
 }
-template <class T>
-inline Dual<T> log(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> log(const Dual<T, K>& a) {
   using std::log;
   return chain(a, log(a.v), T(1.0) / a.v);
 }
-template <class T>
-inline Dual<T> sinh(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> sinh(const Dual<T, K>& a) {
   using std::cosh;
   using std::sinh;
   return chain(a, sinh(a.v), cosh(a.v));
 }
-template <class T>
-inline Dual<T> cosh(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> cosh(const Dual<T, K>& a) {
   using std::cosh;
   using std::sinh;
   return chain(a, cosh(a.v), sinh(a.v));
 }
-template <class T>
-inline Dual<T> tanh(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> tanh(const Dual<T, K>& a) {
   using std::tanh;
   T t = tanh(a.v);
   return chain(a, t, T(1.0) - t * t);
 }
-template <class T>
-inline Dual<T> atan(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> atan(const Dual<T, K>& a) {
   using std::atan;
   return chain(a, atan(a.v), T(1.0) / (T(1.0) + a.v * a.v));
 }
-template <class T>
-inline Dual<T> asin(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> asin(const Dual<T, K>& a) {
   using std::asin;
   using std::sqrt;
   return chain(a, asin(a.v), T(1.0) / sqrt(T(1.0) - a.v * a.v));
 }
-template <class T>
-inline Dual<T> acos(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> acos(const Dual<T, K>& a) {
   using std::acos;
   using std::sqrt;
   return chain(a, acos(a.v), T(-1.0) / sqrt(T(1.0) - a.v * a.v));
 }
-template <class T>
-inline Dual<T> pow(const Dual<T>& a, double p) {
+template <class T, int K>
+inline Dual<T, K> pow(const Dual<T, K>& a, double p) {
   using std::pow;
   return chain(a, pow(a.v, p), T(p) * pow(a.v, p - 1.0));
 }
-template <class T>
-inline Dual<T> abs(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> abs(const Dual<T, K>& a) {
   return a.v < 0 ? -a : a;
 }
-template <class T>
-inline Dual<T> fabs(const Dual<T>& a) {
+template <class T, int K>
+inline Dual<T, K> fabs(const Dual<T, K>& a) {
   return a.v < 0 ? -a : a;
 }
-template <class T>
-inline Dual<T> atan2(const Dual<T>& y, const Dual<T>& x) {
+template <class T, int K>
+inline Dual<T, K> atan2(const Dual<T, K>& y, const Dual<T, K>& x) {
   using std::atan2;
-  Dual<T> r;
+  Dual<T, K> r;
   r.v = atan2(y.v, x.v);
   const T den = x.v * x.v + y.v * y.v;
-  for (int i = 0; i < 4; ++i) r.d[i] = (x.v * y.d[i] - y.v * x.d[i]) / den;
+  for (int i = 0; i < K; ++i) r.d[i] = (x.v * y.d[i] - y.v * x.d[i]) / den;
   return r;
 }
 
@@ -194,7 +196,8 @@ inline Dual<T> atan2(const Dual<T>& y, const Dual<T>& x) {
 /// before the generic sincos_t of fast_math.h): one inline fast_sincos of the value instead of
 /// four libm calls, since the Jacobi right-hand side (spacetime/jacobi.h) evaluates the closed-form
 /// Christoffel symbols on these numbers at every stage. d sin = cos·dx, d cos = −sin·dx.
-inline void sincos_t(const Dual<double>& x, Dual<double>& s, Dual<double>& c) {
+template <int K>
+inline void sincos_t(const Dual<double, K>& x, Dual<double, K>& s, Dual<double, K>& c) {
   double sv, cv;
   fast_sincos(x.v, sv, cv);
   s = chain(x, sv, cv);
@@ -208,6 +211,18 @@ inline Vec4T<Dual<T>> seed(const Vec4T<T>& x) {
   for (int i = 0; i < 4; ++i) {
     r[i] = Dual<T>(x[i]);
     r[i].d[i] = T(1.0);
+  }
+  return r;
+}
+
+/// Seeds x for derivatives along the directions Y[0..K-1]: x^μ carries Y_k^μ in slot k, so f(x)
+/// carries the directional derivatives Y_k^μ ∂_μ f (chain rule).
+template <int K>
+inline Vec4T<Dual<double, K>> seed_directions(const Vec4& x, const Vec4 (&Y)[K]) {
+  Vec4T<Dual<double, K>> r;
+  for (int i = 0; i < 4; ++i) {
+    r[i] = Dual<double, K>(x[i]);
+    for (int k = 0; k < K; ++k) r[i].d[k] = Y[k][i];
   }
   return r;
 }

@@ -67,92 +67,126 @@ inline bool invert4(const Mat4T<DualD>& a, Mat4T<DualD>& inv) {
 }
 }  // namespace jacobi_detail
 
-/// Γ^μ_{ab} at x with its first partial derivatives, G.G[μ][a][b].d[c] = ∂_c Γ^μ_{ab}, without
-/// virtual calls or heap allocation: the metric's closed-form symbols evaluated on first-order
-/// dual numbers where it has them (has_christoffel_tmpl, metric_kernel.h), otherwise from the
-/// templated g_{μν} by second-order forward differentiation, Γ^μ_{ab} = ½ g^{μν}(∂_a g_{νb} +
-/// ∂_b g_{νa} − ∂_ν g_{ab}) carried as first-order duals (as Metric::christoffel_derivs_ad). A
-/// singular metric yields NaN (the integrator then stops with NotFinite).
+/// Γ^μ_{ab} at x with its first partial derivatives, G.G[μ][a][b].d[c] = ∂_c Γ^μ_{ab}, for a
+/// metric without closed-form symbols, without virtual calls or heap allocation: from the templated
+/// g_{μν} by second-order forward differentiation, Γ^μ_{ab} = ½ g^{μν}(∂_a g_{νb} + ∂_b g_{νa} −
+/// ∂_ν g_{ab}) carried as first-order duals (as Metric::christoffel_derivs_ad). A singular metric
+/// yields NaN (the integrator then stops with NotFinite).
 template <class M>
 inline void christoffel_with_derivs(const M& m, const Vec4& x, ChristoffelT<DualD>& G) {
-  if constexpr (has_christoffel_tmpl<M>) {
-    m.template christoffel_tmpl<DualD>(seed(x), G);
-  } else {
-    const Vec4T<Dual2> x2 = seed(seed(x));
-    Mat4T<Dual2> g2;
-    m.g_tmpl(x2, g2);
-    Mat4T<DualD> g1, ginv;
-    DualD dg[4][4][4];  // dg[c][a][b] = ∂_c g_ab (with its own derivatives)
-    for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b) {
-        g1[a][b] = g2[a][b].v;
-        for (int c = 0; c < 4; ++c) dg[c][a][b] = g2[a][b].d[c];
-      }
-    if (!jacobi_detail::invert4(g1, ginv)) {
-      for (auto& g3 : G.G)
-        for (auto& g4 : g3)
-          for (DualD& v : g4) v = DualD(std::numeric_limits<double>::quiet_NaN());
-      return;
+  const Vec4T<Dual2> x2 = seed(seed(x));
+  Mat4T<Dual2> g2;
+  m.g_tmpl(x2, g2);
+  Mat4T<DualD> g1, ginv;
+  DualD dg[4][4][4];  // dg[c][a][b] = ∂_c g_ab (with its own derivatives)
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      g1[a][b] = g2[a][b].v;
+      for (int c = 0; c < 4; ++c) dg[c][a][b] = g2[a][b].d[c];
     }
-    for (int mu = 0; mu < 4; ++mu)
-      for (int a = 0; a < 4; ++a)
-        for (int b = a; b < 4; ++b) {
-          DualD s(0.0);
-          for (int nu = 0; nu < 4; ++nu) s = s + ginv[mu][nu] * (dg[a][nu][b] + dg[b][nu][a] - dg[nu][a][b]);
-          G.G[mu][a][b] = s * DualD(0.5);
-          G.G[mu][b][a] = G.G[mu][a][b];
-        }
+  if (!jacobi_detail::invert4(g1, ginv)) {
+    for (auto& g3 : G.G)
+      for (auto& g4 : g3)
+        for (DualD& v : g4) v = DualD(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  for (int mu = 0; mu < 4; ++mu)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a; b < 4; ++b) {
+        DualD s(0.0);
+        for (int nu = 0; nu < 4; ++nu) s = s + ginv[mu][nu] * (dg[a][nu][b] + dg[b][nu][a] - dg[nu][a][b]);
+        G.G[mu][a][b] = s * DualD(0.5);
+        G.G[mu][b][a] = G.G[mu][a][b];
+      }
+}
+
+namespace jacobi_detail {
+/// Gk[μ][b] = Γ^μ_{bc} k^c (values) and Gkk^μ = Γ^μ_{ab} k^a k^b with its dual parts.
+template <class D>
+inline void contract_with_k(const ChristoffelT<D>& G, const Vec4& k, double Gk[4][4], D Gkk[4]) {
+  for (int mu = 0; mu < 4; ++mu) {
+    D kk(0.0);
+    for (int b = 0; b < 4; ++b) {
+      D s = G.G[mu][b][0] * k[0];
+      for (int c = 1; c < 4; ++c) s += G.G[mu][b][c] * k[c];
+      Gk[mu][b] = s.v;
+      kk += s * k[b];
+    }
+    Gkk[mu] = kk;
+  }
+}
+}  // namespace jacobi_detail
+
+/// The Jacobi system's terms (JacobiTerms, metric_kernel.h) without virtual calls or heap
+/// allocation. A metric may write them out (jacobi_terms_closed, e.g. KerrBL: twenty symbols, no
+/// zeros); a metric with closed-form symbols on any number type (has_christoffel_tmpl) evaluates
+/// them on duals seeded along Y_1 and Y_2 (seed_directions: two derivative slots, not four, and
+/// dGkk comes out directly); any other metric differentiates g twice (christoffel_with_derivs)
+/// and contracts ∂_ν with Y_f^ν.
+template <class M>
+inline void jacobi_terms(const M& m, const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) {
+  if constexpr (requires { m.jacobi_terms_closed(x, k, Y, t); }) {
+    m.jacobi_terms_closed(x, k, Y, t);
+  } else if constexpr (has_christoffel_tmpl<M>) {
+    using D = Dual<double, 2>;
+    ChristoffelT<D> G;
+    m.template christoffel_tmpl<D>(seed_directions(x, Y), G);
+    D Gkk[4];
+    jacobi_detail::contract_with_k(G, k, t.Gk, Gkk);
+    for (int f = 0; f < 2; ++f)
+      for (int mu = 0; mu < 4; ++mu) t.dGkk[f][mu] = Gkk[mu].d[f];
+  } else {
+    ChristoffelT<DualD> G;
+    christoffel_with_derivs(m, x, G);
+    DualD Gkk[4];
+    jacobi_detail::contract_with_k(G, k, t.Gk, Gkk);
+    for (int f = 0; f < 2; ++f)
+      for (int mu = 0; mu < 4; ++mu) {
+        double s = 0;
+        for (int nu = 0; nu < 4; ++nu) s += Gkk[mu].d[nu] * Y[f][nu];
+        t.dGkk[f][mu] = s;
+      }
   }
 }
 
-/// Indices into the 32-component Jacobi state (header comment).
 /// The same through a metric's function table (the Jacobi system compiled once, jacobi.cpp).
-inline void christoffel_with_derivs(const MetricKernel& m, const Vec4& x, ChristoffelT<DualD>& G) {
-  m.christoffel_with_derivs(x, G);
+inline void jacobi_terms(const MetricKernel& m, const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) {
+  m.jacobi_terms(x, k, Y, t);
 }
 
+/// Indices into the 32-component Jacobi state (header comment).
 constexpr int kJacobiX = 0, kJacobiK = 4, kJacobiS1 = 8, kJacobiS2 = 12, kJacobiY1 = 16, kJacobiDY1 = 20,
               kJacobiY2 = 24, kJacobiDY2 = 28, kJacobiDim = 32;
 
-/// The Jacobi system (header comment). One evaluation of Γ with its first derivatives per stage
-/// serves the transport of k, s1, s2 and both Jacobi fields: with Gk[μ][b] = Γ^μ_{bc} k^c (duals,
-/// so Gk carries ∂_ν as well) and Gkk^μ = Gk[μ][b] k^b, the field equation is
-/// Y''^μ = −2 Gk[μ][b] Y'^b − ∂_ν Gkk^μ Y^ν.
+/// The Jacobi system (header comment). One evaluation of the Γ terms per stage (jacobi_terms)
+/// serves the transport of k, s1, s2 and both Jacobi fields: with Gk[μ][b] = Γ^μ_{bc} k^c and
+/// dGkk[f][μ] = Y_f^ν ∂_ν Γ^μ_{ab} k^a k^b, the field equation is
+/// Y_f''^μ = −2 Gk[μ][b] Y_f'^b − dGkk[f][μ].
 template <class M>
 struct JacobiRHS {
   static constexpr int N = kJacobiDim;
   const M& m;
   void operator()(const double* y, double* dy) const {
     const Vec4 x{{y[0], y[1], y[2], y[3]}};
-    const double* k = y + kJacobiK;
-    ChristoffelT<DualD> G;
-    christoffel_with_derivs(m, x, G);
-    double Gk[4][4];
-    DualD Gkk[4];
-    for (int mu = 0; mu < 4; ++mu) {
-      DualD kk(0.0);
-      for (int b = 0; b < 4; ++b) {
-        DualD s = G.G[mu][b][0] * k[0];
-        for (int c = 1; c < 4; ++c) s += G.G[mu][b][c] * k[c];
-        Gk[mu][b] = s.v;
-        kk += s * k[b];
-      }
-      Gkk[mu] = kk;
-    }
+    const Vec4 k{{y[kJacobiK], y[kJacobiK + 1], y[kJacobiK + 2], y[kJacobiK + 3]}};
+    const Vec4 Y[2] = {Vec4{{y[kJacobiY1], y[kJacobiY1 + 1], y[kJacobiY1 + 2], y[kJacobiY1 + 3]}},
+                       Vec4{{y[kJacobiY2], y[kJacobiY2 + 1], y[kJacobiY2 + 2], y[kJacobiY2 + 3]}}};
+    JacobiTerms t;
+    jacobi_terms(m, x, k, Y, t);
     for (int i = 0; i < 4; ++i) dy[i] = k[i];
     for (int v = 0; v < 3; ++v) {  // k, s1, s2: e' = −Γ(k, e)
       const double* e = y + kJacobiK + 4 * v;
       for (int mu = 0; mu < 4; ++mu)
-        dy[kJacobiK + 4 * v + mu] = -(Gk[mu][0] * e[0] + Gk[mu][1] * e[1] + Gk[mu][2] * e[2] + Gk[mu][3] * e[3]);
+        dy[kJacobiK + 4 * v + mu] =
+            -(t.Gk[mu][0] * e[0] + t.Gk[mu][1] * e[1] + t.Gk[mu][2] * e[2] + t.Gk[mu][3] * e[3]);
     }
     for (int f = 0; f < 2; ++f) {
-      const double* Y = y + kJacobiY1 + 8 * f;
-      const double* dY = Y + 4;
+      const double* dY = y + kJacobiDY1 + 8 * f;
       for (int mu = 0; mu < 4; ++mu) {
         dy[kJacobiY1 + 8 * f + mu] = dY[mu];
-        double a = 0;
-        for (int b = 0; b < 4; ++b) a += 2.0 * Gk[mu][b] * dY[b] + Gkk[mu].d[b] * Y[b];
-        dy[kJacobiDY1 + 8 * f + mu] = -a;
+        dy[kJacobiDY1 + 8 * f + mu] =
+            -(2.0 * (t.Gk[mu][0] * dY[0] + t.Gk[mu][1] * dY[1] + t.Gk[mu][2] * dY[2] + t.Gk[mu][3] * dY[3]) +
+              t.dGkk[f][mu]);
       }
     }
   }

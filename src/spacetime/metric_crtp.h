@@ -5,6 +5,8 @@
 //   void christoffel_closed(const Vec4& x, Christoffel& G) const;          // closed form Γ, or
 //   template <class T> void christoffel_tmpl(const Vec4T<T>& x, ChristoffelT<T>& G) const;
 //                                          // closed form Γ on doubles and duals (cheap Jacobi RHS)
+//   void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const;
+//                                          // optional: the Jacobi RHS's Γ terms written out (jacobi.h)
 //   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const;       // optional fast −Γkk
 //   bool is_valid(const Vec4& x) const override;                          // optional
 //   int to_pseudo_cartesian(...) const override;                          // optional
@@ -130,8 +132,8 @@ MetricKernel MetricKernel::of(const M& m) {
   static constexpr MetricKernelOps ops = {
       [](V p, const Vec4& x, Mat4& g) { static_cast<const M*>(p)->metric_tensor_inline(x, g); },
       [](V p, const Vec4& x, Christoffel& G) { static_cast<const M*>(p)->christoffel_inline(x, G); },
-      [](V p, const Vec4& x, ChristoffelT<DualD>& G) {
-        geovis::christoffel_with_derivs(*static_cast<const M*>(p), x, G);
+      [](V p, const Vec4& x, const Vec4& k, const Vec4(&Y)[2], JacobiTerms& t) {
+        geovis::jacobi_terms(*static_cast<const M*>(p), x, k, Y, t);
       },
       [](V p, const Vec4& x, const Vec4& k, Vec4& a) { static_cast<const M*>(p)->geodesic_acceleration(x, k, a); },
       [](V p, const Vec4& x) { return static_cast<const M*>(p)->is_valid_inline(x); },

@@ -1,5 +1,5 @@
 // A concrete metric seen through a table of plain function pointers: what the ODE systems of
-// integrators.h ask of a metric (g_{μν}, Γ, Γ with its derivatives, −Γkk, the validity domain and
+// integrators.h ask of a metric (g_{μν}, Γ, the Jacobi system's Γ terms, −Γkk, the validity domain and
 // the optional break, escape, capture, constraint-norm and rescaling rules of metric_crtp.h), without its type.
 //
 // Why: the integrators are templates over the metric. Instantiated for every metric, system and
@@ -27,11 +27,20 @@ concept has_christoffel_tmpl = requires(const M& m, const Vec4T<DualD>& x, Chris
   m.template christoffel_tmpl<DualD>(x, G);
 };
 
+/// What the Jacobi system (jacobi.h) needs of Γ at x for the tangent k and its two Jacobi fields
+/// Y_1, Y_2: Gk[μ][b] = Γ^μ_{bc} k^c (transport of k and the Sachs basis, the 2Γ(k, Y') term) and
+/// dGkk[f][μ] = Y_f^ν ∂_ν Γ^μ_{ab} k^a k^b, the derivative term as the directional derivative
+/// d/dε Γ^μ_{ab}(x + ε Y_f) k^a k^b at ε = 0.
+struct JacobiTerms {
+  double Gk[4][4];
+  double dGkk[2][4];
+};
+
 struct MetricKernelOps {
   void (*metric_tensor)(const void* m, const Vec4& x, Mat4& g);
   void (*christoffel)(const void* m, const Vec4& x, Christoffel& G);
-  /// Γ with its partial derivatives as dual numbers: G.G[μ][a][b].d[c] = ∂_c Γ^μ_{ab} (jacobi.h).
-  void (*christoffel_with_derivs)(const void* m, const Vec4& x, ChristoffelT<DualD>& G);
+  /// The Jacobi system's terms at x for tangent k and fields Y[0], Y[1] (jacobi.h jacobi_terms).
+  void (*jacobi_terms)(const void* m, const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t);
   void (*geodesic_acceleration)(const void* m, const Vec4& x, const Vec4& k, Vec4& a);
   bool (*is_valid)(const void* m, const Vec4& x);
   /// Optional rules (null when the metric has none; see MetricSystem in integrators.h).
@@ -50,7 +59,9 @@ class MetricKernel {
 
   void metric_tensor_inline(const Vec4& x, Mat4& g) const { ops_->metric_tensor(m_, x, g); }
   void christoffel_inline(const Vec4& x, Christoffel& G) const { ops_->christoffel(m_, x, G); }
-  void christoffel_with_derivs(const Vec4& x, ChristoffelT<DualD>& G) const { ops_->christoffel_with_derivs(m_, x, G); }
+  void jacobi_terms(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    ops_->jacobi_terms(m_, x, k, Y, t);
+  }
   void geodesic_acceleration(const Vec4& x, const Vec4& k, Vec4& a) const { ops_->geodesic_acceleration(m_, x, k, a); }
   bool is_valid_inline(const Vec4& x) const { return ops_->is_valid(m_, x); }
   bool leaves_chart(const Vec4& x, const Vec4& k) const {

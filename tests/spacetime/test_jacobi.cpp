@@ -208,3 +208,35 @@ TEST(Jacobi, RightHandSideFromTheMetricTensorMatchesTheRiemannTensor) {
   for (const Vec3& d : {Vec3{1, 0, 0}, Vec3{0.3, -0.5, 0.8}, Vec3{0, 0, 1}})
     geovis::metric_checks::expect_jacobi_rhs_matches_riemann(m, x, e, d, 1e-12);
 }
+
+TEST(Jacobi, FieldToleranceIsRelativeToTheFieldsSize) {
+  // The Jacobi equation is linear, so fields started with Y' = c s_b are c times the fields of
+  // Y' = s_b. The step control holds each field to eps_abs relative to its own size
+  // (jacobi.cpp JacobiSystem), so the scale c must change neither the steps nor J/c; with powers
+  // of two every operation scales exactly. (An absolute tolerance takes more steps for larger c.)
+  auto m = make_metric("KerrBL", {{"angmom", 0.9}, {"mass", 1.0}});
+  const Vec4 x{{0, 30, 1.2, 0}};
+  const Tetrad e = m->natural_tetrad(x);
+  SolverConfig cfg;
+  cfg.eps_abs = 1e-8;
+  cfg.lambda_max = 60;  // past the hole at a few M and out again
+  auto run = [&](double c, double J[4]) {
+    double y[kJacobiDim];
+    jacobi_initial_state(x, e, Vec3{-1, 0.2, 0.15}, y);
+    for (int i = 0; i < 4; ++i) {
+      y[kJacobiDY1 + i] *= c;
+      y[kJacobiDY2 + i] *= c;
+    }
+    const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Jacobi, y, 0.0, {});
+    EXPECT_EQ(r.reason, StopReason::LambdaMax);
+    jacobi_matrix(*m, y, J);
+    for (int i = 0; i < 4; ++i) J[i] /= c;
+    return r.steps;
+  };
+  double J1[4], J2[4];
+  const int steps1 = run(128.0, J1);
+  const int steps2 = run(131072.0, J2);
+  EXPECT_EQ(steps1, steps2);
+  EXPECT_GT(steps1, 20);
+  for (int i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(J1[i], J2[i]) << i;
+}

@@ -144,6 +144,44 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     set(3, 2, 3, k.ph_thph);
   }
 
+  /// The Jacobi system's terms (JacobiTerms, metric_kernel.h): Gk[μ][b] = Γ^μ_{bc} k^c from the
+  /// twenty symbols, contracted with k symbol by symbol instead of over all 64 entries, and
+  /// dGkk[f][μ] = Y_f^ν ∂_ν Γ^μ_{ab} k^a k^b = −Y_f^ν ∂_ν a^μ from the covariant form of the
+  /// acceleration a = −Γ(k, k) (accel_tmpl: ten metric derivatives instead of twenty symbols) on
+  /// duals seeded along the two fields (only their r and θ components enter: g depends on r, θ).
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    const KerrGamma<double> g = kerr_gamma(rs_, a_, x[1], x[2]);
+    const double kt = k[0], kr = k[1], kh = k[2], kp = k[3];
+    // Γ^t and Γ^φ have the same non-zero pattern (tr, tθ, rφ, θφ), as have Γ^r and Γ^θ
+    // (tt, tφ, rr, rθ, θθ, φφ).
+    auto odd = [&](double* Gk, double tr, double tth, double rph, double thph) {
+      Gk[0] = tr * kr + tth * kh;
+      Gk[1] = tr * kt + rph * kp;
+      Gk[2] = tth * kt + thph * kp;
+      Gk[3] = rph * kr + thph * kh;
+    };
+    auto even = [&](double* Gk, double tt, double tph, double rr, double rth, double thth, double phph) {
+      Gk[0] = tt * kt + tph * kp;
+      Gk[1] = rr * kr + rth * kh;
+      Gk[2] = rth * kr + thth * kh;
+      Gk[3] = tph * kt + phph * kp;
+    };
+    odd(t.Gk[0], g.t_tr, g.t_tth, g.t_rph, g.t_thph);
+    even(t.Gk[1], g.r_tt, g.r_tph, g.r_rr, g.r_rth, g.r_thth, g.r_phph);
+    even(t.Gk[2], g.th_tt, g.th_tph, g.th_rr, g.th_rth, g.th_thth, g.th_phph);
+    odd(t.Gk[3], g.ph_tr, g.ph_tth, g.ph_rph, g.ph_thph);
+    using D = Dual<double, 2>;
+    D r(x[1]), th(x[2]);
+    for (int f = 0; f < 2; ++f) {
+      r.d[f] = Y[f][1];
+      th.d[f] = Y[f][2];
+    }
+    D acc[4];
+    accel_tmpl(r, th, k, acc);
+    for (int f = 0; f < 2; ++f)
+      for (int mu = 0; mu < 4; ++mu) t.dGkk[f][mu] = -acc[mu].d[f];
+  }
+
   /// a^μ = −Γ^μ_{ab} k^a k^b (hot path of every Kerr ray), evaluated in the covariant form
   ///   a^μ = g^{μν} F_ν,  F_ν = ½ ∂_ν g_ab k^a k^b − k^c ∂_c g_νb k^b,
   /// which is −Γ^μ_{ab} k^a k^b with Γ = ½ g^{μν}(∂_a g_νb + ∂_b g_νa − ∂_ν g_ab) contracted. g
@@ -154,36 +192,43 @@ class KerrBL final : public MetricCRTP<KerrBL> {
   /// g_φφ = (r² + a² + a² sin²θ u) sin²θ;  ∂_r u = r_s (a² cos²θ − r²)/Σ²,
   /// ∂_θ u = 2 r_s r a² sinθ cosθ/Σ².
   GEOVIS_HOT_INLINE void accel_closed(const Vec4& x, const Vec4& k, Vec4& acc) const {
-    const double r = x[1];
-    double st, ct;
-    fast_sincos(x[2], st, ct);
+    double a[4];
+    accel_tmpl(x[1], x[2], k, a);
+    for (int i = 0; i < 4; ++i) acc[i] = a[i];
+  }
+  /// The same on any number type for r and θ (dual numbers: its derivatives along the Jacobi
+  /// fields, jacobi_terms_closed).
+  template <class T>
+  GEOVIS_HOT_INLINE void accel_tmpl(const T& r, const T& theta, const Vec4& k, T (&acc)[4]) const {
+    T st, ct;
+    sincos_t(theta, st, ct);
     const double kt = k[0], kr = k[1], kth = k[2], kph = k[3];
-    const double r2 = r * r, s2 = st * st, sc = st * ct, a2c2 = a2_ * ct * ct;
-    const double sigma = r2 + a2c2, delta = r2 - rs_ * r + a2_;
-    const double is = 1.0 / sigma;
-    const double u = rs_ * r * is;
-    const double ur = rs_ * (a2c2 - r2) * is * is;          // ∂_r u
-    const double uth = 2.0 * rs_ * r * a2_ * sc * is * is;  // ∂_θ u
+    const T r2 = r * r, s2 = st * st, sc = st * ct, a2c2 = a2_ * ct * ct;
+    const T sigma = r2 + a2c2, delta = r2 - rs_ * r + a2_;
+    const T is = 1.0 / sigma;
+    const T u = rs_ * r * is;
+    const T ur = rs_ * (a2c2 - r2) * is * is;          // ∂_r u
+    const T uth = 2.0 * rs_ * r * a2_ * sc * is * is;  // ∂_θ u
     // Metric components.
-    const double gtt = u - 1.0, gtp = -a_ * s2 * u, B = r2 + a2_ + a2_ * s2 * u, gpp = B * s2;
+    const T gtt = u - 1.0, gtp = -a_ * s2 * u, B = r2 + a2_ + a2_ * s2 * u, gpp = B * s2;
     // r-derivatives.
-    const double idd = 1.0 / (delta * s2);  // 1/(Δ sin²θ)
-    const double id = idd * s2;             // 1/Δ
-    const double gtt_r = ur, gtp_r = -a_ * s2 * ur, grr_r = (2.0 * r - sigma * (2.0 * r - rs_) * id) * id,
-                 ghh_r = 2.0 * r, gpp_r = (2.0 * r + a2_ * s2 * ur) * s2;
+    const T idd = 1.0 / (delta * s2);  // 1/(Δ sin²θ)
+    const T id = idd * s2;             // 1/Δ
+    const T gtt_r = ur, gtp_r = -a_ * s2 * ur, grr_r = (2.0 * r - sigma * (2.0 * r - rs_) * id) * id, ghh_r = 2.0 * r,
+            gpp_r = (2.0 * r + a2_ * s2 * ur) * s2;
     // θ-derivatives (∂_θ Σ = −2a² sinθ cosθ).
-    const double dsig = -2.0 * a2_ * sc;
-    const double gtt_h = uth, gtp_h = -a_ * (2.0 * sc * u + s2 * uth), grr_h = dsig * id, ghh_h = dsig,
-                 gpp_h = a2_ * (2.0 * sc * u + s2 * uth) * s2 + 2.0 * B * sc;
+    const T dsig = -2.0 * a2_ * sc;
+    const T gtt_h = uth, gtp_h = -a_ * (2.0 * sc * u + s2 * uth), grr_h = dsig * id, ghh_h = dsig,
+            gpp_h = a2_ * (2.0 * sc * u + s2 * uth) * s2 + 2.0 * B * sc;
     // D_X[ν] = ∂_X g_νb k^b and Q_X = ∂_X g_ab k^a k^b.
-    const double Drt = gtt_r * kt + gtp_r * kph, Drr = grr_r * kr, Drh = ghh_r * kth, Drp = gtp_r * kt + gpp_r * kph;
-    const double Dht = gtt_h * kt + gtp_h * kph, Dhr = grr_h * kr, Dhh = ghh_h * kth, Dhp = gtp_h * kt + gpp_h * kph;
-    const double Qr = Drt * kt + Drr * kr + Drh * kth + Drp * kph;
-    const double Qh = Dht * kt + Dhr * kr + Dhh * kth + Dhp * kph;
-    const double Ft = -kr * Drt - kth * Dht;
-    const double Fr = 0.5 * Qr - kr * Drr - kth * Dhr;
-    const double Fh = 0.5 * Qh - kr * Drh - kth * Dhh;
-    const double Fp = -kr * Drp - kth * Dhp;
+    const T Drt = gtt_r * kt + gtp_r * kph, Drr = grr_r * kr, Drh = ghh_r * kth, Drp = gtp_r * kt + gpp_r * kph;
+    const T Dht = gtt_h * kt + gtp_h * kph, Dhr = grr_h * kr, Dhh = ghh_h * kth, Dhp = gtp_h * kt + gpp_h * kph;
+    const T Qr = Drt * kt + Drr * kr + Drh * kth + Drp * kph;
+    const T Qh = Dht * kt + Dhr * kr + Dhh * kth + Dhp * kph;
+    const T Ft = -kr * Drt - kth * Dht;
+    const T Fr = 0.5 * Qr - kr * Drr - kth * Dhr;
+    const T Fh = 0.5 * Qh - kr * Drh - kth * Dhh;
+    const T Fp = -kr * Drp - kth * Dhp;
     acc[0] = (gtp * Fp - gpp * Ft) * idd;
     acc[1] = Fr * delta * is;
     acc[2] = Fh * is;
