@@ -119,7 +119,6 @@ void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& c
   constexpr int W = kPacketLanes, N = kDim;
   GeodesicRHS<MetricKernel> f{metric};
   const MetricSystem<MetricKernel, GeodesicRHS<MetricKernel>> sys{metric, f};
-  const auto rk = HWY_DYNAMIC_DISPATCH(rk_attempt);
 
   // integrate_with's constants (no own affine parameter, no scaled tolerance, λ0 = 0).
   const double dir = cfg.direction >= 0 ? 1.0 : -1.0;
@@ -217,7 +216,8 @@ void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& c
     } while (need_dy);
     if (!ready) return;
 
-    rk(metric, ready, y, dy, hv, y1, e);
+    // Looked up per call: before the first dispatch the table entry is Highway's target chooser.
+    HWY_DYNAMIC_DISPATCH(rk_attempt)(metric, ready, y, dy, hv, y1, e);
     unsigned accepted = 0;
     for (int l = 0; l < W; ++l) {
       if (!(ready >> l & 1u)) continue;
