@@ -539,9 +539,9 @@ TEST(Integrators, NoHeapAllocationWhileIntegrating) {
 }
 
 // The packet integrator (geodesic_packet.h) allocates nothing either: 20 light rays through
-// packets with refills, on Schwarzschild (SIMD right-hand side) and MorrisThorne (lane by lane).
+// packets with refills, on Schwarzschild (SIMD right-hand side) and KastorTraschen (lane by lane).
 TEST(Integrators, NoHeapAllocationWhileIntegratingPackets) {
-  for (const char* name : {"Schwarzschild", "MorrisThorne"}) {
+  for (const char* name : {"Schwarzschild", "KastorTraschen"}) {
     const auto m = make_metric(name);
     const Vec4 x = m->info().sample_pos;
     const Tetrad e = m->natural_tetrad(x, TetradKind::Default);
