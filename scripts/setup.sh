@@ -19,6 +19,7 @@ PACKAGES=(
   fonts-dejavu-core        # labels of geovis post --colorbar
   libtinyexr-dev           # tests: an OpenEXR reader independent of OpenImageIO for the data files
   libcpp-httplib-dev       # geovis view: the local HTTP server
+  libhwy-dev               # Google Highway: SIMD packets of rays with runtime dispatch
   chromium                 # the viewer's browser tests (headless, driven by Playwright)
 )
 

@@ -68,6 +68,48 @@ RenderResult allocate_render_result(const RenderJob& job) {
   return result;
 }
 
+namespace {
+
+/// The pixels of tile r traced in packets (Tracer::trace_pixels): the same samples, data rays and
+/// sums as the per-pixel loop of render_tiles, in the same order.
+void trace_tile_in_packets(const Tracer& tracer, const TileRect& r, int n, PixelData* data, int W, Image& image,
+                           std::vector<PixelSample>& samples, std::vector<Color>& colors, TraceStats& st) {
+  const bool centre_in_samples = n % 2 == 1;
+  samples.clear();
+  for (int y = r.y0; y < r.y1; ++y) {
+    for (int x = r.x0; x < r.x1; ++x) {
+      PixelData* d = data ? &data[size_t(y) * W + x] : nullptr;
+      for (int b = 0; b < n; ++b) {
+        for (int a = 0; a < n; ++a) {
+          double ox, oy;
+          supersample_offsets(n, a, b, ox, oy);
+          const bool centre = n == 1 || (centre_in_samples && a == n / 2 && b == n / 2);
+          samples.push_back({x + ox, y + oy, centre ? d : nullptr});
+        }
+      }
+      if (d && !centre_in_samples) samples.push_back({x + 0.5, y + 0.5, d});
+    }
+  }
+  colors.resize(samples.size());
+  tracer.trace_pixels(samples, colors.data(), st);
+  const double inv_samples = 1.0 / (double(n) * n);
+  size_t i = 0;
+  for (int y = r.y0; y < r.y1; ++y) {
+    for (int x = r.x0; x < r.x1; ++x) {
+      Color sum;
+      for (int k = 0; k < n * n; ++k) sum += colors[i++];
+      if (data && !centre_in_samples) ++i;  // the centre ray of the data filters
+      const Color c = n == 1 ? sum : sum * inv_samples;
+      float* px = image.at(x, y);
+      px[0] = float(c.r);
+      px[1] = float(c.g);
+      px[2] = float(c.b);
+    }
+  }
+}
+
+}  // namespace
+
 void render_tiles(const RenderJob& job, const RenderOptions& opt, TileSchedule& schedule, RenderResult& result) {
   const Tracer tracer(job);  // validates the job
   const Camera& cam = *job.camera;
@@ -101,6 +143,8 @@ void render_tiles(const RenderJob& job, const RenderOptions& opt, TileSchedule& 
 
   auto worker = [&](int tid) {
     TraceStats& st = stats[size_t(tid)];
+    std::vector<PixelSample> samples;  // a tile's samples and their colours (packet tracing)
+    std::vector<Color> colors;
     try {
       while (!abort.load(std::memory_order_relaxed)) {
         if (cancelled(opt)) {  // SIGINT/SIGTERM: stop at the next tile
@@ -113,29 +157,34 @@ void render_tiles(const RenderJob& job, const RenderOptions& opt, TileSchedule& 
         const double cpu0 = thread_cpu_seconds();
         const long steps0 = st.steps;
         const TileRect r = grid.rect(tile);
-        for (int y = r.y0; y < r.y1; ++y) {
-          for (int x = r.x0; x < r.x1; ++x) {
-            PixelData* data = want_data ? &result.data[size_t(y) * W + x] : nullptr;
-            Color sum;
-            for (int b = 0; b < n; ++b) {
-              for (int a = 0; a < n; ++a) {
-                double ox, oy;
-                supersample_offsets(n, a, b, ox, oy);
-                const bool centre = n == 1 || (centre_in_samples && a == n / 2 && b == n / 2);
-                Color c;
-                tracer.trace_pixel(x + ox, y + oy, c, centre ? data : nullptr, st);
-                sum += c;
+        if (tracer.packet_tracing()) {
+          trace_tile_in_packets(tracer, r, n, want_data ? &result.data[0] : nullptr, W, result.image, samples, colors,
+                                st);
+        } else {
+          for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) {
+              PixelData* data = want_data ? &result.data[size_t(y) * W + x] : nullptr;
+              Color sum;
+              for (int b = 0; b < n; ++b) {
+                for (int a = 0; a < n; ++a) {
+                  double ox, oy;
+                  supersample_offsets(n, a, b, ox, oy);
+                  const bool centre = n == 1 || (centre_in_samples && a == n / 2 && b == n / 2);
+                  Color c;
+                  tracer.trace_pixel(x + ox, y + oy, c, centre ? data : nullptr, st);
+                  sum += c;
+                }
               }
+              if (data && !centre_in_samples) {
+                Color c;
+                tracer.trace_pixel(x + 0.5, y + 0.5, c, data, st);
+              }
+              const Color c = n == 1 ? sum : sum * inv_samples;
+              float* px = result.image.at(x, y);
+              px[0] = float(c.r);
+              px[1] = float(c.g);
+              px[2] = float(c.b);
             }
-            if (data && !centre_in_samples) {
-              Color c;
-              tracer.trace_pixel(x + 0.5, y + 0.5, c, data, st);
-            }
-            const Color c = n == 1 ? sum : sum * inv_samples;
-            float* px = result.image.at(x, y);
-            px[0] = float(c.r);
-            px[1] = float(c.g);
-            px[2] = float(c.b);
           }
         }
         schedule.tile_done(tid, tile, TileCost{thread_cpu_seconds() - cpu0, st.steps - steps0}, result);

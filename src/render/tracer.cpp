@@ -6,27 +6,14 @@
 
 #include "core/error.h"
 #include "spacetime/circular_orbit.h"
+#include "spacetime/geodesic_packet.h"
 #include "spacetime/jacobi.h"
 #include "spacetime/metric.h"
 #include "spacetime/straight_ray.h"
 
 namespace geovis {
 
-namespace {
-
-inline Vec4 vec4_at(const double* y) { return Vec4{{y[0], y[1], y[2], y[3]}}; }
-
-bool is_zero(const Vec4& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0 && v[3] == 0; }
-
-/// Two local unit vectors spanning the screen orthogonal to the viewing direction n: a Sachs basis
-/// at the observer (Perlick, Living Rev. Relativ. 7 (2004) 9, §4: s_a ⟂ k and ⟂ u_obs, unit).
-void screen_basis(const Vec3& n, Vec3& s1, Vec3& s2) {
-  const Vec3 a = std::fabs(n.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
-  s1 = normalize(a - dot(a, n) * n);
-  s2 = cross(n, s1);
-}
-
-/// State of the hit search inside one accepted step.
+/// State of the hit search of one ray (tracer.h).
 struct RayState {
   const Metric* metric;
   const SceneObject* scene;
@@ -41,6 +28,20 @@ struct RayState {
   Vec3 prev_p;
   int prev_chart = 0;
 };
+
+namespace {
+
+inline Vec4 vec4_at(const double* y) { return Vec4{{y[0], y[1], y[2], y[3]}}; }
+
+bool is_zero(const Vec4& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0 && v[3] == 0; }
+
+/// Two local unit vectors spanning the screen orthogonal to the viewing direction n: a Sachs basis
+/// at the observer (Perlick, Living Rev. Relativ. 7 (2004) 9, §4: s_a ⟂ k and ⟂ u_obs, unit).
+void screen_basis(const Vec3& n, Vec3& s1, Vec3& s2) {
+  const Vec3 a = std::fabs(n.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+  s1 = normalize(a - dot(a, n) * n);
+  s2 = cross(n, s1);
+}
 
 /// Refines a hit found on the chord of step `st` (fraction `s0` of the chord, hit `h`): the curved
 /// step (cubic Hermite dense output of the integrator, geodesic.h) is split into 4 sub-chords, the
@@ -145,45 +146,50 @@ GeodesicResult integrate_ray(const Metric& m, bool straight, const SolverConfig&
   return m.integrate(cfg, system, y, 0.0, cb);
 }
 
-/// Hit search: integrates the ray and tests every accepted step's chord against the scene
-/// (pseudo-Cartesian segment, paper §2.3); a chord hit is refined on the curved step
-/// (refine_hit) and ends the integration. `observe_step` (may be empty) sees every step first.
+/// The hit search's test of one accepted step: its chord (pseudo-Cartesian segment, paper §2.3)
+/// against the scene; a chord hit is refined on the curved step (refine_hit) and stops the ray.
+StepAction test_step(RayState& rs, const StepView& st) {
+  if (!rs.scene) return StepAction::Continue;
+  const Metric& mm = *rs.metric;
+  Segment seg;
+  seg.x0 = vec4_at(st.y0);
+  seg.x1 = vec4_at(st.y1);
+  if (rs.have_prev) {
+    seg.p0 = rs.prev_p;
+    seg.chart0 = rs.prev_chart;
+  } else {
+    seg.chart0 = mm.to_pseudo_cartesian(seg.x0, seg.p0);
+  }
+  seg.chart1 = mm.to_pseudo_cartesian(seg.x1, seg.p1);
+  seg.step = &st;
+  seg.metric = &mm;
+  rs.prev_p = seg.p1;
+  rs.prev_chart = seg.chart1;
+  rs.have_prev = true;
+  Hit h;
+  if (!rs.scene->intersect(seg, h)) return StepAction::Continue;
+  rs.best = h;
+  if (!refine_hit(st, seg, *rs.scene, mm, rs.best, rs.frac)) return StepAction::Continue;
+  rs.hit = true;
+  rs.lambda0 = st.lambda0;
+  rs.lambda1 = st.lambda1;
+  rs.dim = st.dim;
+  for (int i = 0; i < st.dim; ++i) {
+    rs.y0[i] = st.y0[i];
+    rs.y1[i] = st.y1[i];
+    rs.dy0[i] = st.dy0[i];
+    rs.dy1[i] = st.dy1[i];
+  }
+  return StepAction::Stop;
+}
+
+/// Hit search: integrates the ray (integrate_ray) and tests every accepted step (test_step).
+/// `observe_step` (may be empty) sees every step first.
 GeodesicResult search_hit(const Metric& m, bool straight, const SolverConfig& cfg, GeodesicSystem system, double* y,
                           RayState& rs, FunctionRef<void(const StepView&)> observe_step) {
   auto on_step = [&rs, observe_step](const StepView& st) -> StepAction {
     if (observe_step) observe_step(st);
-    if (!rs.scene) return StepAction::Continue;
-    const Metric& mm = *rs.metric;
-    Segment seg;
-    seg.x0 = vec4_at(st.y0);
-    seg.x1 = vec4_at(st.y1);
-    if (rs.have_prev) {
-      seg.p0 = rs.prev_p;
-      seg.chart0 = rs.prev_chart;
-    } else {
-      seg.chart0 = mm.to_pseudo_cartesian(seg.x0, seg.p0);
-    }
-    seg.chart1 = mm.to_pseudo_cartesian(seg.x1, seg.p1);
-    seg.step = &st;
-    seg.metric = &mm;
-    rs.prev_p = seg.p1;
-    rs.prev_chart = seg.chart1;
-    rs.have_prev = true;
-    Hit h;
-    if (!rs.scene->intersect(seg, h)) return StepAction::Continue;
-    rs.best = h;
-    if (!refine_hit(st, seg, *rs.scene, mm, rs.best, rs.frac)) return StepAction::Continue;
-    rs.hit = true;
-    rs.lambda0 = st.lambda0;
-    rs.lambda1 = st.lambda1;
-    rs.dim = st.dim;
-    for (int i = 0; i < st.dim; ++i) {
-      rs.y0[i] = st.y0[i];
-      rs.y1[i] = st.y1[i];
-      rs.dy0[i] = st.dy0[i];
-      rs.dy1[i] = st.dy1[i];
-    }
-    return StepAction::Stop;
+    return test_step(rs, st);
   };
   return integrate_ray(m, straight, cfg, system, y, on_step);
 }
@@ -327,14 +333,17 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   // motions along geodesics need their worldline sampled, `geovis geodesic` prints the steps — and
   // the objects test such a step whole however long it is (render/local_object.h).
   straight_ = job.metric->info().inertial_cartesian;
+  // Packets (spacetime/geodesic_packet.h): the geodesic system with Cash–Karp in the metric's
+  // coordinates; the Jacobi system, other solvers and Carter's separated equations stay scalar,
+  // and straight rays need no integrator at all.
+  packets_ = system_ == GeodesicSystem::Geodesic && cfg_.kind == SolverKind::CashKarp45 &&
+             !(cfg_.separable && job.metric->has_separable_geodesics()) && !straight_;
 }
 
 TraceResult Tracer::trace_direction(const Vec3& d, TraceStats& stats) const { return trace_direction(d, stats, {}); }
 
 TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats,
                                     FunctionRef<void(const StepView&)> observe_step) const {
-  TraceResult res;
-  res.traced = true;
   ++stats.rays;
   const Metric& m = *job_.metric;
   double y[kMaxSystemDim] = {};
@@ -346,6 +355,14 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats,
   rs.metric = &m;
   rs.scene = job_.scene.get();
   const GeodesicResult gr = search_hit(m, straight_, cfg_, system_, y, rs, observe_step);
+  return end_ray(rs, k0, y, y_start, gr, stats);
+}
+
+TraceResult Tracer::end_ray(const RayState& rs, const Vec4& k0, const double* y, const double* y_start,
+                            const GeodesicResult& gr, TraceStats& stats) const {
+  TraceResult res;
+  res.traced = true;
+  const Metric& m = *job_.metric;
   stats.steps += gr.steps;
   stats.rhs_evals += gr.rhs_evals;
   res.reason = gr.reason;
@@ -365,6 +382,55 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats,
   if (system_ == GeodesicSystem::Jacobi) jacobi_at_hit(m, rs, res);
   res.color = shade_hit(job_, point_lights_, rs.best, res.pos);
   return res;
+}
+
+void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, TraceStats& stats) const {
+  if (!packets_) {
+    for (size_t i = 0; i < samples.size(); ++i)
+      trace_pixel(samples[i].px, samples[i].py, colors[i], samples[i].data, stats);
+    return;
+  }
+  // Each lane's ray: its sample, start and hit search, as trace_direction keeps them on its stack.
+  struct LaneRay {
+    size_t sample;
+    Vec4 k0;
+    double y_start[8];
+    RayState rs;
+  };
+  LaneRay lanes[kPacketLanes];
+  const Metric& m = *job_.metric;
+  size_t next = 0;
+  auto next_ray = [&](int lane, double* y) {
+    for (; next < samples.size(); ++next) {
+      const PixelSample& s = samples[next];
+      Vec3 d;
+      if (!job_.camera->direction(s.px, s.py, d)) {
+        // No ray there (trace_pixel).
+        colors[next] = job_.error_color.value_or(Color{0, 0, 0});
+        if (s.data) *s.data = PixelData{};
+        continue;
+      }
+      ++stats.rays;
+      LaneRay& r = lanes[lane];
+      r.sample = next++;
+      double ys[kMaxSystemDim];
+      r.k0 = start_state(job_.observer, normalize(d), system_, ys);
+      for (int i = 0; i < 8; ++i) y[i] = r.y_start[i] = ys[i];
+      r.rs = RayState{};
+      r.rs.metric = &m;
+      r.rs.scene = job_.scene.get();
+      return true;
+    }
+    return false;
+  };
+  auto on_step = [&](int lane, const StepView& st) { return test_step(lanes[lane].rs, st); };
+  auto done = [&](int lane, const double* y, const GeodesicResult& gr) {
+    const LaneRay& r = lanes[lane];
+    const TraceResult res = end_ray(r.rs, r.k0, y, r.y_start, gr, stats);
+    colors[r.sample] = res.color;
+    if (samples[r.sample].data) fill_data(res, *samples[r.sample].data);
+  };
+  m.integrate_packet(cfg_, PacketRays{next_ray, on_step, done});
 }
 
 Color Tracer::stop_color(StopReason reason) const {

@@ -9,6 +9,8 @@
 // nothing (all state lives on the stack, the step callback is a FunctionRef).
 #pragma once
 
+#include <span>
+
 #include "render/camera.h"
 #include "render/render_job.h"
 
@@ -40,6 +42,14 @@ struct TraceResult {
   Color color;
 };
 
+/// One sample of an image position for Tracer::trace_pixels (data: where its filter data go, or null).
+struct PixelSample {
+  double px, py;
+  PixelData* data;
+};
+
+struct RayState;
+
 class Tracer {
  public:
   /// Checks the job (metric, camera present; solver settings sane) and throws Error otherwise.
@@ -50,6 +60,13 @@ class Tracer {
   /// camera has no ray (outside the 2PICam dome circle) the colour is errcolor, else black (GeoViS),
   /// and the data are zero.
   void trace_pixel(double px, double py, Color& color, PixelData* data, TraceStats& stats) const;
+
+  /// trace_pixel for each sample (colour i to colors[i]), in packets of rays integrated on SIMD lanes
+  /// where packet_tracing() (spacetime/geodesic_packet.h), with the same results to the bit.
+  void trace_pixels(std::span<const PixelSample> samples, Color* colors, TraceStats& stats) const;
+  /// Light rays go in packets: the geodesic system (Filter RGB, RGBpdz; not RGBjac) with the
+  /// CashKarp45 solver, not through Carter's separated equations.
+  bool packet_tracing() const { return packets_; }
 
   /// Traces the ray leaving the observer in local direction `d` (need not be unit).
   TraceResult trace_direction(const Vec3& d, TraceStats& stats) const;
@@ -81,11 +98,15 @@ class Tracer {
 
  private:
   void fill_data(const TraceResult& r, PixelData& d) const;
+  /// The end of a traced ray (trace_direction): hit refinement result, shading, data.
+  TraceResult end_ray(const RayState& rs, const Vec4& k0, const double* y, const double* y_start,
+                      const GeodesicResult& gr, TraceStats& stats) const;
   const RenderJob& job_;
   SolverConfig cfg_;
   GeodesicSystem system_;
   bool point_lights_;  ///< shadow rays possible: Minkowski, lights with shadows on
   bool straight_;      ///< straight rays without integrator: Minkowski (spacetime/straight_ray.h)
+  bool packets_;       ///< packet_tracing()
 };
 
 }  // namespace geovis

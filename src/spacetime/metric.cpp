@@ -119,6 +119,10 @@ void Metric::require_tetrad_kind(TetradKind kind) const {
               " natural tetrad (available: " + join(names) + ")");
 }
 
+void Metric::integrate_packet(const SolverConfig&, const PacketRays&) const {
+  throw Error("metric " + info().name + ": no packet integrator");
+}
+
 bool Metric::is_valid(const Vec4& x) const {
   for (int i = 0; i < 4; ++i)
     if (!std::isfinite(x[i])) return false;

@@ -31,6 +31,8 @@ const char* coord_type_name(CoordType t);
 enum class TetradKind { Default = 0, Static = 1, LNRF = 2, Freefall = 3, Comoving = 4, Cylinder = 5, Cartesian = 6 };
 const char* tetrad_kind_name(TetradKind k);
 
+struct PacketRays;
+
 struct MetricParam {
   std::string name;  ///< lower case, as GeoViS scene keys
   double def = 0;
@@ -155,6 +157,9 @@ class Metric {
   /// affine parameter lambda0, calling `cb` after every accepted step.
   virtual GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y, double lambda0,
                                    StepCallback cb) const = 0;
+  /// Light-ray geodesics a packet at a time (spacetime/geodesic_packet.h: CashKarp45, the geodesic
+  /// system in coordinates); each ray as integrate(cfg, Geodesic, y, 0, cb) with separable off.
+  virtual void integrate_packet(const SolverConfig& cfg, const PacketRays& rays) const;
   /// Geodesics (GeodesicSystem::Geodesic) are integrated through separated equations of the form
   /// y'' = f(y) when cfg.separable is set (KerrBL, Schwarzschild: spacetime/kerr_mino.h), which
   /// is what the RKN86 solver needs.

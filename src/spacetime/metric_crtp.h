@@ -22,6 +22,7 @@
 #include "spacetime/capture.h"
 #include "spacetime/escape.h"
 #include "spacetime/fast_math.h"
+#include "spacetime/geodesic_packet.h"
 #include "spacetime/integrators.h"
 #include "spacetime/jacobi.h"
 #include "spacetime/kerr_mino.h"
@@ -122,6 +123,10 @@ class MetricCRTP : public Metric {
     return integrate_on_kernel(MetricKernel::of(self()), cfg, sys, y, lambda0, cb);
   }
 
+  void integrate_packet(const SolverConfig& cfg, const PacketRays& rays) const override {
+    integrate_geodesic_packet(MetricKernel::of(self()), cfg, rays);
+  }
+
  protected:
   const M& self() const { return static_cast<const M&>(*this); }
 };
@@ -173,6 +178,27 @@ MetricKernel MetricKernel::of(const M& m) {
         else
           return static_cast<void (*)(V, double*)>(nullptr);
       }(),
+      // The packet's right-hand side: the metric's SIMD version of its acceleration template
+      // (`void packet_acceleration_simd(const double* y, double* a) const`, all lanes, simd.h)
+      // where it has one, else its scalar acceleration lane by lane (the same function as the
+      // scalar integrator's, so the same bits).
+      [](V p, const double* y, double* a, unsigned lanes) {
+        const M& mm = *static_cast<const M*>(p);
+        if constexpr (requires { mm.packet_acceleration_simd(y, a); }) {
+          mm.packet_acceleration_simd(y, a);
+          return;
+        }
+        for (int l = 0; l < kPacketLanes; ++l) {
+          if (!(lanes >> l & 1u)) continue;
+          const Vec4 x{{y[0 * kPacketLanes + l], y[1 * kPacketLanes + l], y[2 * kPacketLanes + l],
+                        y[3 * kPacketLanes + l]}};
+          const Vec4 k{{y[4 * kPacketLanes + l], y[5 * kPacketLanes + l], y[6 * kPacketLanes + l],
+                        y[7 * kPacketLanes + l]}};
+          Vec4 acc;
+          mm.geodesic_acceleration(x, k, acc);
+          for (int i = 0; i < 4; ++i) a[i * kPacketLanes + l] = acc[i];
+        }
+      },
   };
   return MetricKernel(&m, ops);
 }

@@ -49,6 +49,9 @@ struct MetricKernelOps {
   bool (*captures)(const void* m, const Vec4& x, const Vec4& k, const SolverConfig& c);
   double (*constraint_norm)(const void* m, const Vec4& x, const Mat4& g, const Vec4& k);
   void (*rescale_null_direction)(const void* m, double* k);
+  /// −Γkk for the lanes in `lanes` (bit l: lane l) of a packet (geodesic_packet.h): y holds x and k
+  /// as 8 components of kPacketLanes doubles each, a receives 4 such components.
+  void (*packet_acceleration)(const void* m, const double* y, double* a, unsigned lanes);
 };
 
 /// The view integrators.h instantiates once: it offers the member functions the ODE systems call
@@ -86,6 +89,10 @@ class MetricKernel {
     if (ops_->rescale_null_direction == nullptr) return false;
     ops_->rescale_null_direction(m_, k);
     return true;
+  }
+
+  void packet_acceleration(const double* y, double* a, unsigned lanes) const {
+    ops_->packet_acceleration(m_, y, a, lanes);
   }
 
   /// The table for metric type M (its members called through MetricCRTP's inline versions).

@@ -10,7 +10,10 @@
 #include <new>
 #include <vector>
 
+#include "spacetime/geodesic_packet.h"
 #include "spacetime/integrators.h"
+#include "spacetime/metric.h"
+#include "spacetime/metric_registry.h"
 #include "spacetime/solver_type.h"
 
 using namespace geovis;
@@ -544,5 +547,38 @@ TEST(Integrators, NoHeapAllocationWhileIntegrating) {
     EXPECT_EQ(g_allocations.load(), before) << solver_kind_name(cfg.kind);
     EXPECT_EQ(r.reason, StopReason::LambdaMax);
     EXPECT_TRUE(std::isfinite(sum));
+  }
+}
+
+// The packet integrator (geodesic_packet.h) allocates nothing either: 20 light rays through
+// packets with refills, on Schwarzschild (SIMD right-hand side) and KastorTraschen (lane by lane).
+TEST(Integrators, NoHeapAllocationWhileIntegratingPackets) {
+  for (const char* name : {"Schwarzschild", "KastorTraschen"}) {
+    const auto m = make_metric(name);
+    const Vec4 x = m->info().sample_pos;
+    const Tetrad e = m->natural_tetrad(x, TetradKind::Default);
+    SolverConfig cfg;
+    cfg.separable = false;
+    cfg.max_steps = 300;
+    cfg.escape_radius = 40.0;
+    int started = 0, finished = 0;
+    long steps = 0;
+    auto next = [&](int, double* y) {
+      if (started == 20) return false;
+      const double a = 0.3 * started++;
+      const Vec4 k = local_null_direction(e, Vec3{std::cos(a), std::sin(a), 0.2});
+      for (int i = 0; i < 4; ++i) y[i] = x[i], y[4 + i] = k[i];
+      return true;
+    };
+    auto on_step = [&](int, const StepView&) {
+      ++steps;
+      return StepAction::Continue;
+    };
+    auto done = [&](int, const double*, const GeodesicResult&) { ++finished; };
+    const long before = g_allocations.load();
+    m->integrate_packet(cfg, PacketRays{next, on_step, done});
+    EXPECT_EQ(g_allocations.load(), before) << name;
+    EXPECT_EQ(finished, 20) << name;
+    EXPECT_GT(steps, 20) << name;
   }
 }

@@ -3,12 +3,31 @@
 // Müller & Grave, Catalogue of Spacetimes (arXiv:0904.4184), section "Schwarzschild spacetime /
 // Eddington-Finkelstein coordinates". The chart is regular across the horizon: ingoing radial
 // light rays have v = const and reach r → 0.
+//
+// The acceleration is also compiled per SIMD target for packets of rays (Highway's foreach_target
+// includes this file once per target; the class is compiled once, the per-target part is
+// edd_fink_in_packet_acceleration below).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/metrics/edd_fink_in.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+#ifndef GEOVIS_METRICS_EDD_FINK_IN_ONCE_
+#define GEOVIS_METRICS_EDD_FINK_IN_ONCE_
 #include <cmath>
 #include <string>
 
 #include "spacetime/metric_crtp.h"
 
 namespace geovis {
+
+namespace scalar {
+#include "spacetime/metrics/edd_fink_in_accel.h"
+}  // namespace scalar
 
 class EddFinkIn final : public MetricCRTP<EddFinkIn> {
  public:
@@ -61,18 +80,10 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
     G.G[3][2][3] = G.G[3][3][2] = ct / st;
   }
 
-  /// −Γ^μ_{ab} k^a k^b with the symbols above written out.
-  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    const double r = x[1];
-    double st, ct;
-    fast_sincos(x[2], st, ct);
-    const double rmrs = r - rs_;
-    const double ang = k[2] * k[2] + st * st * k[3] * k[3];
-    a[0] = -rs_ / (2.0 * r * r) * k[0] * k[0] + r * ang;
-    a[1] = -rs_ * rmrs / (2.0 * r * r * r) * k[0] * k[0] + rs_ / (r * r) * k[0] * k[1] + rmrs * ang;
-    a[2] = -2.0 / r * k[1] * k[2] + st * ct * k[3] * k[3];
-    a[3] = -2.0 / r * k[1] * k[3] - 2.0 * ct / st * k[2] * k[3];
-  }
+  /// −Γ^μ_{ab} k^a k^b with the symbols above written out (edd_fink_in_accel.h).
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::edd_fink_in_accel(rs_, x, k, a); }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD.
+  void packet_acceleration_simd(const double* y, double* a) const;
 
   /// The chart is regular across the horizon: valid for r > 0 (curvature singularity; small
   /// margin) and off the polar axis.
@@ -163,3 +174,27 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
 std::unique_ptr<Metric> make_metric_EddFinkIn() { return std::make_unique<EddFinkIn>(); }
 
 }  // namespace geovis
+#endif  // GEOVIS_METRICS_EDD_FINK_IN_ONCE_
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+#include "spacetime/metrics/edd_fink_in_accel.h"
+
+void edd_fink_in_packet_acceleration(double rs, const double* y, double* a) {
+  packet_acceleration_simd(
+      [rs](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { edd_fink_in_accel(rs, x, k, acc); }, y,
+      a, kPacketLanes);
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace geovis {
+HWY_EXPORT(edd_fink_in_packet_acceleration);
+void EddFinkIn::packet_acceleration_simd(const double* y, double* a) const {
+  HWY_DYNAMIC_DISPATCH(edd_fink_in_packet_acceleration)(rs_, y, a);
+}
+}  // namespace geovis
+#endif

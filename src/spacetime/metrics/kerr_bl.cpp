@@ -14,12 +14,31 @@
 //     `localframe 1` see the same picture.
 // Pseudo-Cartesian coordinates: plain spherical-to-Cartesian of (r, θ, φ) (Motion4D's KerrBL does
 // not override transToPseudoCart), i.e. the default for CoordType::Spherical.
+//
+// The acceleration is also compiled per SIMD target for packets of rays (Highway's foreach_target
+// includes this file once per target; the class is compiled once, the per-target part is
+// kerr_bl_packet_acceleration below).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/metrics/kerr_bl.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+#ifndef GEOVIS_METRICS_KERR_BL_ONCE_
+#define GEOVIS_METRICS_KERR_BL_ONCE_
 #include <cmath>
 #include <sstream>
 
 #include "spacetime/metric_crtp.h"
 
 namespace geovis {
+
+namespace scalar {
+#include "spacetime/metrics/kerr_bl_accel.h"
+}  // namespace scalar
 
 namespace {
 
@@ -192,48 +211,16 @@ class KerrBL final : public MetricCRTP<KerrBL> {
   /// g_φφ = (r² + a² + a² sin²θ u) sin²θ;  ∂_r u = r_s (a² cos²θ − r²)/Σ²,
   /// ∂_θ u = 2 r_s r a² sinθ cosθ/Σ².
   GEOVIS_HOT_INLINE void accel_closed(const Vec4& x, const Vec4& k, Vec4& acc) const {
-    double a[4];
-    accel_tmpl(x[1], x[2], k, a);
-    for (int i = 0; i < 4; ++i) acc[i] = a[i];
+    scalar::kerr_bl_accel(rs_, a_, a2_, x[1], x[2], k[0], k[1], k[2], k[3], acc);
   }
-  /// The same on any number type for r and θ (dual numbers: its derivatives along the Jacobi
-  /// fields, jacobi_terms_closed).
+  /// The same with dual numbers (or any number type) for r and θ: the derivatives of the
+  /// acceleration along the Jacobi fields (jacobi_terms_closed).
   template <class T>
   GEOVIS_HOT_INLINE void accel_tmpl(const T& r, const T& theta, const Vec4& k, T (&acc)[4]) const {
-    T st, ct;
-    sincos_t(theta, st, ct);
-    const double kt = k[0], kr = k[1], kth = k[2], kph = k[3];
-    const T r2 = r * r, s2 = st * st, sc = st * ct, a2c2 = a2_ * ct * ct;
-    const T sigma = r2 + a2c2, delta = r2 - rs_ * r + a2_;
-    const T is = 1.0 / sigma;
-    const T u = rs_ * r * is;
-    const T ur = rs_ * (a2c2 - r2) * is * is;          // ∂_r u
-    const T uth = 2.0 * rs_ * r * a2_ * sc * is * is;  // ∂_θ u
-    // Metric components.
-    const T gtt = u - 1.0, gtp = -a_ * s2 * u, B = r2 + a2_ + a2_ * s2 * u, gpp = B * s2;
-    // r-derivatives.
-    const T idd = 1.0 / (delta * s2);  // 1/(Δ sin²θ)
-    const T id = idd * s2;             // 1/Δ
-    const T gtt_r = ur, gtp_r = -a_ * s2 * ur, grr_r = (2.0 * r - sigma * (2.0 * r - rs_) * id) * id, ghh_r = 2.0 * r,
-            gpp_r = (2.0 * r + a2_ * s2 * ur) * s2;
-    // θ-derivatives (∂_θ Σ = −2a² sinθ cosθ).
-    const T dsig = -2.0 * a2_ * sc;
-    const T gtt_h = uth, gtp_h = -a_ * (2.0 * sc * u + s2 * uth), grr_h = dsig * id, ghh_h = dsig,
-            gpp_h = a2_ * (2.0 * sc * u + s2 * uth) * s2 + 2.0 * B * sc;
-    // D_X[ν] = ∂_X g_νb k^b and Q_X = ∂_X g_ab k^a k^b.
-    const T Drt = gtt_r * kt + gtp_r * kph, Drr = grr_r * kr, Drh = ghh_r * kth, Drp = gtp_r * kt + gpp_r * kph;
-    const T Dht = gtt_h * kt + gtp_h * kph, Dhr = grr_h * kr, Dhh = ghh_h * kth, Dhp = gtp_h * kt + gpp_h * kph;
-    const T Qr = Drt * kt + Drr * kr + Drh * kth + Drp * kph;
-    const T Qh = Dht * kt + Dhr * kr + Dhh * kth + Dhp * kph;
-    const T Ft = -kr * Drt - kth * Dht;
-    const T Fr = 0.5 * Qr - kr * Drr - kth * Dhr;
-    const T Fh = 0.5 * Qh - kr * Drh - kth * Dhh;
-    const T Fp = -kr * Drp - kth * Dhp;
-    acc[0] = (gtp * Fp - gpp * Ft) * idd;
-    acc[1] = Fr * delta * is;
-    acc[2] = Fh * is;
-    acc[3] = (gtp * Ft - gtt * Fp) * idd;
+    scalar::kerr_bl_accel(rs_, a_, a2_, r, theta, k[0], k[1], k[2], k[3], acc);
   }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD.
+  void packet_acceleration_simd(const double* y, double* a) const;
 
   /// Outside the outer horizon r_+ = M + √(M² − a²) with the break margin r_+ (1 + horizon_eps)
   /// (Metric::horizon_eps) and off the polar axis, where BL coordinates are singular (sin θ == 0
@@ -327,3 +314,27 @@ class KerrBL final : public MetricCRTP<KerrBL> {
 std::unique_ptr<Metric> make_metric_KerrBL() { return std::make_unique<KerrBL>(); }
 
 }  // namespace geovis
+#endif  // GEOVIS_METRICS_KERR_BL_ONCE_
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+#include "spacetime/metrics/kerr_bl_accel.h"
+
+void kerr_bl_packet_acceleration(double rs, double a, double a2, const double* y, double* acc) {
+  packet_acceleration_simd([rs, a, a2](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k,
+                                       Vec4T<SimdD>& out) { kerr_bl_accel(rs, a, a2, x[1], x[2], k[0], k[1], k[2], k[3], out); },
+                           y, acc, kPacketLanes);
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace geovis {
+HWY_EXPORT(kerr_bl_packet_acceleration);
+void KerrBL::packet_acceleration_simd(const double* y, double* a) const {
+  HWY_DYNAMIC_DISPATCH(kerr_bl_packet_acceleration)(rs_, a_, a2_, y, a);
+}
+}  // namespace geovis
+#endif

@@ -10,12 +10,31 @@
 // spherical-to-Cartesian map applied to the *signed* l, i.e. (l sinθ cosφ, l sinθ sinφ, l cosθ);
 // chart 0 for l > 0 and chart 1 for l <= 0 (the second universe appears point-reflected, which
 // GeoViS scenes compensate in their texture transforms, e.g. morristhorne.scm).
+//
+// The acceleration is also compiled per SIMD target for packets of rays (Highway's foreach_target
+// includes this file once per target; the class is compiled once, the per-target part is
+// morris_thorne_packet_acceleration below).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/metrics/morris_thorne.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+#ifndef GEOVIS_METRICS_MORRIS_THORNE_ONCE_
+#define GEOVIS_METRICS_MORRIS_THORNE_ONCE_
 #include <algorithm>
 #include <cmath>
 
 #include "spacetime/metric_crtp.h"
 
 namespace geovis {
+
+namespace scalar {
+#include "spacetime/metrics/morris_thorne_accel.h"
+}  // namespace scalar
 
 class MorrisThorne final : public MetricCRTP<MorrisThorne> {
  public:
@@ -61,16 +80,10 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
     G.G[3][2][3] = G.G[3][3][2] = ct / st;
   }
 
-  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    const double l = x[1];
-    double st, ct;
-    fast_sincos(x[2], st, ct);
-    const double lr2 = l / (b02_ + l * l);
-    a[0] = 0.0;
-    a[1] = l * (k[2] * k[2] + st * st * k[3] * k[3]);
-    a[2] = -2.0 * lr2 * k[1] * k[2] + st * ct * k[3] * k[3];
-    a[3] = -2.0 * lr2 * k[1] * k[3] - 2.0 * ct / st * k[2] * k[3];
-  }
+  /// −Γ^μ_{ab} k^a k^b with the symbols above written out (morris_thorne_accel.h).
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::morris_thorne_accel(b02_, x, k, a); }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD.
+  void packet_acceleration_simd(const double* y, double* a) const;
 
   /// The spacetime is regular everywhere; only the polar axis is a coordinate singularity.
   bool is_valid(const Vec4& x) const override {
@@ -123,3 +136,27 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
 std::unique_ptr<Metric> make_metric_MorrisThorne() { return std::make_unique<MorrisThorne>(); }
 
 }  // namespace geovis
+#endif  // GEOVIS_METRICS_MORRIS_THORNE_ONCE_
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+#include "spacetime/metrics/morris_thorne_accel.h"
+
+void morris_thorne_packet_acceleration(double b02, const double* y, double* a) {
+  packet_acceleration_simd(
+      [b02](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { morris_thorne_accel(b02, x, k, acc); },
+      y, a, kPacketLanes);
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace geovis {
+HWY_EXPORT(morris_thorne_packet_acceleration);
+void MorrisThorne::packet_acceleration_simd(const double* y, double* a) const {
+  HWY_DYNAMIC_DISPATCH(morris_thorne_packet_acceleration)(b02_, y, a);
+}
+}  // namespace geovis
+#endif

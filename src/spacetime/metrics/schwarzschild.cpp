@@ -2,10 +2,29 @@
 //   ds² = −(1 − r_s/r) dt² + dr²/(1 − r_s/r) + r² (dθ² + sin²θ dφ²),  r_s = 2M  (G = c = 1).
 // Christoffel symbols and natural tetrad: Müller & Grave, Catalogue of Spacetimes
 // (arXiv:0904.4184) §2.2.1; tetrad = paper eq. (2).
+//
+// The acceleration is also compiled per SIMD target for packets of rays (Highway's foreach_target
+// includes this file once per target; the class is compiled once, the per-target part is
+// packet_acceleration below).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/metrics/schwarzschild.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+#ifndef GEOVIS_METRICS_SCHWARZSCHILD_ONCE_
+#define GEOVIS_METRICS_SCHWARZSCHILD_ONCE_
 #include "spacetime/metric_crtp.h"
 #include "spacetime/metrics/static_spherical.h"
 
 namespace geovis {
+
+namespace scalar {
+#include "spacetime/metrics/schwarzschild_accel.h"
+}  // namespace scalar
 
 class Schwarzschild final : public MetricCRTP<Schwarzschild> {
  public:
@@ -58,19 +77,12 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
     G.G[3][2][3] = G.G[3][3][2] = ct / st;
   }
 
-  /// −Γ^μ_{ab} k^a k^b written out (the hot path of every Schwarzschild ray).
+  /// −Γ^μ_{ab} k^a k^b written out (the hot path of every Schwarzschild ray; schwarzschild_accel.h).
   GEOVIS_HOT_INLINE void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    const double r = x[1];
-    double st, ct;
-    fast_sincos(x[2], st, ct);
-    const double rmrs = r - rs_;
-    const double c_ttr = rs_ / (2.0 * r * rmrs);
-    a[0] = -2.0 * c_ttr * k[0] * k[1];
-    a[1] = -(rs_ * rmrs / (2.0 * r * r * r)) * k[0] * k[0] + c_ttr * k[1] * k[1] +
-           rmrs * (k[2] * k[2] + st * st * k[3] * k[3]);
-    a[2] = -2.0 / r * k[1] * k[2] + st * ct * k[3] * k[3];
-    a[3] = -2.0 / r * k[1] * k[3] - 2.0 * ct / st * k[2] * k[3];
+    scalar::schwarzschild_accel(rs_, x, k, a);
   }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD.
+  void packet_acceleration_simd(const double* y, double* a) const;
 
   /// Outside the horizon break radius r_s (1 + horizon_eps) and off the polar axis (where the
   /// coordinates are singular). For a finite double θ, sin θ == 0 exactly iff θ == 0 (no other
@@ -131,3 +143,27 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
 std::unique_ptr<Metric> make_metric_Schwarzschild() { return std::make_unique<Schwarzschild>(); }
 
 }  // namespace geovis
+#endif  // GEOVIS_METRICS_SCHWARZSCHILD_ONCE_
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+#include "spacetime/metrics/schwarzschild_accel.h"
+
+void schwarzschild_packet_acceleration(double rs, const double* y, double* a) {
+  packet_acceleration_simd(
+      [rs](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { schwarzschild_accel(rs, x, k, acc); },
+      y, a, kPacketLanes);
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace geovis {
+HWY_EXPORT(schwarzschild_packet_acceleration);
+void Schwarzschild::packet_acceleration_simd(const double* y, double* a) const {
+  HWY_DYNAMIC_DISPATCH(schwarzschild_packet_acceleration)(rs_, y, a);
+}
+}  // namespace geovis
+#endif

@@ -1,0 +1,46 @@
+// Wavefront integration of light rays: a packet of kPacketLanes geodesics (GeodesicSystem::Geodesic,
+// y = (x^μ, k^μ)) integrated in lockstep with Cash–Karp 4(5), one ray per SIMD lane, in a
+// structure-of-arrays layout (component i of lane l at y[i * kPacketLanes + l]).
+//
+// Every lane is one independent run of integrate_with<ExplicitRK<CashKarpTableau>> (integrators.h):
+// its own λ, step size, step controller (StepController, the same object), boundary location,
+// stop reason and step count, and the same stop checks in the same order (the scalar
+// MetricSystem's valid/inside/constraint/escaped/captured/reproject/rescale, called per lane).
+// Only the Runge–Kutta arithmetic runs on all lanes at once (Google Highway, spacetime/simd.h,
+// dispatched at run time to AVX-512 / AVX2 / SSE4 / scalar emulation), with the same operations
+// in the same order as the scalar stepper: a lane's accepted steps, states and stop reason equal
+// the scalar integrator's to the bit where the right-hand side is the same function (test
+// tests/spacetime/test_geodesic_packet.cpp).
+//
+// A lane whose ray ended is refilled at once from the source (PacketRays::next), so the lanes stay
+// busy until the source is exhausted.
+#pragma once
+
+#include "core/function_ref.h"
+#include "spacetime/geodesic.h"
+
+namespace geovis {
+
+class MetricKernel;
+
+/// Lanes of a packet: one AVX-512 vector of doubles, two AVX2 vectors, four SSE4 vectors.
+constexpr int kPacketLanes = 8;
+
+/// Where a packet takes its rays from and hands them back; `lane` identifies the ray (0 ..
+/// kPacketLanes-1) from `next` until its `done`.
+struct PacketRays {
+  /// Writes the start state (8 components) of the next ray for `lane`; false: no rays left.
+  FunctionRef<bool(int lane, double* y)> next;
+  /// Every accepted step of the ray in `lane` (as integrate's StepCallback; may stop the ray).
+  /// May be empty.
+  FunctionRef<StepAction(int lane, const StepView& step)> on_step;
+  /// The ray in `lane` ended with final state y (8 components) and `result`.
+  FunctionRef<void(int lane, const double* y, const GeodesicResult& result)> done;
+};
+
+/// Integrates light-ray geodesics (cfg.kind must be CashKarp45; the geodesic system in the
+/// metric's coordinates, not the separated Mino-time form) from `rays.next` until it has no more,
+/// starting each at λ = 0. Allocates nothing.
+void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& cfg, const PacketRays& rays);
+
+}  // namespace geovis

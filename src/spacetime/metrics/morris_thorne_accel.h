@@ -1,0 +1,16 @@
+// −Γ^μ_{ab} k^a k^b of the Morris–Thorne wormhole (the symbols of MorrisThorne::christoffel_closed
+// in morris_thorne.cpp written out), once as a template over the number type: morris_thorne.cpp
+// includes this file once for doubles (the scalar integrator) and once per SIMD target for SimdD
+// (spacetime/simd.h, the packet integrator), so both run the same operations and give the same
+// bits. No include guard: each inclusion defines the template in the namespace it is included in.
+template <class T>
+GEOVIS_HOT_INLINE void morris_thorne_accel(double b02, const Vec4T<T>& x, const Vec4T<T>& k, Vec4T<T>& a) {
+  const T l = x[1];
+  T st, ct;
+  sincos_t(x[2], st, ct);
+  const T lr2 = l / (b02 + l * l);
+  a[0] = T(0.0);
+  a[1] = l * (k[2] * k[2] + st * st * k[3] * k[3]);
+  a[2] = -2.0 * lr2 * k[1] * k[2] + st * ct * k[3] * k[3];
+  a[3] = -2.0 * lr2 * k[1] * k[3] - 2.0 * ct / st * k[2] * k[3];
+}

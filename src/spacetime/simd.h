@@ -1,0 +1,157 @@
+// SimdD: a number type holding one SIMD vector of doubles (one light ray per lane), for the
+// packet integrator (geodesic_packet.h) and the metric templates (g_tmpl, christoffel_tmpl,
+// accel_tmpl) evaluated on a packet of rays. Built on Google Highway (Debian libhwy-dev): the
+// same source is compiled once per instruction set (AVX-512, AVX2, SSE4, scalar emulation) and
+// the best one the machine has is chosen at run time (HWY_DYNAMIC_DISPATCH).
+//
+// This is a per-target header in Highway's sense: it is included inside a file that is itself
+// re-included per target by <hwy/foreach_target.h>, so it has a toggle guard instead of
+// #pragma once, and everything lives in geovis::HWY_NAMESPACE (geovis::N_AVX2::SimdD, ...).
+//
+// Bit-identical to the scalar path: every operator is one IEEE operation per lane (Highway's
+// Mul, Add, Div, Sqrt; no fused multiply-add: files that include this header are compiled with
+// -ffp-contract=off, CMakeLists.txt), and sin/cos are fast_math.h's polynomial evaluated with the
+// same operations in the same order (fast_sincos), so a formula written once as a template gives
+// the same bits per lane as on doubles.
+#if defined(GEOVIS_SPACETIME_SIMD_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef GEOVIS_SPACETIME_SIMD_H_
+#undef GEOVIS_SPACETIME_SIMD_H_
+#else
+#define GEOVIS_SPACETIME_SIMD_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include "spacetime/fast_math.h"
+#include "spacetime/vec.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+
+namespace hn = hwy::HWY_NAMESPACE;
+using SimdTag = hn::ScalableTag<double>;
+using SimdVec = hn::Vec<SimdTag>;
+
+/// One double per lane. Implicitly constructible from a double (broadcast), so the metric
+/// templates' mixed expressions (1.0 - rs / r) work unchanged.
+struct SimdD {
+  SimdVec v;
+  SimdD() = default;  // uninitialized, as a double (trivial: Vec4T<SimdD> needs no target code to build)
+  HWY_INLINE SimdD(double x) : v(hn::Set(SimdTag(), x)) {}  // NOLINT: broadcast, as a double literal
+  HWY_INLINE explicit SimdD(SimdVec x) : v(x) {}
+  static HWY_INLINE size_t lanes() { return hn::Lanes(SimdTag()); }
+  static HWY_INLINE SimdD load(const double* p) { return SimdD(hn::LoadU(SimdTag(), p)); }
+  HWY_INLINE void store(double* p) const { hn::StoreU(v, SimdTag(), p); }
+  HWY_INLINE SimdD& operator+=(SimdD b) { return v = hn::Add(v, b.v), *this; }
+  HWY_INLINE SimdD& operator-=(SimdD b) { return v = hn::Sub(v, b.v), *this; }
+  HWY_INLINE SimdD& operator*=(SimdD b) { return v = hn::Mul(v, b.v), *this; }
+  HWY_INLINE SimdD& operator/=(SimdD b) { return v = hn::Div(v, b.v), *this; }
+};
+
+/// Per-lane truth value (result of a comparison).
+struct SimdMask {
+  hn::Mask<SimdTag> m;
+};
+
+HWY_API SimdD operator+(SimdD a, SimdD b) { return SimdD(hn::Add(a.v, b.v)); }
+HWY_API SimdD operator-(SimdD a, SimdD b) { return SimdD(hn::Sub(a.v, b.v)); }
+HWY_API SimdD operator*(SimdD a, SimdD b) { return SimdD(hn::Mul(a.v, b.v)); }
+HWY_API SimdD operator/(SimdD a, SimdD b) { return SimdD(hn::Div(a.v, b.v)); }
+HWY_API SimdD operator-(SimdD a) { return SimdD(hn::Neg(a.v)); }
+HWY_API SimdD operator+(SimdD a) { return a; }
+
+HWY_API SimdMask operator<(SimdD a, SimdD b) { return {hn::Lt(a.v, b.v)}; }
+HWY_API SimdMask operator<=(SimdD a, SimdD b) { return {hn::Le(a.v, b.v)}; }
+HWY_API SimdMask operator>(SimdD a, SimdD b) { return {hn::Gt(a.v, b.v)}; }
+HWY_API SimdMask operator>=(SimdD a, SimdD b) { return {hn::Ge(a.v, b.v)}; }
+HWY_API SimdMask operator==(SimdD a, SimdD b) { return {hn::Eq(a.v, b.v)}; }
+HWY_API SimdMask operator!=(SimdD a, SimdD b) { return {hn::Ne(a.v, b.v)}; }
+HWY_API SimdMask operator&&(SimdMask a, SimdMask b) { return {hn::And(a.m, b.m)}; }
+HWY_API SimdMask operator||(SimdMask a, SimdMask b) { return {hn::Or(a.m, b.m)}; }
+HWY_API SimdMask operator!(SimdMask a) { return {hn::Not(a.m)}; }
+HWY_API bool all_of(SimdMask a) { return hn::AllTrue(SimdTag(), a.m); }
+HWY_API bool none_of(SimdMask a) { return hn::AllFalse(SimdTag(), a.m); }
+
+/// Lane-wise c ? a : b.
+HWY_API SimdD select(SimdMask c, SimdD a, SimdD b) { return SimdD(hn::IfThenElse(c.m, a.v, b.v)); }
+HWY_API SimdD sqrt(SimdD a) { return SimdD(hn::Sqrt(a.v)); }
+HWY_API SimdD abs(SimdD a) { return SimdD(hn::Abs(a.v)); }
+HWY_API SimdD fabs(SimdD a) { return SimdD(hn::Abs(a.v)); }
+HWY_API SimdD min(SimdD a, SimdD b) { return SimdD(hn::Min(a.v, b.v)); }
+HWY_API SimdD max(SimdD a, SimdD b) { return SimdD(hn::Max(a.v, b.v)); }
+
+/// fast_sincos (fast_math.h) lane by lane: the same reduction and the same Estrin polynomials,
+/// operation for operation, so each lane equals fast_sincos of that lane to the bit. Lanes outside
+/// |x| < 1e5 (and NaN) take fast_sincos's own route through std::sin/std::cos.
+HWY_API void sincos_t(SimdD x, SimdD& s, SimdD& c) {
+  const SimdTag d;
+  if (HWY_UNLIKELY(!hn::AllTrue(d, hn::Lt(hn::Abs(x.v), hn::Set(d, 1e5))))) {
+    HWY_ALIGN double xs[HWY_MAX_BYTES / sizeof(double)], ss[HWY_MAX_BYTES / sizeof(double)],
+        cs[HWY_MAX_BYTES / sizeof(double)];
+    hn::Store(x.v, d, xs);
+    for (size_t i = 0; i < hn::Lanes(d); ++i) fast_sincos(xs[i], ss[i], cs[i]);
+    s = SimdD(hn::Load(d, ss));
+    c = SimdD(hn::Load(d, cs));
+    return;
+  }
+  constexpr double kTwoOverPi = 0.63661977236758134308;
+  constexpr double kP1 = 0x1.921fb544p+0, kP2 = 0x1.0b4611a6p-34, kP3 = 0x1.3198a2e037073p-69;
+  constexpr double kRound = 6755399441055744.0;
+  const SimdD n = (x * kTwoOverPi + kRound) - kRound;
+  const SimdD r = ((x - n * kP1) - n * kP2) - n * kP3;
+  const SimdD z = r * r;
+  constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040, s9 = 1.0 / 362880, s11 = -1.0 / 39916800,
+                   s13 = 1.0 / 6227020800.0, s15 = -1.0 / 1307674368000.0, s17 = 1.0 / 355687428096000.0;
+  constexpr double c4 = 1.0 / 24, c6 = -1.0 / 720, c8 = 1.0 / 40320, c10 = -1.0 / 3628800, c12 = 1.0 / 479001600,
+                   c14 = -1.0 / 87178291200.0, c16 = 1.0 / 20922789888000.0, c18 = -1.0 / 6402373705728000.0;
+  const SimdD z2 = z * z, z4 = z2 * z2;
+  const SimdD ps = ((s3 + z * s5) + z2 * (s7 + z * s9)) + z4 * ((s11 + z * s13) + z2 * (s15 + z * s17));
+  const SimdD pc = ((c4 + z * c6) + z2 * (c8 + z * c10)) + z4 * ((c12 + z * c14) + z2 * (c16 + z * c18));
+  const SimdD sr = r + r * z * ps;
+  const SimdD cr = (1.0 - 0.5 * z) + z * z * pc;
+  // Quadrant q = n mod 4: q odd swaps sin and cos; sin is negated for q = 2, 3, cos for q = 1, 2.
+  const hn::RebindToSigned<SimdTag> di;
+  const auto q = hn::ConvertTo(di, n.v);
+  const auto one = hn::Set(di, 1), two = hn::Set(di, 2);
+  const auto swap = hn::RebindMask(d, hn::Eq(hn::And(q, one), one));
+  const auto neg_s = hn::RebindMask(d, hn::Eq(hn::And(q, two), two));
+  const auto neg_c = hn::RebindMask(d, hn::Eq(hn::And(hn::Add(q, one), two), two));
+  const SimdVec s0 = hn::IfThenElse(swap, cr.v, sr.v), c0 = hn::IfThenElse(swap, sr.v, cr.v);
+  s = SimdD(hn::IfThenElse(neg_s, hn::Neg(s0), s0));
+  c = SimdD(hn::IfThenElse(neg_c, hn::Neg(c0), c0));
+}
+
+HWY_API SimdD sin_t(SimdD x) {
+  SimdD s, c;
+  sincos_t(x, s, c);
+  return s;
+}
+HWY_API SimdD sin(SimdD x) { return sin_t(x); }
+HWY_API SimdD cos(SimdD x) {
+  SimdD s, c;
+  sincos_t(x, s, c);
+  return c;
+}
+
+/// A metric's acceleration template a = accel(x, k) (Vec4T<SimdD>) on a packet of `stride` lanes
+/// in structure-of-arrays layout (geodesic_packet.h): y holds x^μ, k^μ (8 rows of `stride`
+/// doubles), a receives a^μ (4 rows), one SimdD of lanes at a time.
+template <class F>
+HWY_INLINE void packet_acceleration_simd(const F& accel, const double* y, double* a, size_t stride) {
+  for (size_t l = 0; l < stride; l += SimdD::lanes()) {
+    Vec4T<SimdD> x, k, acc;
+    for (int i = 0; i < 4; ++i) {
+      x[i] = SimdD::load(y + i * stride + l);
+      k[i] = SimdD::load(y + (4 + i) * stride + l);
+    }
+    accel(x, k, acc);
+    for (int i = 0; i < 4; ++i) acc[i].store(a + i * stride + l);
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#endif  // GEOVIS_SPACETIME_SIMD_H_

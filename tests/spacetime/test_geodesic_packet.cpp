@@ -1,0 +1,275 @@
+// The packet integrator (spacetime/geodesic_packet.h) against the scalar one (Metric::integrate,
+// CashKarp45, separable equations off), on every SIMD target this machine runs (Highway's
+// SupportedAndGeneratedTargets: AVX-512, AVX2, SSE4, scalar emulation), and SimdD's sine and
+// cosine (spacetime/simd.h) against fast_sincos.
+//
+// Bit identity is the expectation everywhere here: the packet's right-hand side is each metric's
+// own scalar geodesic_acceleration, called lane by lane (MetricKernel::of), or a template of the
+// same formula evaluated on SimdD, whose operations are those of the scalar code one by one;
+// the Runge–Kutta arithmetic is the scalar stepper's, operation for operation, without fused
+// multiply-adds. So states, step counts, rejections, right-hand-side evaluations, λ and stop
+// reasons must agree exactly; any difference is a bug, not round-off.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/test_geodesic_packet.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+// SimdD's sin/cos on a batch of arguments, compiled per target.
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+void simd_sincos(const double* x, double* s, double* c, size_t n) {
+  const size_t L = SimdD::lanes();
+  for (size_t i = 0; i + L <= n; i += L) {
+    SimdD sv, cv;
+    sincos_t(SimdD::load(x + i), sv, cv);
+    sv.store(s + i);
+    cv.store(c + i);
+  }
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <array>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "spacetime/fast_math.h"
+#include "spacetime/geodesic_packet.h"
+#include "spacetime/metric.h"
+#include "spacetime/metric_registry.h"
+
+namespace geovis {
+HWY_EXPORT(simd_sincos);
+}
+
+using namespace geovis;
+
+namespace {
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// Runs `body` once per SIMD target compiled in and supported here, with dynamic dispatch forced
+/// to it; restores the normal dispatch afterwards.
+template <class F>
+void for_every_target(F body) {
+  for (const int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    SCOPED_TRACE(hwy::TargetName(target));
+    body();
+  }
+  hwy::SetSupportedTargetsForTest(0);
+}
+
+/// What one ray did: its states after every accepted step, and its end.
+struct RayRecord {
+  std::vector<std::array<double, 16>> steps;  ///< (y1, dy1) of each accepted step
+  std::vector<std::array<double, 2>> lambdas;
+  double y[8] = {};
+  GeodesicResult res;
+  int stop_at = 0;  ///< the step callback stops the ray at this step (0: never)
+};
+
+StepAction record(RayRecord& r, const StepView& st) {
+  std::array<double, 16> s;
+  for (int i = 0; i < 8; ++i) {
+    s[i] = st.y1[i];
+    s[8 + i] = st.dy1[i];
+  }
+  r.steps.push_back(s);
+  r.lambdas.push_back({st.lambda0, st.lambda1});
+  return st.step_index == r.stop_at ? StepAction::Stop : StepAction::Continue;
+}
+
+/// Integrates every start state with the scalar integrator and with the packet integrator and
+/// expects the same steps, states and results to the bit.
+void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
+                                 const std::vector<std::array<double, 8>>& y0_all,
+                                 const std::vector<int>& stop_at = {}) {
+  // A ray on which the metric throws (HalilsoyWave: a Bessel function outside its domain) throws
+  // from the packet too; the others are compared.
+  std::vector<std::array<double, 8>> y0;
+  std::vector<int> stops;
+  for (size_t r = 0; r < y0_all.size(); ++r) {
+    const auto& ys = y0_all[r];
+    double y[8];
+    std::copy(ys.begin(), ys.end(), y);
+    try {
+      m.integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
+      y0.push_back(ys);
+      stops.push_back(r < stop_at.size() ? stop_at[r] : 0);
+    } catch (const std::exception& ex) {
+      bool given = false;
+      auto next = [&](int, double* yy) {
+        if (given) return false;
+        std::copy(ys.begin(), ys.end(), yy);
+        return given = true;
+      };
+      auto done = [](int, const double*, const GeodesicResult&) {};
+      EXPECT_THROW(m.integrate_packet(cfg, PacketRays{next, {}, done}), std::exception) << ex.what();
+    }
+  }
+  const size_t n = y0.size();
+  std::vector<RayRecord> scalar(n), packet(n);
+  for (size_t r = 0; r < n; ++r) {
+    scalar[r].stop_at = packet[r].stop_at = stops[r];
+    double y[8];
+    std::copy(y0[r].begin(), y0[r].end(), y);
+    auto cb = [&](const StepView& st) { return record(scalar[r], st); };
+    scalar[r].res = m.integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
+    std::copy(y, y + 8, scalar[r].y);
+  }
+  size_t next_ray = 0;
+  int lane_ray[kPacketLanes];
+  auto next = [&](int lane, double* y) {
+    if (next_ray == n) return false;
+    lane_ray[lane] = static_cast<int>(next_ray);
+    std::copy(y0[next_ray].begin(), y0[next_ray].end(), y);
+    ++next_ray;
+    return true;
+  };
+  auto on_step = [&](int lane, const StepView& st) { return record(packet[lane_ray[lane]], st); };
+  size_t finished = 0;
+  auto done = [&](int lane, const double* y, const GeodesicResult& res) {
+    RayRecord& r = packet[lane_ray[lane]];
+    std::copy(y, y + 8, r.y);
+    r.res = res;
+    ++finished;
+  };
+  m.integrate_packet(cfg, PacketRays{next, on_step, done});
+  ASSERT_EQ(finished, n);
+  for (size_t r = 0; r < n; ++r) {
+    SCOPED_TRACE("ray " + std::to_string(r));
+    const RayRecord &a = scalar[r], &b = packet[r];
+    EXPECT_EQ(stop_reason_name(b.res.reason), std::string(stop_reason_name(a.res.reason)));
+    EXPECT_EQ(b.res.steps, a.res.steps);
+    EXPECT_EQ(b.res.rejected, a.res.rejected);
+    EXPECT_EQ(b.res.rhs_evals, a.res.rhs_evals);
+    EXPECT_TRUE(same_bits(b.res.lambda, a.res.lambda)) << b.res.lambda << " vs " << a.res.lambda;
+    EXPECT_TRUE(same_bits(b.res.constraint_drift, a.res.constraint_drift));
+    EXPECT_TRUE(same_bits(b.res.escape_radius, a.res.escape_radius));
+    for (int i = 0; i < 8; ++i)
+      EXPECT_TRUE(same_bits(b.y[i], a.y[i])) << "y[" << i << "] " << b.y[i] << " vs " << a.y[i];
+    ASSERT_EQ(b.steps.size(), a.steps.size());
+    for (size_t s = 0; s < a.steps.size(); ++s) {
+      ASSERT_EQ(std::memcmp(a.steps[s].data(), b.steps[s].data(), sizeof a.steps[s]), 0) << "step " << s + 1;
+      ASSERT_EQ(std::memcmp(a.lambdas[s].data(), b.lambdas[s].data(), sizeof a.lambdas[s]), 0) << "step " << s + 1;
+    }
+  }
+}
+
+/// Start states: the sample position and a fan of null directions of the default tetrad.
+std::vector<std::array<double, 8>> fan(const Metric& m, int n) {
+  const Vec4 x = m.info().sample_pos;
+  const Tetrad e = m.natural_tetrad(x, TetradKind::Default);
+  std::vector<std::array<double, 8>> y;
+  for (int i = 0; i < n; ++i) {
+    // Directions spread over the sphere (golden-angle spiral).
+    const double z = 1.0 - (2.0 * i + 1.0) / n, rho = std::sqrt(1.0 - z * z), phi = 2.399963229728653 * i;
+    const Vec4 k = local_null_direction(e, Vec3{rho * std::cos(phi), rho * std::sin(phi), z});
+    y.push_back({x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]});
+  }
+  return y;
+}
+
+SolverConfig packet_config() {
+  SolverConfig cfg;
+  cfg.kind = SolverKind::CashKarp45;
+  cfg.separable = false;
+  cfg.eps_abs = 1e-6;
+  cfg.max_steps = 200;
+  cfg.lambda_max = 40.0;
+  cfg.escape_radius = 30.0;
+  return cfg;
+}
+
+class PacketEveryMetric : public ::testing::TestWithParam<std::string> {};
+
+std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
+  std::string s = info.param;
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return s;
+}
+
+}  // namespace
+
+// (a) Every metric of the registry: 11 rays (one full packet and a refill) from the sample
+// position, bit-identical to the scalar integrator on every target.
+TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
+  const auto m = make_metric(GetParam());
+  const auto y0 = fan(*m, 11);
+  for_every_target([&] { expect_packet_equals_scalar(*m, packet_config(), y0); });
+  EXPECT_GE(hwy::SupportedAndGeneratedTargets().size(), 2u) << "no SIMD target besides the scalar emulation";
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, PacketEveryMetric, ::testing::ValuesIn(metric_names()), test_name);
+
+// (b) Lane refill: many more rays than lanes, of very different lengths (captured within a few
+// steps, escaping, stopped by the callback at various steps, running to max_steps), each equal to
+// its scalar run.
+TEST(GeodesicPacket, RefilledLanesGiveEachRayItsScalarResult) {
+  const auto m = make_metric("Schwarzschild");
+  SolverConfig cfg = packet_config();
+  cfg.max_steps = 120;
+  cfg.lambda_max = 1e300;
+  cfg.escape_radius = 15.0;
+  cfg.capture_radius = 4.0;
+  const auto y0 = fan(*m, 37);
+  std::vector<int> stop_at(y0.size(), 0);
+  for (size_t i = 0; i < y0.size(); i += 5) stop_at[i] = 1 + static_cast<int>(i % 17);
+  for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0, stop_at); });
+}
+
+// Fixed step (no error control), λ_max clipping and a bounding box, on KerrBL's coordinate form.
+TEST(GeodesicPacket, FixedStepLambdaMaxAndBox) {
+  const auto m = make_metric("KerrBL");
+  SolverConfig cfg = packet_config();
+  cfg.step_ctrl = false;
+  cfg.step_size = 0.07;
+  cfg.lambda_max = 5.0;
+  cfg.box_ll = Vec4{{-1e9, 0, -1, -1e9}};
+  cfg.box_ur = Vec4{{1e9, 9.0, 4, 1e9}};
+  for_every_target([&] { expect_packet_equals_scalar(*m, cfg, fan(*m, 13)); });
+}
+
+TEST(GeodesicPacket, RejectsOtherSolvers) {
+  const auto m = make_metric("Minkowski");
+  SolverConfig cfg = packet_config();
+  cfg.kind = SolverKind::DormandPrince853;
+  auto next = [](int, double*) { return false; };
+  auto done = [](int, const double*, const GeodesicResult&) {};
+  EXPECT_THROW(m->integrate_packet(cfg, PacketRays{next, {}, done}), Error);
+}
+
+// SimdD's sincos_t is fast_sincos lane by lane, to the bit, on every target, including the
+// reduction's quadrants and the std::sin/std::cos route for large arguments and NaN.
+TEST(Simd, SinCosIsFastSinCosLaneByLane) {
+  std::vector<double> x;
+  for (int i = -2000; i < 2000; ++i) x.push_back(i * 0.0123456789);
+  for (double v : {0.0, -0.0, M_PI / 2, M_PI, 1e5, -2e6, 1e300, double(NAN), double(INFINITY)}) x.push_back(v);
+  while (x.size() % 8) x.push_back(0.5);
+  std::vector<double> s(x.size()), c(x.size());
+  for_every_target([&] {
+    HWY_DYNAMIC_DISPATCH(simd_sincos)(x.data(), s.data(), c.data(), x.size());
+    for (size_t i = 0; i < x.size(); ++i) {
+      double fs, fc;
+      fast_sincos(x[i], fs, fc);
+      ASSERT_TRUE(same_bits(s[i], fs) || (std::isnan(s[i]) && std::isnan(fs))) << x[i];
+      ASSERT_TRUE(same_bits(c[i], fc) || (std::isnan(c[i]) && std::isnan(fc))) << x[i];
+    }
+  });
+}
+
+#endif  // HWY_ONCE
