@@ -90,6 +90,19 @@ std::string pnm_comment(const std::string& path) {
   return {};
 }
 
+/// A header may claim any size (a damaged or hostile file: "+X 5444444444" in a Radiance header):
+/// refuse what no texture or data file of geovis needs before allocating for it, instead of
+/// running out of memory.
+constexpr long long kMaxImagePixels = 1LL << 28;  // 268 M pixels, e.g. 23 000 × 11 500
+constexpr int kMaxImageChannels = 64;
+void check_image_size(const std::string& path, long long width, long long height, long long channels) {
+  if (width * height > kMaxImagePixels || channels > kMaxImageChannels)
+    throw Error("cannot read image \"" + path + "\": its header claims " + std::to_string(width) + " x " +
+                std::to_string(height) + " pixels with " + std::to_string(channels) +
+                " channels, more than geovis reads (at most " + std::to_string(kMaxImagePixels) + " pixels and " +
+                std::to_string(kMaxImageChannels) + " channels; the file is damaged or not an image)");
+}
+
 /// Pixels in the type a file stores them in (or float).
 struct Pixels {
   OIIO::TypeDesc type = OIIO::TypeDesc::FLOAT;
@@ -127,6 +140,7 @@ DecodedImage decode_image(const std::string& path, bool as_stored, const std::ve
   d.height = spec.height;
   d.channels = spec.nchannels;
   if (d.width <= 0 || d.height <= 0 || d.channels <= 0) throw Error("cannot read image \"" + path + "\": empty image");
+  check_image_size(path, d.width, d.height, d.channels);
   d.pixels.type = as_stored ? spec.format : OIIO::TypeDesc::FLOAT;
   d.pixels.bytes.resize(size_t(d.width) * size_t(d.height) * size_t(d.channels) * d.pixels.type.size());
   if (!in->read_image(0, 0, 0, d.channels, d.pixels.type, d.pixels.bytes.data()))
@@ -335,6 +349,7 @@ ChannelImage read_channel_image(const std::string& path) {
   img.height = spec.height;
   const int nc = spec.nchannels;
   if (img.width <= 0 || img.height <= 0 || nc <= 0) throw Error("cannot read \"" + path + "\": empty image");
+  check_image_size(path, img.width, img.height, nc);
   img.names = spec.channelnames;
   img.names.resize(size_t(nc));
   img.pixels.resize(size_t(img.width) * img.height * nc);

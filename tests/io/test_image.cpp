@@ -114,6 +114,31 @@ TEST(Image, WriteErrorsNameTheFile) {
   EXPECT_EQ(d.count(), 0);
 }
 
+TEST(Image, HeaderClaimingAHugeImageIsAnErrorNotAnAllocation) {
+  // A Radiance header found by fuzz_files: 3 x 5 444 444 444 444 444 444 pixels (an allocation of
+  // tens of GB before any pixel is read). A clear error naming the file, before allocating.
+  TempDir d;
+  write_file_atomic(d.file("huge.hdr"), std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 3 +X 5444444444444444444\n") +
+                                            std::string(64, '\x98'));
+  try {
+    read_image(d.file("huge.hdr"));
+    FAIL();
+  } catch (const Error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("huge.hdr"), std::string::npos) << m;
+  }
+  // The same header with a claimed size just above the limit, as a PPM (binary P6 header only).
+  write_file_atomic(d.file("big.ppm"), "P6\n20000 20000\n255\n");
+  try {
+    read_image(d.file("big.ppm"));
+    FAIL();
+  } catch (const Error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("20000 x 20000"), std::string::npos) << m;
+    EXPECT_NE(m.find("more than geovis reads"), std::string::npos) << m;
+  }
+}
+
 TEST(Image, ReadErrorsNameTheFile) {
   TempDir d;
   try {
