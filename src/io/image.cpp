@@ -18,6 +18,7 @@
 #include <fstream>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <system_error>
 
 #include "core/error.h"
@@ -94,12 +95,15 @@ std::string pnm_comment(const std::string& path) {
 /// refuse what no texture or data file of geovis needs before allocating for it, instead of
 /// running out of memory.
 constexpr long long kMaxImagePixels = 1LL << 28;  // 268 M pixels, e.g. 23 000 × 11 500
+constexpr long long kMaxImageSide = 1LL << 17;    // 131 072: wider than any sky map (86 400 × 43 200)
 constexpr int kMaxImageChannels = 64;
 void check_image_size(const std::string& path, long long width, long long height, long long channels) {
-  if (width * height > kMaxImagePixels || channels > kMaxImageChannels)
+  if (width * height > kMaxImagePixels || width > kMaxImageSide || height > kMaxImageSide ||
+      channels > kMaxImageChannels)
     throw Error("cannot read image \"" + path + "\": its header claims " + std::to_string(width) + " x " +
                 std::to_string(height) + " pixels with " + std::to_string(channels) +
-                " channels, more than geovis reads (at most " + std::to_string(kMaxImagePixels) + " pixels and " +
+                " channels, more than geovis reads (at most " + std::to_string(kMaxImagePixels) + " pixels, " +
+                std::to_string(kMaxImageSide) + " on a side, and " +
                 std::to_string(kMaxImageChannels) + " channels; the file is damaged or not an image)");
 }
 
@@ -118,7 +122,7 @@ struct DecodedImage {
 /// Decodes every pixel of the file, or of `memory` (an encoded file; `path` then only names it
 /// and gives the format), as float or (`as_stored`) in the file's own pixel type. Throws Error
 /// naming the file.
-DecodedImage decode_image(const std::string& path, bool as_stored, const std::vector<unsigned char>* memory = nullptr) {
+DecodedImage decode_image_as_is(const std::string& path, bool as_stored, const std::vector<unsigned char>* memory) {
   const CodecOutputCapture quiet_codec;
   std::error_code ec;
   std::unique_ptr<OIIO::Filesystem::IOMemReader> reader;
@@ -152,6 +156,16 @@ DecodedImage decode_image(const std::string& path, bool as_stored, const std::ve
     d.description = pnm_comment(path);
   in->close();
   return d;
+}
+
+/// decode_image_as_is, with the codec running out of memory (a header whose sizes pass
+/// check_image_size but whose decoder needs more) reported as an Error naming the file.
+DecodedImage decode_image(const std::string& path, bool as_stored, const std::vector<unsigned char>* memory = nullptr) {
+  try {
+    return decode_image_as_is(path, as_stored, memory);
+  } catch (const std::bad_alloc&) {
+    throw Error("cannot read image \"" + path + "\": not enough memory to decode it (the file is damaged or too large)");
+  }
 }
 
 /// The pixel checksum appended to a description: "; pixels fnv1a64:<hex>" of the pixels as the
