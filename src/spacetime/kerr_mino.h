@@ -55,13 +55,64 @@ struct KerrMinoParams {
   double mass, a, r_break;  ///< r_break: the metric's horizon break radius
 };
 
+/// The coefficients of Carter's separated equations (file comment) on any number type T: double
+/// for one ray, SimdD (spacetime/simd.h) for a packet with one ray per lane, a dual number for the
+/// derivatives of the flow with respect to the ray's initial direction.
+template <class T>
+struct KerrMinoCoeffs {
+  T M, a, a2;      ///< mass and spin parameter of the hole
+  T E, L, Q, mu2;  ///< constants of motion
+  T c, K, A, B;    ///< c = a²E − aL, K = (L − aE)² + Q, A = a²(E² − μ²), B = Q + L² − A
+  /// a2, c, K, A and B from M, a, E, L, Q and μ².
+  void derive_polynomial() {
+    a2 = a * a;
+    c = a2 * E - a * L;
+    K = (L - a * E) * (L - a * E) + Q;
+    A = a2 * (E * E - mu2);
+    B = Q + L * L - A;
+  }
+};
+
+/// cond ? x : y for a per-ray condition that is a bool (one ray, any number type); a packet's
+/// per-lane condition is a mask and takes simd.h's select.
+template <class T>
+inline T select(bool cond, const T& x, const T& y) {
+  return cond ? x : y;
+}
+
+/// The right-hand side of the Mino-time system (file comment) for state y = (w, ζ, w', z', t, φ, λ),
+/// z = pole + ζ, on any number type T; `axis` (L == 0: a bool, or a lane mask) picks the form
+/// without 1/sin²θ. One formula for one ray (KerrMinoRHS), for packets and for dual numbers.
+template <class T, class Cond, class Pole>
+GEOVIS_HOT_INLINE void kerr_mino_rhs(const KerrMinoCoeffs<T>& k, const Cond& axis, const Pole& pole, const T* y,
+                                     T* dy) {
+  enum { W = 0, Z = 1, DW = 2, DZ = 3, TT = 4, PHI = 5, LAM = 6 };
+  const T w = y[W], z = pole + y[Z];
+  const T w2 = w * w, z2 = z * z;
+  const T D = 1.0 - 2.0 * k.M * w + k.a2 * w2;  // Δ/r²
+  const T P = k.E + k.c * w2;                   // P/r²
+  const T muK = k.mu2 + k.K * w2;
+  const T s2 = -y[Z] * (2.0 * pole + y[Z]);  // sin²θ = 1 − z² (PolarOffset::sin2)
+  // One division: 1/(w² D s²) gives 1/D, 1/w² and 1/sin²θ. On the axis branch sin²θ may vanish and
+  // 1/sin²θ multiplies L = 0: it is left out (the factor 1 is exact, so both branches keep their bits).
+  const T s2d = select(axis, T(1.0), s2);
+  const T inv = 1.0 / (w2 * D * s2d);
+  const T iD = inv * w2 * s2d, iw2 = inv * D * s2d;
+  const T is2 = select(axis, T(0.0), inv * w2 * D);
+  dy[TT] = (1.0 + k.a2 * w2) * P * iD * iw2 + k.a * k.L - k.a2 * k.E * s2;
+  dy[W] = y[DW];
+  dy[Z] = y[DZ];
+  dy[PHI] = k.a * P * iD - k.a * k.E + k.L * is2;
+  dy[LAM] = iw2 + k.a2 * z2;
+  dy[DW] = 2.0 * k.c * w * P + (k.M - k.a2 * w) * muK - k.K * w * D;
+  dy[DZ] = -(k.B + 2.0 * k.A * z2) * z;
+}
+
 /// The constants of one Kerr geodesic and the derived polynomial coefficients (file comment).
-struct KerrMinoConstants {
-  double M = 1, a = 0, a2 = 0;  ///< mass and spin parameter of the hole
-  double E = 0, L = 0, Q = 0, mu2 = 0;
-  double c = 0, K = 0, A = 0, B = 0;  ///< c = a²E − aL, K = (L − aE)² + Q, A = a²(E² − μ²), B = Q + L² − A
-  bool axis = false;                  ///< L == 0: the ray can pass through the polar axis
-  double sin2_floor = 1e-6;           ///< floor of sin²θ in the tolerance scales (KerrMinoSystem)
+struct KerrMinoConstants : KerrMinoCoeffs<double> {
+  KerrMinoConstants() : KerrMinoCoeffs<double>{1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0} {}
+  bool axis = false;         ///< L == 0: the ray can pass through the polar axis
+  double sin2_floor = 1e-6;  ///< floor of sin²θ in the tolerance scales (KerrMinoSystem)
 
   /// The potentials of the first integrals (file comment): (dw/dσ)² = W(w), (dz/dσ)² = Z(z).
   double W(double w) const {
@@ -167,11 +218,7 @@ struct KerrMinoConstants {
   }
 
   void derive() {
-    a2 = a * a;
-    c = a2 * E - a * L;
-    K = (L - a * E) * (L - a * E) + Q;
-    A = a2 * (E * E - mu2);
-    B = Q + L * L - A;
+    derive_polynomial();
     axis = L == 0.0;
     // (θ_min/2)² with sin²θ_min ≈ L²/(B + 2A) (first order in L² of Z = 0, Z_of_sin2), at most 1e-6.
     sin2_floor = axis || !(B + 2.0 * A > 0.0) ? 1e-6 : std::min(1e-6, 0.25 * L * L / (B + 2.0 * A));
@@ -209,34 +256,7 @@ struct KerrMinoRHS {
   const KerrMinoConstants& k;
   PolarOffset polar;
 
-  GEOVIS_HOT_INLINE void operator()(const double* y, double* dy) const {
-    const double w = y[W], z = polar.z(y[Z]);
-    const double w2 = w * w, z2 = z * z;
-    const double D = 1.0 - 2.0 * k.M * w + k.a2 * w2;  // Δ/r²
-    const double P = k.E + k.c * w2;                   // P/r²
-    const double muK = k.mu2 + k.K * w2;
-    const double s2 = polar.sin2(y[Z]);  // sin²θ
-    // One division: 1/(w² D s²) gives 1/D, 1/w² and 1/sin²θ.
-    double inv, iD, iw2, is2;
-    if (k.axis) {
-      inv = 1.0 / (w2 * D);
-      iD = inv * w2;
-      iw2 = inv * D;
-      is2 = 0.0;  // multiplies L = 0
-    } else {
-      inv = 1.0 / (w2 * D * s2);
-      iD = inv * w2 * s2;
-      iw2 = inv * D * s2;
-      is2 = inv * w2 * D;
-    }
-    dy[T] = (1.0 + k.a2 * w2) * P * iD * iw2 + k.a * k.L - k.a2 * k.E * s2;
-    dy[W] = y[DW];
-    dy[Z] = y[DZ];
-    dy[PHI] = k.a * P * iD - k.a * k.E + k.L * is2;
-    dy[LAM] = iw2 + k.a2 * z2;
-    dy[DW] = 2.0 * k.c * w * P + (k.M - k.a2 * w) * muK - k.K * w * D;
-    dy[DZ] = -(k.B + 2.0 * k.A * z2) * z;
-  }
+  GEOVIS_HOT_INLINE void operator()(const double* y, double* dy) const { kerr_mino_rhs(k, k.axis, polar.pole, y, dy); }
 };
 
 /// Branch of θ = offset + sign·acos z (file comment: passages through the polar axis).
