@@ -338,6 +338,11 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   // and straight rays need no integrator at all.
   packets_ = system_ == GeodesicSystem::Geodesic && cfg_.kind == SolverKind::CashKarp45 &&
              !(cfg_.separable && job.metric->has_separable_geodesics()) && !straight_;
+  if (job.reference_tracing) {
+    straight_ = packets_ = false;
+    cfg_.escape_radius = std::numeric_limits<double>::infinity();  // SolverConfig: no escape test
+    cfg_.capture_radius = 0.0;                                     // no capture test
+  }
 }
 
 TraceResult Tracer::trace_direction(const Vec3& d, TraceStats& stats) const { return trace_direction(d, stats, {}); }

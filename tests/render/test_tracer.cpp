@@ -1016,3 +1016,72 @@ TEST(Tracer, CapturedRaysKeepTheirPixelsInEveryFilter) {
 }
 
 }  // namespace geovis
+
+// ---- the reference path (RenderJob::reference_tracing) -------------------------------------------
+
+namespace geovis {
+
+TEST(Tracer, ReferenceTracingTurnsOffEveryShortcut) {
+  // The benchmark compares the fast path with RenderJob::reference_tracing (every ray alone
+  // through the integrator). That path must really be without the shortcuts: on the Kerr disk no
+  // ray stops as escaped or captured early (more steps; the same pixels, as the escape and capture
+  // tests above show), in Minkowski the rays are integrated instead of being one straight step.
+  {
+    BuildContext ctx;
+    Diagnostics diag;
+    ctx.diag = &diag;
+    RenderJob job = kerr_disk_job(ctx, 41);
+    job.filter = Filter::RGBpdz;
+    RenderOptions opt;
+    opt.progress = false;
+    opt.threads = 1;
+    const RenderResult fast = render(job, opt);
+    job.reference_tracing = true;
+    EXPECT_EQ(Tracer(job).escape_radius(), INFINITY);
+    EXPECT_EQ(Tracer(job).capture_radius(), 0.0);
+    EXPECT_FALSE(Tracer(job).packet_tracing());
+    const RenderResult ref = render(job, opt);
+    int escaped = 0, differ = 0;
+    for (size_t i = 0; i < ref.data.size(); ++i) escaped += ray_stop(ref.data[i]) == RayStop::Escaped;
+    for (int y = 0; y < 41; ++y)
+      for (int x = 0; x < 41; ++x)
+        for (int c = 0; c < 3; ++c) differ += fast.image.at(x, y)[c] != ref.image.at(x, y)[c];
+    EXPECT_EQ(escaped, 0);
+    EXPECT_EQ(differ, 0);
+    EXPECT_GT(ref.stats.steps, fast.stats.steps);
+  }
+  {
+    auto metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
+    BuildContext ctx;
+    Diagnostics diag;
+    ctx.diag = &diag;
+    ctx.metric = metric;
+    RenderJob job;
+    job.metric = metric;
+    job.observer.pos = Vec4{{0, -10, 0, 0}};
+    job.observer.e = identity_tetrad();
+    job.camera = std::make_shared<PinholeCamera>(Vec3{1, 0, 0}, Vec3{0, 0, 1}, 50, 40, 32, 24);
+    job.scene = make_sphere(ctx, {12, 0, 0}, 3);
+    job.background = Color{0, 0, 1};
+    job.solver.box_ll = Vec4{{-1e300, -20, -20, -20}};
+    job.solver.box_ur = Vec4{{1e300, 20, 20, 20}};
+    RenderOptions opt;
+    opt.progress = false;
+    opt.threads = 1;
+    const RenderResult fast = render(job, opt);
+    job.reference_tracing = true;
+    const RenderResult ref = render(job, opt);
+    EXPECT_EQ(fast.stats.steps, 32 * 24);
+    EXPECT_GT(ref.stats.steps, 2 * 32 * 24);
+    int differ = 0, lit_pixels = 0;
+    for (int y = 0; y < 24; ++y)
+      for (int x = 0; x < 32; ++x) {
+        lit_pixels += lit(ref.image, x, y);
+        for (int c = 0; c < 3; ++c) differ += fast.image.at(x, y)[c] != ref.image.at(x, y)[c];
+      }
+    EXPECT_EQ(differ, 0);
+    EXPECT_GT(lit_pixels, 20);
+  }
+}
+
+}  // namespace geovis
