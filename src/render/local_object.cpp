@@ -296,21 +296,26 @@ bool LocalObject::world_tube_test(const Segment& seg, double& s0, double& s1) co
   }
   const double ta = std::min(seg.x0[0], seg.x1[0]) - tube_margin_t_;
   const double tb = std::max(seg.x0[0], seg.x1[0]) + tube_margin_t_;
+  const Vec3 d = seg.p1 - seg.p0;
+  return visit_tube_boxes(seg.p0, Vec3{1.0 / d.x, 1.0 / d.y, 1.0 / d.z}, ta, tb,
+                          [](size_t, double, double) { return true; });
+}
+
+template <class Visit>
+bool LocalObject::visit_tube_boxes(const Vec3& p0, const Vec3& inv, double ta, double tb, Visit&& visit) const {
   // Boxes are ordered along the worldline (coordinate time increases with proper time); test
   // the chunk unions first, then the boxes of the chunks that pass.
-  const Vec3 d = seg.p1 - seg.p0;
-  const Vec3 inv{1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
   auto it = std::lower_bound(chunks_.begin(), chunks_.end(), ta, [](const TubeBox& b, double t) { return b.t1 < t; });
   for (; it != chunks_.end() && it->t0 <= tb; ++it) {
-    double t0 = 0, t1 = 1;
-    if (!segment_box(seg.p0, inv, it->box, t0, t1)) continue;
+    double c0 = 0, c1 = 1;
+    if (!segment_box(p0, inv, it->box, c0, c1)) continue;
     const size_t first = static_cast<size_t>(it - chunks_.begin()) * kChunk;
     const size_t last = std::min(tube_.size(), first + kChunk);
     for (size_t j = first; j < last; ++j) {
       const TubeBox& b = tube_[j];
       if (b.t1 < ta || b.t0 > tb) continue;
       double u0 = 0, u1 = 1;
-      if (segment_box(seg.p0, inv, b.box, u0, u1)) return true;
+      if (segment_box(p0, inv, b.box, u0, u1) && visit(j, u0, u1)) return true;
     }
   }
   return false;
@@ -424,36 +429,27 @@ bool LocalObject::intersect_per_box(const Segment& seg, Hit& hit) const {
       found = true;
     }
   };
-  auto it = std::lower_bound(chunks_.begin(), chunks_.end(), ta, [](const TubeBox& b, double t) { return b.t1 < t; });
-  for (; it != chunks_.end() && it->t0 <= tb; ++it) {
-    double c0 = 0, c1 = 1;
-    if (!segment_box(seg.p0, inv, it->box, c0, c1)) continue;
-    const size_t first = static_cast<size_t>(it - chunks_.begin()) * kChunk;
-    const size_t last = std::min(tube_.size(), first + kChunk);
-    for (size_t j = first; j < last; ++j) {
-      const TubeBox& b = tube_[j];
-      if (b.t1 < ta || b.t0 > tb) continue;
-      double u0 = 0, u1 = 1;
-      if (!segment_box(seg.p0, inv, b.box, u0, u1)) continue;
-      // ... at the box's times: the body's events inside the box lie within tube_margin_t_ of
-      // its worldline times [t0, t1].
-      if (dt != 0) {
-        const double ua = (b.t0 - tube_margin_t_ - seg.x0[0]) / dt, ub = (b.t1 + tube_margin_t_ - seg.x0[0]) / dt;
-        u0 = std::max(u0, std::min(ua, ub));
-        u1 = std::min(u1, std::max(ua, ub));
-      }
-      if (!(u1 > u0)) continue;
-      if (cu1 >= cu0 && u1 >= cu0 && u0 <= cu1 && same_frame(c_first, j)) {
-        cu0 = std::min(cu0, u0);
-        cu1 = std::max(cu1, u1);
-        continue;
-      }
-      test_piece(cu0, cu1);
-      cu0 = u0;
-      cu1 = u1;
-      c_first = j;
+  visit_tube_boxes(seg.p0, inv, ta, tb, [&](size_t j, double u0, double u1) {
+    // ... at the box's times: the body's events inside the box lie within tube_margin_t_ of
+    // its worldline times [t0, t1].
+    const TubeBox& b = tube_[j];
+    if (dt != 0) {
+      const double ua = (b.t0 - tube_margin_t_ - seg.x0[0]) / dt, ub = (b.t1 + tube_margin_t_ - seg.x0[0]) / dt;
+      u0 = std::max(u0, std::min(ua, ub));
+      u1 = std::min(u1, std::max(ua, ub));
     }
-  }
+    if (!(u1 > u0)) return false;
+    if (cu1 >= cu0 && u1 >= cu0 && u0 <= cu1 && same_frame(c_first, j)) {
+      cu0 = std::min(cu0, u0);
+      cu1 = std::max(cu1, u1);
+      return false;
+    }
+    test_piece(cu0, cu1);
+    cu0 = u0;
+    cu1 = u1;
+    c_first = j;
+    return false;
+  });
   test_piece(cu0, cu1);
   return found;
 }

@@ -119,6 +119,11 @@ class LocalObject final : public SceneObject {
   double pseudo_cartesian_radius(const LocalFrame::State& s) const;
   /// Coordinate-time spread of the body's simultaneous events at frame state s.
   double time_extent(const LocalFrame::State& s) const;
+  /// Calls visit(j, u0, u1) for each tube box j whose time interval meets [ta, tb] and which the
+  /// segment (start p0, inverse direction inv) passes for u ∈ [u0, u1], in worldline order, the
+  /// chunk unions tested first; stops at the first visit that returns true. Returns whether one did.
+  template <class Visit>
+  bool visit_tube_boxes(const Vec3& p0, const Vec3& inv, double ta, double tb, Visit&& visit) const;
   static constexpr size_t kChunk = 16;
   SceneObjectPtr child_;
   LocalFrame frame_;
