@@ -91,6 +91,23 @@ SceneObjectPtr make_sphere(BuildContext& ctx, const Vec3& c, double R) {
 
 bool lit(const Image& img, int x, int y) { return img.at(x, y)[0] > 0.5f; }
 
+/// A Minkowski job: observer at `obs` with the identity tetrad, `camera`, one sphere (centre c,
+/// radius R) and the bounding box |x^i| < box; ctx gets the metric (its diag is the caller's).
+RenderJob minkowski_sphere_job(BuildContext& ctx, const Vec4& obs, std::shared_ptr<const Camera> camera, const Vec3& c,
+                               double R, double box) {
+  auto metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
+  ctx.metric = metric;
+  RenderJob job;
+  job.metric = metric;
+  job.observer.pos = obs;
+  job.observer.e = identity_tetrad();
+  job.camera = std::move(camera);
+  job.scene = make_sphere(ctx, c, R);
+  job.solver.box_ll = Vec4{{-1e300, -box, -box, -box}};
+  job.solver.box_ur = Vec4{{1e300, box, box, box}};
+  return job;
+}
+
 // ---- Minkowski: straight rays render as integrated rays -------------------------------------------
 
 /// Minkowski without the inertial_cartesian capability: its rays go through the integrator (the
@@ -410,19 +427,13 @@ TEST(Tracer, SchwarzschildStaticSphereFreqShiftAndRefinedHit) {
 TEST(Tracer, MinkowskiJacobiParametersAreFlatSpace) {
   // In Minkowski the Jacobi equation d²J/dλ² = 0 with J(0) = 0, J'(0) = 1 gives J = λ·1, so
   // d+ = d- = λ, μ = λ²/(d+ d-) = 1, ellipticity 0; λ equals the Euclidean distance for k^0 = −1.
-  auto metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
   BuildContext ctx;
   Diagnostics diag;
   ctx.diag = &diag;
-  ctx.metric = metric;
-  RenderJob job;
-  job.metric = metric;
-  job.observer.e = identity_tetrad();
-  job.camera = std::make_shared<PinholeCamera>(Vec3{1, 0, 0}, Vec3{0, 0, 1}, 20, 20, 6, 6);
-  job.scene = make_sphere(ctx, Vec3{12, 0, 0}, 4);
+  RenderJob job = minkowski_sphere_job(ctx, Vec4{{0, 0, 0, 0}},
+                                       std::make_shared<PinholeCamera>(Vec3{1, 0, 0}, Vec3{0, 0, 1}, 20, 20, 6, 6),
+                                       Vec3{12, 0, 0}, 4, 100);
   job.filter = Filter::RGBjac;
-  job.solver.box_ll = Vec4{{-1e300, -100, -100, -100}};
-  job.solver.box_ur = Vec4{{1e300, 100, 100, 100}};
   RenderOptions opt;
   opt.progress = false;
   const RenderResult res = render(job, opt);
@@ -1051,20 +1062,13 @@ TEST(Tracer, ReferenceTracingTurnsOffEveryShortcut) {
     EXPECT_GT(ref.stats.steps, fast.stats.steps);
   }
   {
-    auto metric = std::shared_ptr<const Metric>(make_metric("Minkowski"));
     BuildContext ctx;
     Diagnostics diag;
     ctx.diag = &diag;
-    ctx.metric = metric;
-    RenderJob job;
-    job.metric = metric;
-    job.observer.pos = Vec4{{0, -10, 0, 0}};
-    job.observer.e = identity_tetrad();
-    job.camera = std::make_shared<PinholeCamera>(Vec3{1, 0, 0}, Vec3{0, 0, 1}, 50, 40, 32, 24);
-    job.scene = make_sphere(ctx, {12, 0, 0}, 3);
+    RenderJob job = minkowski_sphere_job(ctx, Vec4{{0, -10, 0, 0}},
+                                         std::make_shared<PinholeCamera>(Vec3{1, 0, 0}, Vec3{0, 0, 1}, 50, 40, 32, 24),
+                                         Vec3{12, 0, 0}, 3, 20);
     job.background = Color{0, 0, 1};
-    job.solver.box_ll = Vec4{{-1e300, -20, -20, -20}};
-    job.solver.box_ur = Vec4{{1e300, 20, 20, 20}};
     RenderOptions opt;
     opt.progress = false;
     opt.threads = 1;
