@@ -142,7 +142,14 @@ void render_tiles(const RenderJob& job, const RenderOptions& opt, TileSchedule& 
   const bool centre_in_samples = n % 2 == 1;
 
   auto worker = [&](int tid) {
-    TraceStats& st = stats[size_t(tid)];
+    // Counted on the worker's own stack and stored once at the end: the threads' entries of
+    // `stats` share a cache line, and writing them per ray would bounce it between the cores.
+    TraceStats st;
+    struct StoreOnExit {
+      TraceStats& out;
+      const TraceStats& in;
+      ~StoreOnExit() { out = in; }
+    } store{stats[size_t(tid)], st};
     std::vector<PixelSample> samples;  // a tile's samples and their colours (packet tracing)
     std::vector<Color> colors;
     try {
