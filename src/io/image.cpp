@@ -130,7 +130,7 @@ StoredImage decode_as_is(const std::string& path, const Bytes& file) {
     return codec::decode_tiff(path, file);
   if (starts_with(file, "v/1\x01"sv)) return codec::decode_exr(path, file);
   if (starts_with(file, "#?"sv)) return codec::decode_hdr(path, file);
-  if (file.size() >= 2 && file[0] == 'P' && file[1] >= '1' && file[1] <= '7') return codec::decode_pnm(path, file);
+  if (file.size() >= 2 && file[0] == 'P' && file[1] >= '1' && file[1] <= '6') return codec::decode_pnm(path, file);
   const std::string ext = lower_extension(path);
   if (is_pnm(ext)) return codec::decode_pnm(path, file);
   if (ext == ".hdr" || ext == ".rgbe" || ext == ".pic") return codec::decode_hdr(path, file);
@@ -161,33 +161,38 @@ constexpr std::string_view kPixelsTag = "; pixels ";
 
 std::string checksum(const Bytes& samples) { return fnv1a64_text(fnv1a64(samples.data(), samples.size())); }
 
-/// The samples of `s` as float: integer codes scaled to [0, 1] by multiplying with 1/max (the
+/// Sample i of `bytes` as float: integer codes scaled to [0, 1] by multiplying with 1/max (the
 /// conversion the recorded example-picture hashes were made with; tests/cli/test_examples.cpp).
-std::vector<float> float_samples(const StoredImage& s) {
-  const size_t n = s.bytes.size() / codec::sample_size(s.sample);
-  std::vector<float> out(n);
-  const unsigned char* b = s.bytes.data();
-  switch (s.sample) {
-    case Sample::u8:
-      for (size_t i = 0; i < n; ++i) out[i] = float(b[i]) * (1.0f / 255.0f);
-      break;
-    case Sample::u16:
-      for (size_t i = 0; i < n; ++i) {
-        std::uint16_t v;
-        std::memcpy(&v, b + 2 * i, 2);
-        out[i] = float(v) * (1.0f / 65535.0f);
-      }
-      break;
-    case Sample::f16:
-      for (size_t i = 0; i < n; ++i) {
-        std::uint16_t v;
-        std::memcpy(&v, b + 2 * i, 2);
-        out[i] = float(Imath::half(Imath::half::FromBits, v));
-      }
-      break;
-    case Sample::f32: std::memcpy(out.data(), b, n * 4); break;
+template <Sample S>
+float sample_value(const unsigned char* bytes, size_t i) {
+  if constexpr (S == Sample::u8) {
+    return float(bytes[i]) * (1.0f / 255.0f);
+  } else if constexpr (S == Sample::f32) {
+    float v;
+    std::memcpy(&v, bytes + 4 * i, 4);
+    return v;
+  } else {
+    std::uint16_t v;
+    std::memcpy(&v, bytes + 2 * i, 2);
+    if constexpr (S == Sample::u16) return float(v) * (1.0f / 65535.0f);
+    return float(Imath::half(Imath::half::FromBits, v));
   }
-  return out;
+}
+
+/// The stored pixels as float RGB: grey (1 or 2 channels) is replicated, alpha and extra channels
+/// are dropped.
+template <Sample S>
+void to_rgb(const StoredImage& d, Image& img) {
+  const size_t nc = size_t(d.channels);
+  const unsigned char* b = d.bytes.data();
+  for (size_t i = 0; i < size_t(d.width) * size_t(d.height); ++i) {
+    float* o = &img.pixels[i * 3];
+    if (nc < 3) {
+      o[0] = o[1] = o[2] = sample_value<S>(b, i * nc);
+    } else {
+      for (size_t c = 0; c < 3; ++c) o[c] = sample_value<S>(b, i * nc + c);
+    }
+  }
 }
 
 bool is_jpeg(const std::string& ext) { return ext == ".jpg" || ext == ".jpeg"; }
@@ -247,20 +252,12 @@ Bytes encode_image(const std::string& path, const std::string& ext, const Image&
 
 Image read_image(const std::string& path) {
   const StoredImage d = decode_file(path);
-  const std::vector<float> samples = float_samples(d);
-  // Grey (1 or 2 channels) is replicated to RGB; alpha and extra channels are dropped.
   Image img(d.width, d.height, 3);
-  const size_t nc = size_t(d.channels);
-  for (size_t i = 0; i < size_t(d.width) * size_t(d.height); ++i) {
-    const float* s = &samples[i * nc];
-    float* o = &img.pixels[i * 3];
-    if (nc < 3) {
-      o[0] = o[1] = o[2] = s[0];
-    } else {
-      o[0] = s[0];
-      o[1] = s[1];
-      o[2] = s[2];
-    }
+  switch (d.sample) {
+    case Sample::u8: to_rgb<Sample::u8>(d, img); break;
+    case Sample::u16: to_rgb<Sample::u16>(d, img); break;
+    case Sample::f16: to_rgb<Sample::f16>(d, img); break;
+    case Sample::f32: to_rgb<Sample::f32>(d, img); break;
   }
   return img;
 }

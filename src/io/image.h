@@ -19,7 +19,7 @@ struct Image {
   const float* at(int x, int y) const { return &pixels[(size_t(y) * width + x) * channels]; }
 };
 
-/// Reads PNG, TIFF, JPEG, OpenEXR, PBM/PGM/PPM/PAM and Radiance HDR (recognised by content),
+/// Reads PNG, TIFF, JPEG, OpenEXR, PBM/PGM/PPM and Radiance HDR (recognised by content),
 /// converted to float RGB (grey is replicated, alpha dropped). Throws Error naming the file when it cannot be read
 /// (one line: the codec's own messages are kept off the terminal).
 Image read_image(const std::string& path);

@@ -1,4 +1,4 @@
-// PBM/PGM/PPM/PAM through Netpbm's libnetpbm (io/image_codecs.h), on FILE streams over memory
+// PBM/PGM/PPM through Netpbm's libnetpbm (io/image_codecs.h), on FILE streams over memory
 // (fmemopen, open_memstream). Netpbm reports errors through pm_error, which calls our message
 // hook and then longjmps to the buffer given to pm_setjmpbuf. Both are process-wide, so one mutex
 // serialises every use of the library; between the setjmp and the library calls nothing with a
@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstdint>
 #include <csetjmp>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -56,6 +57,10 @@ struct NetpbmSession {
   }
 };
 
+/// The size of struct pam up to tuple_type, the part geovis uses (Netpbm's PAM_STRUCT_SIZE(tuple_type),
+/// written with offsetof: the macro takes a member of a null pointer, which UBSan reports).
+constexpr int kPamSize = int(offsetof(struct pam, tuple_type) + sizeof(pam::tuple_type));
+
 /// The first comment line of a PNM header, "" when there is none.
 std::string header_comment(const Bytes& file) {
   const auto eol = std::find(file.begin(), file.end(), '\n');
@@ -69,6 +74,10 @@ std::string header_comment(const Bytes& file) {
 }  // namespace
 
 StoredImage decode_pnm(const std::string& path, const Bytes& file) {
+  // PBM, PGM and PPM (P1 to P6). Not PAM (P7): Netpbm's PAM header parser loses memory when it
+  // fails (it expects the process to exit), and geovis never read PAM.
+  if (file.size() < 2 || file[0] != 'P' || file[1] < '1' || file[1] > '6')
+    fail_read(path, "not a PBM, PGM or PPM file");
   NetpbmSession s;
   StoredImage img;
   struct pam pam {};
@@ -77,7 +86,7 @@ StoredImage decode_pnm(const std::string& path, const Bytes& file) {
   if (!s.file) fail_read(path, std::strerror(errno));
   if (setjmp(jump)) fail_read(path, netpbm_error[0] ? netpbm_error : "not a PNM file");
   pm_setjmpbuf(&jump);
-  pnm_readpaminit(s.file, &pam, PAM_STRUCT_SIZE(tuple_type));
+  pnm_readpaminit(s.file, &pam, kPamSize);
   // Samples of 8 or 16 bits as stored; other maximum values (PBM's 1, PGM's 15, ...) as float in [0, 1].
   const Sample kind = pam.maxval == 255 ? Sample::u8 : (pam.maxval == 65535 ? Sample::u16 : Sample::f32);
   img.allocate(path, pam.width, pam.height, pam.depth, kind);
@@ -113,7 +122,7 @@ Bytes encode_pnm(const std::string& path, const StoredImage& img) {
   if (setjmp(jump)) fail_write(path, netpbm_error[0] ? netpbm_error : "the image could not be encoded");
   pm_setjmpbuf(&jump);
   pam.size = sizeof pam;
-  pam.len = PAM_STRUCT_SIZE(tuple_type);
+  pam.len = kPamSize;
   pam.file = s.file;
   pam.format = img.channels == 3 ? RPPM_FORMAT : RPGM_FORMAT;
   pam.plainformat = 0;

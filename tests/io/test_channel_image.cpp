@@ -107,7 +107,9 @@ TEST(DrawText, DrawsGlyphsInTheGivenColour) {
   for (int y = 0; y < 30; ++y)
     for (int x = 0; x < 120; ++x) {
       (x < 60 ? left : rightside) += centred.at(x, y)[0];
-      if (x < 40 || x > 80) EXPECT_EQ(centred.at(x, y)[0], 0.f) << x << " " << y;
+      if (x < 40 || x > 80) {
+        EXPECT_EQ(centred.at(x, y)[0], 0.f) << x << " " << y;
+      }
     }
   EXPECT_GT(left, 0);
   EXPECT_NEAR(left / rightside, 1.0, 0.2);
