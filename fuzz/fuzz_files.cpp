@@ -1,5 +1,5 @@
 // libFuzzer target over the readers of files geovis takes from users: texture images (io/image.h
-// read_image, OpenImageIO's PNG, TIFF, JPEG, PPM, EXR and HDR readers) and the camera filters'
+// read_image: the PNG, TIFF, JPEG, PPM, EXR and HDR codecs of io/image_codecs.h) and the camera filters'
 // data files (render/data_files.h decode_filter_data: .pdz, .jac, .pt, .dat). The first byte picks
 // the reader, the rest is the file. A geovis::Error is the expected outcome for a malformed file; a
 // crash, a sanitizer report or an exception of another type is a bug.
@@ -23,8 +23,8 @@ const geovis::Filter kDataFilters[] = {geovis::Filter::RGBpdz, geovis::Filter::R
                                        geovis::Filter::RGBIntersec};
 constexpr int kDataReaders = sizeof kDataFilters / sizeof kDataFilters[0];
 
-// OpenImageIO reads files by name (the format follows the extension): one file per reader in
-// the temporary folder, rewritten for each input.
+// read_image reads files by name (the extension picks PNM or HDR when the content has no
+// signature): one file per reader in the temporary folder, rewritten for each input.
 std::string temp_image(int reader) {
   const char* tmp = std::getenv("TMPDIR");
   return std::string(tmp && *tmp ? tmp : "/tmp") + "/geovis_fuzz_files_" + std::to_string(::getpid()) +

@@ -7,7 +7,9 @@ cd "$(dirname "$0")/.."
 PACKAGES=(
   g++ cmake ninja-build pkg-config git
   guile-3.0-dev            # the Scheme scene language
-  libopenimageio-dev       # image input/output
+  libpng-dev libtiff-dev libjpeg62-turbo-dev libopenexr-dev  # image files: PNG, TIFF, JPEG, OpenEXR
+  libnetpbm-dev libstb-dev # image files: PBM/PGM/PPM/PAM (Netpbm), Radiance HDR (stb_image)
+  libfreetype-dev          # labels of geovis post --colorbar
   libcli11-dev             # command line
   nlohmann-json3-dev       # JSON output
   libtinyobjloader-dev     # Wavefront OBJ meshes
@@ -17,7 +19,7 @@ PACKAGES=(
   clang libclang-rt-14-dev # the fuzz_smoke test: libFuzzer, AddressSanitizer, UndefinedBehaviorSanitizer
   libopenmpi-dev openmpi-bin  # rendering on several MPI ranks (mpirun; optional)
   fonts-dejavu-core        # labels of geovis post --colorbar
-  libtinyexr-dev           # tests: an OpenEXR reader independent of OpenImageIO for the data files
+  libtinyexr-dev           # tests: an OpenEXR reader independent of the OpenEXR library, for the data files
   libcpp-httplib-dev       # geovis view: the local HTTP server
   libhwy-dev               # Google Highway: SIMD packets of rays with runtime dispatch
   chromium                 # the viewer's browser tests (headless, driven by Playwright)

@@ -1,94 +1,43 @@
-// Image files through OpenImageIO (io/image.h). Writes encode the whole file into memory first and
-// write the bytes through io/atomic_file.h, so every write error is seen (OpenImageIO's PNG writer
-// does not report a failed write to disk) and a failed write never touches the destination.
+// Image files (io/image.h): the format of a file read is recognised from its first bytes (the
+// extension only decides between the formats without a signature), the codecs are in
+// io/image_codecs.h. Writes encode the whole file into memory first and write the bytes through
+// io/atomic_file.h, so every write error is seen and a failed write never touches the destination.
 #include "io/image.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
-#include <sys/mman.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <memory>
-#include <mutex>
 #include <new>
 #include <system_error>
+
+#include <Imath/half.h>
 
 #include "core/error.h"
 #include "core/hash.h"
 #include "io/atomic_file.h"
+#include "io/image_codecs.h"
 
 namespace geovis {
 
 namespace fs = std::filesystem;
 
-namespace {
+namespace codec {
 
-std::string lower_extension(const std::string& path) { return to_lower(fs::path(path).extension().string()); }
-
-/// Redirects stderr (fd 2) into an anonymous memory file while a codec runs: libpng and libjpeg
-/// print their own messages there ("libpng error: IDAT: ..."), which would appear raw before our
-/// error. The captured text is dropped; the codec's error reaches the user through OIIO's
-/// geterror() inside one geovis error. Serialised by a mutex (fd 2 is process-wide).
-class CodecOutputCapture {
- public:
-  CodecOutputCapture() : lock_(mutex()) {
-    std::fflush(stderr);
-    const int mem = ::memfd_create("geovis-codec-output", MFD_CLOEXEC);
-    if (mem < 0) return;  // no capture: the codec's lines stay visible, nothing else changes
-    saved_ = ::dup(2);
-    if (saved_ < 0 || ::dup2(mem, 2) < 0) {
-      if (saved_ >= 0) ::close(saved_);
-      saved_ = -1;
-    }
-    ::close(mem);
+size_t sample_size(Sample s) {
+  switch (s) {
+    case Sample::u8: return 1;
+    case Sample::u16:
+    case Sample::f16: return 2;
+    case Sample::f32: return 4;
   }
-  ~CodecOutputCapture() {
-    if (saved_ < 0) return;
-    std::fflush(stderr);
-    ::dup2(saved_, 2);
-    ::close(saved_);
-  }
-  CodecOutputCapture(const CodecOutputCapture&) = delete;
-  CodecOutputCapture& operator=(const CodecOutputCapture&) = delete;
-
- private:
-  static std::mutex& mutex() {
-    static std::mutex m;
-    return m;
-  }
-  std::lock_guard<std::mutex> lock_;
-  int saved_ = -1;
-};
-
-/// OpenImageIO's error text as one line: its messages are several lines (the codec's message,
-/// then OIIO's own summary); the first says what went wrong.
-std::string first_line(const std::string& text, const std::string& fallback) {
-  std::string line = text.substr(0, text.find('\n'));
-  while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
-  return line.empty() ? fallback : line;
-}
-
-bool is_pnm(const std::string& ext) { return ext == ".ppm" || ext == ".pgm" || ext == ".pnm"; }
-
-/// The PNM header comment ("P6\n# text\n..."): PNM has no metadata, only header comments, which
-/// OpenImageIO neither writes nor reports. Returns the first comment, "" when there is none.
-std::string pnm_comment(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::string line;
-  if (!std::getline(f, line) || line.size() < 2 || line[0] != 'P') return {};
-  while (std::getline(f, line) && !line.empty() && line[0] == '#') {
-    const size_t b = line.find_first_not_of(" ", 1);
-    if (b != std::string::npos) return line.substr(b);
-  }
-  return {};
+  return 4;
 }
 
 /// A header may claim any size (a damaged or hostile file: "+X 5444444444" in a Radiance header):
@@ -97,74 +46,112 @@ std::string pnm_comment(const std::string& path) {
 constexpr long long kMaxImagePixels = 1LL << 28;  // 268 M pixels, e.g. 23 000 × 11 500
 constexpr long long kMaxImageSide = 1LL << 17;    // 131 072: wider than any sky map (86 400 × 43 200)
 constexpr int kMaxImageChannels = 64;
+
 void check_image_size(const std::string& path, long long width, long long height, long long channels) {
-  if (width * height > kMaxImagePixels || width > kMaxImageSide || height > kMaxImageSide ||
+  if (width <= 0 || height <= 0 || channels <= 0) fail_read(path, "empty image");
+  if (width > kMaxImageSide || height > kMaxImageSide || width * height > kMaxImagePixels ||
       channels > kMaxImageChannels)
-    throw Error("cannot read image \"" + path + "\": its header claims " + std::to_string(width) + " x " +
-                std::to_string(height) + " pixels with " + std::to_string(channels) +
-                " channels, more than geovis reads (at most " + std::to_string(kMaxImagePixels) + " pixels, " +
-                std::to_string(kMaxImageSide) + " on a side, and " +
-                std::to_string(kMaxImageChannels) + " channels; the file is damaged or not an image)");
+    fail_read(path, "its header claims " + std::to_string(width) + " x " + std::to_string(height) + " pixels with " +
+                        std::to_string(channels) + " channels, more than geovis reads (at most " +
+                        std::to_string(kMaxImagePixels) + " pixels, " + std::to_string(kMaxImageSide) +
+                        " on a side, and " + std::to_string(kMaxImageChannels) +
+                        " channels; the file is damaged or not an image)");
 }
 
-/// Pixels in the type a file stores them in (or float).
-struct Pixels {
-  OIIO::TypeDesc type = OIIO::TypeDesc::FLOAT;
-  std::vector<unsigned char> bytes;
-};
+void StoredImage::allocate(const std::string& path, long long w, long long h, long long c, Sample s) {
+  check_image_size(path, w, h, c);
+  width = int(w);
+  height = int(h);
+  channels = int(c);
+  sample = s;
+  bytes.assign(size_t(w) * size_t(h) * size_t(c) * sample_size(s), 0);
+}
 
-struct DecodedImage {
-  int width = 0, height = 0, channels = 0;
-  Pixels pixels;
-  std::string description;
-};
+void fail_read(const std::string& path, const std::string& why) {
+  throw Error("cannot read image \"" + path + "\": " + why);
+}
 
-/// Decodes every pixel of the file, or of `memory` (an encoded file; `path` then only names it
-/// and gives the format), as float or (`as_stored`) in the file's own pixel type. Throws Error
-/// naming the file.
-DecodedImage decode_image_as_is(const std::string& path, bool as_stored, const std::vector<unsigned char>* memory) {
-  const CodecOutputCapture quiet_codec;
-  std::error_code ec;
-  std::unique_ptr<OIIO::Filesystem::IOMemReader> reader;
-  OIIO::ImageSpec config;
-  if (memory) {
-    reader = std::make_unique<OIIO::Filesystem::IOMemReader>(memory->data(), memory->size());
-    void* proxy = reader.get();
-    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-  } else {
-    if (!fs::exists(path, ec)) throw Error("cannot read image \"" + path + "\": no such file");
-    if (fs::is_regular_file(path, ec) && fs::file_size(path, ec) == 0)
-      throw Error("cannot read image \"" + path + "\": the file is empty");
+void fail_write(const std::string& path, const std::string& why) {
+  throw Error("cannot write \"" + path + "\": " + why);
+}
+
+}  // namespace codec
+
+namespace {
+
+using codec::Bytes;
+using codec::Sample;
+using codec::StoredImage;
+
+std::string lower_extension(const std::string& path) { return to_lower(fs::path(path).extension().string()); }
+
+bool is_pnm(const std::string& ext) { return ext == ".ppm" || ext == ".pgm" || ext == ".pnm" || ext == ".pbm"; }
+
+/// The whole file. Throws Error naming the file and the OS reason.
+Bytes read_file(const std::string& path, const std::string& what) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    const int err = errno;
+    throw Error("cannot read " + what + " \"" + path +
+                "\": " + (err == ENOENT ? std::string("no such file") : std::strerror(err)));
   }
-  auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) throw Error("cannot read image \"" + path + "\": " + first_line(OIIO::geterror(), "not an image file"));
-  const OIIO::ImageSpec& spec = in->spec();
-  DecodedImage d;
-  d.width = spec.width;
-  d.height = spec.height;
-  d.channels = spec.nchannels;
-  if (d.width <= 0 || d.height <= 0 || d.channels <= 0) throw Error("cannot read image \"" + path + "\": empty image");
-  check_image_size(path, d.width, d.height, d.channels);
-  d.pixels.type = as_stored ? spec.format : OIIO::TypeDesc::FLOAT;
-  d.pixels.bytes.resize(size_t(d.width) * size_t(d.height) * size_t(d.channels) * d.pixels.type.size());
-  if (!in->read_image(0, 0, 0, d.channels, d.pixels.type, d.pixels.bytes.data()))
-    throw Error("cannot read image \"" + path + "\": " + first_line(in->geterror(), "read error") +
-                " (the file is truncated or damaged)");
-  if (!is_pnm(lower_extension(path)))
-    d.description = spec.get_string_attribute("ImageDescription");
-  else if (!memory)
-    d.description = pnm_comment(path);
-  in->close();
-  return d;
+  struct Close {
+    int fd;
+    ~Close() { ::close(fd); }
+  } close_fd{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))
+    throw Error("cannot read " + what + " \"" + path + "\": not a regular file");
+  if (st.st_size == 0) throw Error("cannot read " + what + " \"" + path + "\": the file is empty");
+  Bytes bytes(size_t(st.st_size));
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw Error("cannot read " + what + " \"" + path + "\": " + std::strerror(errno));
+    if (n == 0) break;  // the file shrank while being read
+    done += size_t(n);
+  }
+  bytes.resize(done);
+  return bytes;
 }
 
-/// decode_image_as_is, with the codec running out of memory (a header whose sizes pass
+bool starts_with(const Bytes& b, std::string_view magic) {
+  return b.size() >= magic.size() && std::memcmp(b.data(), magic.data(), magic.size()) == 0;
+}
+
+/// Decodes an encoded file by its signature (PNM and Radiance files are also known by extension).
+StoredImage decode_as_is(const std::string& path, const Bytes& file) {
+  using namespace std::string_view_literals;
+  if (starts_with(file, "\x89PNG\r\n\x1a\n"sv)) return codec::decode_png(path, file);
+  if (starts_with(file, "\xff\xd8\xff"sv)) return codec::decode_jpeg(path, file);
+  if (starts_with(file, "II*"sv) || starts_with(file, "MM\0*"sv) || starts_with(file, "II+"sv) ||
+      starts_with(file, "MM\0+"sv))
+    return codec::decode_tiff(path, file);
+  if (starts_with(file, "v/1\x01"sv)) return codec::decode_exr(path, file);
+  if (starts_with(file, "#?"sv)) return codec::decode_hdr(path, file);
+  if (file.size() >= 2 && file[0] == 'P' && file[1] >= '1' && file[1] <= '6') return codec::decode_pnm(path, file);
+  const std::string ext = lower_extension(path);
+  if (is_pnm(ext)) return codec::decode_pnm(path, file);
+  if (ext == ".hdr" || ext == ".rgbe" || ext == ".pic") return codec::decode_hdr(path, file);
+  codec::fail_read(path, "not an image file (PNG, TIFF, JPEG, OpenEXR, PNM or Radiance HDR)");
+}
+
+/// decode_as_is, with the codec running out of memory (a header whose sizes pass
 /// check_image_size but whose decoder needs more) reported as an Error naming the file.
-DecodedImage decode_image(const std::string& path, bool as_stored, const std::vector<unsigned char>* memory = nullptr) {
+StoredImage decode(const std::string& path, const Bytes& file) {
   try {
-    return decode_image_as_is(path, as_stored, memory);
+    return decode_as_is(path, file);
   } catch (const std::bad_alloc&) {
-    throw Error("cannot read image \"" + path + "\": not enough memory to decode it (the file is damaged or too large)");
+    codec::fail_read(path, "not enough memory to decode it (the file is damaged or too large)");
+  }
+}
+
+StoredImage decode_file(const std::string& path) {
+  try {
+    return decode(path, read_file(path, "image"));
+  } catch (const std::bad_alloc&) {
+    codec::fail_read(path, "not enough memory to read it");
   }
 }
 
@@ -172,61 +159,74 @@ DecodedImage decode_image(const std::string& path, bool as_stored, const std::ve
 /// file stores them.
 constexpr std::string_view kPixelsTag = "; pixels ";
 
-std::string checksum(const Pixels& p) { return fnv1a64_text(fnv1a64(p.bytes.data(), p.bytes.size())); }
+std::string checksum(const Bytes& samples) { return fnv1a64_text(fnv1a64(samples.data(), samples.size())); }
+
+/// Sample i of `bytes` as float: integer codes scaled to [0, 1] by multiplying with 1/max (the
+/// conversion the recorded example-picture hashes were made with; tests/cli/test_examples.cpp).
+template <Sample S>
+float sample_value(const unsigned char* bytes, size_t i) {
+  if constexpr (S == Sample::u8) {
+    return float(bytes[i]) * (1.0f / 255.0f);
+  } else if constexpr (S == Sample::f32) {
+    float v;
+    std::memcpy(&v, bytes + 4 * i, 4);
+    return v;
+  } else {
+    std::uint16_t v;
+    std::memcpy(&v, bytes + 2 * i, 2);
+    if constexpr (S == Sample::u16) return float(v) * (1.0f / 65535.0f);
+    return float(Imath::half(Imath::half::FromBits, v));
+  }
+}
+
+/// The stored pixels as float RGB: grey (1 or 2 channels) is replicated, alpha and extra channels
+/// are dropped.
+template <Sample S>
+void to_rgb(const StoredImage& d, Image& img) {
+  const size_t nc = size_t(d.channels);
+  const unsigned char* b = d.bytes.data();
+  for (size_t i = 0; i < size_t(d.width) * size_t(d.height); ++i) {
+    float* o = &img.pixels[i * 3];
+    if (nc < 3) {
+      o[0] = o[1] = o[2] = sample_value<S>(b, i * nc);
+    } else {
+      for (size_t c = 0; c < 3; ++c) o[c] = sample_value<S>(b, i * nc + c);
+    }
+  }
+}
+
+bool is_jpeg(const std::string& ext) { return ext == ".jpg" || ext == ".jpeg"; }
 
 /// The pixels as the file stores them: EXR keeps linear floats (half), the integer formats are
 /// clamped to [0,1] and quantised to the nearest code (JPEG is always 8 bit).
-Pixels stored_pixels(const Image& img, const std::string& ext, int bits) {
-  const bool jpeg = ext == ".jpg" || ext == ".jpeg";
-  Pixels p;
-  p.type =
-      ext == ".exr" ? OIIO::TypeDesc::HALF : ((bits == 16 && !jpeg) ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+StoredImage stored_pixels(const Image& img, const std::string& ext, int bits) {
+  StoredImage s;
+  s.width = img.width;
+  s.height = img.height;
+  s.channels = img.channels;
+  s.sample = ext == ".exr" ? Sample::f16 : ((bits == 16 && !is_jpeg(ext)) ? Sample::u16 : Sample::u8);
   const size_t n = img.pixels.size();
-  p.bytes.resize(n * p.type.size());
+  s.bytes.resize(n * codec::sample_size(s.sample));
   const auto clamp01 = [](float v) { return std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f); };
-  if (p.type == OIIO::TypeDesc::HALF) {
-    OIIO::convert_pixel_values(OIIO::TypeDesc::FLOAT, img.pixels.data(), p.type, p.bytes.data(), int(n));
-  } else if (p.type == OIIO::TypeDesc::UINT8) {
-    for (size_t i = 0; i < n; ++i)
-      p.bytes[i] = static_cast<unsigned char>(std::lround(clamp01(img.pixels[i]) * 255.0f));
-  } else {
-    auto* o = reinterpret_cast<std::uint16_t*>(p.bytes.data());
-    for (size_t i = 0; i < n; ++i) o[i] = static_cast<std::uint16_t>(std::lround(clamp01(img.pixels[i]) * 65535.0f));
+  for (size_t i = 0; i < n; ++i) {
+    const float v = img.pixels[i];
+    if (s.sample == Sample::u8) {
+      s.bytes[i] = static_cast<unsigned char>(std::lround(clamp01(v) * 255.0f));
+    } else {
+      const std::uint16_t h = s.sample == Sample::f16 ? Imath::half(v).bits()
+                                                      : static_cast<std::uint16_t>(std::lround(clamp01(v) * 65535.0f));
+      std::memcpy(&s.bytes[2 * i], &h, 2);
+    }
   }
-  return p;
+  return s;
 }
 
-/// The complete image file in memory (OpenImageIO writing into an IOVecOutput).
-std::vector<unsigned char> encode(const std::string& path, const std::string& ext, const Image& img,
-                                  const Pixels& pixels, const std::string& description) {
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw Error("cannot write \"" + path + "\": " + first_line(OIIO::geterror(), "no writer for this format"));
-  OIIO::ImageSpec spec(img.width, img.height, img.channels, pixels.type);
-  if (ext == ".tif" || ext == ".tiff") spec.attribute("compression", "none");
-  if (!description.empty() && !is_pnm(ext)) spec.attribute("ImageDescription", description);
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  void* proxy = &memory;
-  spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-  if (!out->supports("ioproxy"))
-    throw Error("cannot write \"" + path + "\": this OpenImageIO cannot encode " + ext + " into memory");
-  bool ok;
-  {
-    const CodecOutputCapture quiet_codec;
-    ok = out->open(path, spec) && out->write_image(pixels.type, pixels.bytes.data());
-    ok = out->close() && ok;
-  }
-  if (!ok)
-    throw Error("cannot write \"" + path + "\": " + first_line(out->geterror(), "the image could not be encoded"));
-  if (is_pnm(ext) && !description.empty()) {
-    // "P6\n..." -> "P6\n# description\n...": a header comment every PNM reader skips.
-    const auto eol = std::find(bytes.begin(), bytes.end(), '\n');
-    if (eol == bytes.end()) throw Error("cannot write \"" + path + "\": unexpected PNM header from the encoder");
-    std::string comment = "# " + description + "\n";
-    std::replace(comment.begin(), comment.end() - 1, '\n', ' ');
-    bytes.insert(eol + 1, comment.begin(), comment.end());
-  }
-  return bytes;
+Bytes encode(const std::string& path, const std::string& ext, const StoredImage& s) {
+  if (ext == ".png") return codec::encode_png(path, s);
+  if (ext == ".tif" || ext == ".tiff") return codec::encode_tiff(path, s);
+  if (is_jpeg(ext)) return codec::encode_jpeg(path, s);
+  if (ext == ".exr") return codec::encode_exr(path, s);
+  return codec::encode_pnm(path, s);
 }
 
 /// The encoded file. A non-empty description gets the checksum of the stored pixels ("; pixels
@@ -234,38 +234,30 @@ std::vector<unsigned char> encode(const std::string& path, const std::string& ex
 /// codec decodes it without an error (JPEG, TIFF). JPEG is lossy: its checksum is taken from the
 /// pixels decoded from a first encoding, then the file is encoded again with the checksum (metadata
 /// do not change how the pixels are encoded).
-std::vector<unsigned char> encode_image(const std::string& path, const std::string& ext, const Image& img, int bits,
-                                        const std::string& description) {
-  const Pixels pixels = stored_pixels(img, ext, bits);
-  if (description.empty()) return encode(path, ext, img, pixels, description);
+Bytes encode_image(const std::string& path, const std::string& ext, const Image& img, int bits,
+                   const std::string& description) {
+  StoredImage s = stored_pixels(img, ext, bits);
+  if (description.empty()) return encode(path, ext, s);
   std::string sum;
-  if (ext == ".jpg" || ext == ".jpeg") {
-    const std::vector<unsigned char> first = encode(path, ext, img, pixels, description);
-    sum = checksum(decode_image(path, true, &first).pixels);
+  if (is_jpeg(ext)) {
+    sum = checksum(decode(path, encode(path, ext, s)).bytes);
   } else {
-    sum = checksum(pixels);
+    sum = checksum(s.bytes);
   }
-  return encode(path, ext, img, pixels, description + std::string(kPixelsTag) + sum);
+  s.description = description + std::string(kPixelsTag) + sum;
+  return encode(path, ext, s);
 }
 
 }  // namespace
 
 Image read_image(const std::string& path) {
-  const DecodedImage d = decode_image(path, false);
-  // Grey (1 or 2 channels) is replicated to RGB; alpha and extra channels are dropped.
+  const StoredImage d = decode_file(path);
   Image img(d.width, d.height, 3);
-  const auto* pixels = reinterpret_cast<const float*>(d.pixels.bytes.data());
-  const size_t nc = size_t(d.channels);
-  for (size_t i = 0; i < size_t(d.width) * size_t(d.height); ++i) {
-    const float* s = &pixels[i * nc];
-    float* o = &img.pixels[i * 3];
-    if (nc < 3) {
-      o[0] = o[1] = o[2] = s[0];
-    } else {
-      o[0] = s[0];
-      o[1] = s[1];
-      o[2] = s[2];
-    }
+  switch (d.sample) {
+    case Sample::u8: to_rgb<Sample::u8>(d, img); break;
+    case Sample::u16: to_rgb<Sample::u16>(d, img); break;
+    case Sample::f16: to_rgb<Sample::f16>(d, img); break;
+    case Sample::f32: to_rgb<Sample::f32>(d, img); break;
   }
   return img;
 }
@@ -273,14 +265,14 @@ Image read_image(const std::string& path) {
 ImageFileCheck check_image_file(const std::string& path) {
   ImageFileCheck c;
   try {
-    const DecodedImage d = decode_image(path, true);
+    const StoredImage d = decode_file(path);
     c.width = d.width;
     c.height = d.height;
     c.description = d.description;
     const size_t tag = d.description.rfind(kPixelsTag);
     if (tag != std::string::npos) {
       c.description.resize(tag);
-      if (d.description.substr(tag + kPixelsTag.size()) != checksum(d.pixels)) {
+      if (d.description.substr(tag + kPixelsTag.size()) != checksum(d.bytes)) {
         c.problem = "cannot read image \"" + path +
                     "\": the pixels do not match the checksum stored in the file "
                     "(the file is truncated or damaged)";
@@ -305,7 +297,7 @@ void write_image(const std::string& path, const Image& img, int bits, const std:
   if (std::find(kExts.begin(), kExts.end(), ext) == kExts.end())
     throw Error("cannot write \"" + path + "\": unknown image extension \"" + ext + "\"" + did_you_mean(ext, kExts) +
                 " (valid: " + join(kExts) + ")");
-  const std::vector<unsigned char> bytes = encode_image(path, ext, img, bits, description);
+  const Bytes bytes = encode_image(path, ext, img, bits, description);
   write_file_atomic(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
@@ -326,69 +318,16 @@ void write_channel_image(const std::string& path, const ChannelImage& img) {
     throw Error("cannot write \"" + path + "\": the channel image is empty or inconsistent");
   if (lower_extension(path) != ".exr")
     throw Error("cannot write \"" + path + "\": named float channels need an OpenEXR file (.exr)");
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw Error("cannot write \"" + path + "\": " + first_line(OIIO::geterror(), "no writer for this format"));
-  // 32-bit floats (not half): positions and frequency shifts need the precision.
-  OIIO::ImageSpec spec(img.width, img.height, int(nc), OIIO::TypeDesc::FLOAT);
-  spec.channelnames = img.names;
-  spec.alpha_channel = -1;
-  spec.attribute("compression", "zip");
-  for (const auto& [k, v] : img.metadata) spec.attribute(k, v);
-  // Encoded into memory, then written like every other file (io/atomic_file.h).
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  void* proxy = &memory;
-  spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-  bool ok;
-  {
-    const CodecOutputCapture quiet_codec;
-    ok = out->open(path, spec) && out->write_image(OIIO::TypeDesc::FLOAT, img.pixels.data());
-    ok = out->close() && ok;
-  }
-  if (!ok)
-    throw Error("cannot write \"" + path + "\": " + first_line(out->geterror(), "the image could not be encoded"));
+  const Bytes bytes = codec::encode_exr_channels(path, img);
   write_file_atomic(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 ChannelImage read_channel_image(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) {
-    std::string why = OIIO::geterror();
-    if (!fs::exists(path)) why = "no such file";
-    throw Error("cannot read \"" + path + "\": " + why);
+  try {
+    return codec::decode_exr_channels(path, read_file(path, "data file"));
+  } catch (const std::bad_alloc&) {
+    throw Error("cannot read \"" + path + "\": not enough memory to decode it (the file is damaged or too large)");
   }
-  const OIIO::ImageSpec& spec = in->spec();
-  ChannelImage img;
-  img.width = spec.width;
-  img.height = spec.height;
-  const int nc = spec.nchannels;
-  if (img.width <= 0 || img.height <= 0 || nc <= 0) throw Error("cannot read \"" + path + "\": empty image");
-  check_image_size(path, img.width, img.height, nc);
-  img.names = spec.channelnames;
-  img.names.resize(size_t(nc));
-  img.pixels.resize(size_t(img.width) * img.height * nc);
-  if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, img.pixels.data())) {
-    const std::string why = in->geterror();
-    throw Error("cannot read \"" + path + "\": " + why);
-  }
-  for (const auto& p : spec.extra_attribs)
-    if (p.type() == OIIO::TypeDesc::STRING) img.metadata.emplace_back(p.name().string(), p.get_string());
-  in->close();
-  return img;
-}
-
-void draw_text(Image& img, int x, int y, const std::string& text, int size, const float rgb[3], int align) {
-  if (text.empty() || img.channels != 3) return;
-  static const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-  const std::string font = fs::exists(kFont) ? kFont : "";
-  // Wraps the pixels (no copy): render_text blends into them in place.
-  OIIO::ImageBuf buf(OIIO::ImageSpec(img.width, img.height, 3, OIIO::TypeDesc::FLOAT), img.pixels.data());
-  const auto ax = align == 1
-                      ? OIIO::ImageBufAlgo::TextAlignX::Center
-                      : (align == 2 ? OIIO::ImageBufAlgo::TextAlignX::Right : OIIO::ImageBufAlgo::TextAlignX::Left);
-  if (!OIIO::ImageBufAlgo::render_text(buf, x, y, text, size, font, {rgb, 3}, ax))
-    throw Error("cannot draw text \"" + text + "\": " + buf.geterror() +
-                " (install a font: Debian package fonts-dejavu-core)");
 }
 
 std::string find_file(const std::string& name, const std::vector<std::string>& search_dirs, const std::string& what) {

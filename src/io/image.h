@@ -1,4 +1,5 @@
-// Image buffers and image files (read: textures; write: rendered frames) via OpenImageIO.
+// Image buffers and image files (read: textures; write: rendered frames); the codecs are Debian
+// libraries (io/image_codecs.h).
 #pragma once
 
 #include <string>
@@ -18,8 +19,8 @@ struct Image {
   const float* at(int x, int y) const { return &pixels[(size_t(y) * width + x) * channels]; }
 };
 
-/// Reads any format OpenImageIO reads (PNG, TIFF, JPEG, PPM, EXR, HDR, ...), converted to float
-/// RGB (grey is replicated, alpha dropped). Throws Error naming the file when it cannot be read
+/// Reads PNG, TIFF, JPEG, OpenEXR, PBM/PGM/PPM and Radiance HDR (recognised by content),
+/// converted to float RGB (grey is replicated, alpha dropped). Throws Error naming the file when it cannot be read
 /// (one line: the codec's own messages are kept off the terminal).
 Image read_image(const std::string& path);
 
@@ -64,10 +65,10 @@ void write_channel_image(const std::string& path, const ChannelImage& img);
 /// naming the file when it cannot be read.
 ChannelImage read_channel_image(const std::string& path);
 
-/// Draws `text` into `img` with its baseline at row y: x is the left end (align 0), the centre
-/// (align 1) or the right end (align 2); `size` is the font size in pixels. Uses the DejaVu Sans
-/// font of Debian's fonts-dejavu-core package (or OpenImageIO's default font). Throws Error when
-/// no font can be found.
+/// Draws `text` (UTF-8) into `img` with its baseline at row y: x is the left end (align 0), the
+/// centre (align 1) or the right end (align 2); `size` is the font size in pixels. The glyphs'
+/// coverage blends `rgb` over the pixels (FreeType, DejaVu Sans of Debian's fonts-dejavu-core).
+/// Throws Error when the font cannot be loaded.
 void draw_text(Image& img, int x, int y, const std::string& text, int size, const float rgb[3], int align = 0);
 
 /// Finds a file: as given (absolute, or relative to the working directory), then relative to each

@@ -11,6 +11,7 @@
 #include <condition_variable>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iterator>
 #include <mutex>
 #include <thread>
@@ -354,8 +355,30 @@ std::string unclosed_hint(const std::string& text, const std::string& file) {
          " is never closed";
 }
 
+// Guile and its collector (libgc) take the first thread that enters Guile for the process's main
+// thread and never unregister it. If that thread ends (the first evaluation ran on a short-lived
+// thread: a test's std::thread, a server's worker), the next collection sends it the stop signal,
+// which an ended thread never answers, and the process aborts ("Signals delivery fails
+// constantly"; bdwgc issue 542). So Guile is first entered by a thread of its own that lasts as
+// long as the process (idle, it answers the collector's signals); every thread that evaluates a
+// scene is then registered with the collector, and unregistered when it ends, by Guile.
+void enter_guile_first_on_a_lasting_thread() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    std::promise<void> entered;
+    std::future<void> done = entered.get_future();
+    std::thread([entered = std::move(entered)]() mutable {
+      scm_with_guile([](void*) -> void* { return nullptr; }, nullptr);
+      entered.set_value();
+      for (;;) std::this_thread::sleep_for(std::chrono::hours(24));
+    }).detach();
+    done.wait();
+  });
+}
+
 SceneDescription run(EvalRequest& req, const std::string& file, const SchemeOptions& opts) {
   std::lock_guard<std::mutex> lock(g_eval_mutex);
+  enter_guile_first_on_a_lasting_thread();
   EvalContext ctx;
   ctx.opts = &opts;
   ctx.desc.file = file;

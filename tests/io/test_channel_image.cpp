@@ -70,6 +70,24 @@ TEST(ChannelImage, OnlyExrAndConsistentSizes) {
   fs::remove_all(dir);
 }
 
+TEST(ChannelImage, ColourChannelsComeFirstThenTheFileOrder) {
+  // OpenEXR stores channels sorted by name (B, G, R, a, z); they are listed R, G, B first.
+  const fs::path dir = temp_dir("order");
+  ChannelImage img;
+  img.width = 1;
+  img.height = 1;
+  img.names = {"z", "a", "R", "G", "B"};
+  img.pixels = {5, 4, 1, 2, 3};
+  write_channel_image((dir / "o.exr").string(), img);
+  const ChannelImage back = read_channel_image((dir / "o.exr").string());
+  EXPECT_EQ(back.names, (std::vector<std::string>{"R", "G", "B", "a", "z"}));
+  EXPECT_EQ(back.pixels, (std::vector<float>{1, 2, 3, 4, 5}));
+  // As an image: R, G, B.
+  const Image rgb = read_image((dir / "o.exr").string());
+  EXPECT_EQ(rgb.pixels, (std::vector<float>{1, 2, 3}));
+  fs::remove_all(dir);
+}
+
 TEST(DrawText, DrawsGlyphsInTheGivenColour) {
   Image img(120, 30, 3);
   const float white[3] = {1, 1, 1};
@@ -82,6 +100,19 @@ TEST(DrawText, DrawsGlyphsInTheGivenColour) {
   draw_text(right, 60, 20, "abc", 16, white, 2);
   for (int y = 0; y < 30; ++y)
     for (int x = 62; x < 120; ++x) EXPECT_EQ(right.at(x, y)[0], 0.f) << x << " " << y;
+  // Centred text: as much ink left of x as right of it (within a glyph column), none far away.
+  Image centred(120, 30, 3);
+  draw_text(centred, 60, 20, "HH", 16, white, 1);
+  double left = 0, rightside = 0;
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 120; ++x) {
+      (x < 60 ? left : rightside) += centred.at(x, y)[0];
+      if (x < 40 || x > 80) {
+        EXPECT_EQ(centred.at(x, y)[0], 0.f) << x << " " << y;
+      }
+    }
+  EXPECT_GT(left, 0);
+  EXPECT_NEAR(left / rightside, 1.0, 0.2);
 }
 
 }  // namespace

@@ -162,6 +162,43 @@ TEST(Image, GreyIsReplicated) {
   EXPECT_EQ(img.at(0, 0)[1], 0.0f);
 }
 
+TEST(Image, FormatIsRecognisedByContent) {
+  // A texture whose extension lies (a PNG saved as .tif) is read by what it is.
+  TempDir d;
+  write_image(d.file("a.png"), test_image());
+  fs::copy_file(d.file("a.png"), d.file("b.tif"));
+  const Image a = read_image(d.file("a.png")), b = read_image(d.file("b.tif"));
+  EXPECT_EQ(a.pixels, b.pixels);
+}
+
+TEST(Image, EveryNetpbmVariantIsScaledByItsMaximum) {
+  TempDir d;
+  // Plain (ASCII) PGM with maximum 15 and a comment: 15 is white.
+  write_file_atomic(d.file("p.pgm"), "P2\n# a comment\n2 1\n15\n0 15\n");
+  Image img = read_image(d.file("p.pgm"));
+  EXPECT_EQ(img.at(0, 0)[0], 0.0f);
+  EXPECT_EQ(img.at(1, 0)[1], 1.0f);
+  // Plain PBM: 1 is black, 0 is white.
+  write_file_atomic(d.file("p.pbm"), "P1\n2 1\n1 0\n");
+  img = read_image(d.file("p.pbm"));
+  EXPECT_EQ(img.at(0, 0)[0], 0.0f);
+  EXPECT_EQ(img.at(1, 0)[2], 1.0f);
+  // Binary 16-bit PPM: big-endian samples, 0x8000 / 65535.
+  write_file_atomic(d.file("w.ppm"), std::string("P6\n1 1\n65535\n\x80\x00\x00\x01\xff\xff", 19));
+  img = read_image(d.file("w.ppm"));
+  EXPECT_EQ(img.at(0, 0)[0], 32768.0f / 65535.0f);
+  EXPECT_EQ(img.at(0, 0)[1], 1.0f / 65535.0f);
+  EXPECT_EQ(img.at(0, 0)[2], 1.0f);
+  // A PPM cut short is an error naming the file.
+  write_file_atomic(d.file("cut.ppm"), std::string("P6\n4 4\n255\n\x01\x02", 13));
+  try {
+    read_image(d.file("cut.ppm"));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("cut.ppm"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Image, FindFileSearchesDirectoriesAndListsThem) {
   TempDir d;
   fs::create_directories(d.path / "tex");

@@ -202,7 +202,7 @@ TEST_F(DataExr, WrittenAtomicallyAndReadBack) {
 
 TEST_F(DataExr, IndependentReaderSeesTheChannelsAndHeader) {
 #ifndef GEOVIS_HAVE_TINYEXR
-  GTEST_SKIP() << "tinyexr (Debian package libtinyexr-dev, an OpenEXR reader independent of OpenImageIO) is not "
+  GTEST_SKIP() << "tinyexr (Debian package libtinyexr-dev, an OpenEXR reader independent of the OpenEXR library) is not "
                   "installed";
 #else
   const RenderJob j = job();
