@@ -134,6 +134,11 @@ TEST(KerrJacobi, MinoFlowDerivativesGiveTheCoordinateJacobiMatrix) {
         EXPECT_NEAR(Jm[i], Jc[i], 1e-6 * scale) << h.name << " J" << i << " r_obs=" << ray.x[1];
         worst = std::max(worst, std::fabs(Jm[i] - Jc[i]) / scale);
       }
+      // The fields themselves (BL components) and their λ-derivatives, which the renderer's
+      // Hermite interpolation inside the step that hits uses: the same affine Jacobi fields.
+      double yscale = 1.0;
+      for (int i = kJacobiY1; i < kJacobiDim; ++i) yscale = std::max(yscale, std::fabs(yc[i]));
+      for (int i = kJacobiY1; i < kJacobiDim; ++i) EXPECT_NEAR(ym[i], yc[i], 1e-6 * yscale) << h.name << " slot " << i;
       EXPECT_NEAR(pm.d_plus, pc.d_plus, 1e-6 * scale);
       EXPECT_NEAR(pm.d_minus, pc.d_minus, 1e-6 * scale);
       EXPECT_NEAR(pm.mu, pc.mu, 1e-6 * scale * scale / (pc.d_plus * pc.d_minus) * pc.mu);
