@@ -208,6 +208,8 @@ bool integrate_kerr_mino_jacobi(double M, double a, double r_break, const Solver
                                 double lambda0, StepCallback cb, GeodesicResult& res) {
   using L = MinoJacobiLayout;
   using I = KerrMinoRHS;
+  // The Walker–Penrose constant is that of null geodesics; the fields must start at zero.
+  if (cfg_in.type != GeodesicType::Lightlike) return false;
   for (int i = 0; i < 4; ++i)
     if (y_io[kJacobiY1 + i] != 0.0 || y_io[kJacobiY2 + i] != 0.0) return false;
   SolverConfig cfg = cfg_in;

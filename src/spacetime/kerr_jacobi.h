@@ -63,8 +63,8 @@ bool kerr_transported_screen(double M, double a, const Vec4& x0, const Vec4& k0,
 /// Every accepted step is reported with x, k, dk/dλ, Y_f, Y_f' and dY_f/dλ; the slots this path
 /// does not compute (s_a, ds_a/dλ and d²Y_f/dλ²) are NaN in the steps: the screen at an event of
 /// the ray comes from kerr_transported_screen (Metric::transported_screen). The final state
-/// carries s_a. Returns false, without integrating, for rays through the polar axis and
-/// starts with Y_f ≠ 0: the caller integrates the coordinate Jacobi system.
+/// carries s_a. Returns false, without integrating, for rays through the polar axis, starts with
+/// Y_f ≠ 0 and geodesics that are not light rays: the caller integrates the coordinate Jacobi system.
 bool integrate_kerr_mino_jacobi(double M, double a, double r_break, const SolverConfig& cfg, double* y_io,
                                 double lambda0, StepCallback cb, GeodesicResult& res);
 
