@@ -243,17 +243,35 @@ double frequency_shift(const Metric& m, const Observer& obs, const Vec4& k0, con
 }
 
 /// The Jacobi matrix J_ab = g(s_a, Y_b) at the hit (res.pos, the Hermite-interpolated event), and
-/// its lensing parameters (jacobi.h). s_a and Y_b are interpolated inside the step by the cubic
-/// Hermite polynomial on their values and λ-derivatives at both ends (the state's right-hand side,
-/// as hermite_interpolate does for x): O(h⁴) instead of the O(h²) of GeoViS's linear
-/// interpolation of J, so the lensing data at the hit does not depend on the length of the step.
-void jacobi_at_hit(const Metric& m, const RayState& rs, TraceResult& res) {
+/// its lensing parameters (jacobi.h). Y_b is interpolated inside the step by the cubic Hermite
+/// polynomial on its values and λ-derivatives at both ends (as hermite_interpolate does for x):
+/// O(h⁴) instead of the O(h²) of GeoViS's linear interpolation of J, so the lensing data at the hit
+/// does not depend on the length of the step. The screen s_a there is the transport of the
+/// observer's (`start`: the start state, jacobi.h layout) in closed form where the metric has one
+/// and the rays run through separated equations (`closed_form_screen`; Metric::transported_screen:
+/// the steps of that path carry no s_a, spacetime/kerr_jacobi.h), else interpolated as Y_b.
+void jacobi_at_hit(const Metric& m, const RayState& rs, const double* start, bool closed_form_screen,
+                   TraceResult& res) {
   const double h = rs.lambda1 - rs.lambda0, s = rs.frac, s2 = s * s, s3 = s2 * s;
   const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+  auto hermite = [&](int i) { return h00 * rs.y0[i] + h10 * h * rs.dy0[i] + h01 * rs.y1[i] + h11 * h * rs.dy1[i]; };
   double y[kJacobiDim];
-  for (int i = 0; i < 4; ++i) y[kJacobiX + i] = res.pos[i];
-  for (int i = kJacobiS1; i < kJacobiDim; ++i)
-    y[i] = h00 * rs.y0[i] + h10 * h * rs.dy0[i] + h01 * rs.y1[i] + h11 * h * rs.dy1[i];
+  for (int i = 0; i < 4; ++i) {
+    y[kJacobiX + i] = res.pos[i];
+    y[kJacobiY1 + i] = hermite(kJacobiY1 + i);
+    y[kJacobiY2 + i] = hermite(kJacobiY2 + i);
+  }
+  const Vec4 s0[2] = {vec4_at(start + kJacobiS1), vec4_at(start + kJacobiS2)};
+  Vec4 screen[2];
+  if (closed_form_screen &&
+      m.transported_screen(vec4_at(start), vec4_at(start + kJacobiK), s0, res.pos, res.k, screen)) {
+    for (int i = 0; i < 4; ++i) {
+      y[kJacobiS1 + i] = screen[0][i];
+      y[kJacobiS2 + i] = screen[1][i];
+    }
+  } else {
+    for (int i = kJacobiS1; i < kJacobiY1; ++i) y[i] = hermite(i);
+  }
   double J[4];
   jacobi_matrix(m, y, J);
   for (int i = 0; i < 4; ++i) res.jacobi_matrix[i] = J[i];
@@ -353,8 +371,8 @@ TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats,
   const Metric& m = *job_.metric;
   double y[kMaxSystemDim] = {};
   const Vec4 k0 = start_state(job_.observer, normalize(d_in), system_, y);
-  double y_start[8];
-  for (int i = 0; i < 8; ++i) y_start[i] = y[i];
+  double y_start[kJacobiY1];  // x, k and, for the Jacobi system, the observer's screen s_a
+  for (int i = 0; i < kJacobiY1; ++i) y_start[i] = y[i];
 
   RayState rs;
   rs.metric = &m;
@@ -384,7 +402,7 @@ TraceResult Tracer::end_ray(const RayState& rs, const Vec4& k0, const double* y,
   hermite_interpolate(st, rs.frac, res.pos, res.k);
   res.lambda = rs.lambda0 + rs.frac * (rs.lambda1 - rs.lambda0);
   res.freqshift = frequency_shift(m, job_.observer, k0, rs.best, res.pos, res.k);
-  if (system_ == GeodesicSystem::Jacobi) jacobi_at_hit(m, rs, res);
+  if (system_ == GeodesicSystem::Jacobi) jacobi_at_hit(m, rs, y_start, cfg_.separable, res);
   res.color = shade_hit(job_, point_lights_, rs.best, res.pos);
   return res;
 }
@@ -399,7 +417,7 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
   struct LaneRay {
     size_t sample;
     Vec4 k0;
-    double y_start[8];
+    double y_start[8];  // x, k: packets trace the geodesic system only (no screen, jacobi_at_hit)
     RayState rs;
   };
   LaneRay lanes[kPacketLanes];

@@ -98,7 +98,8 @@ class Tracer {
 
  private:
   void fill_data(const TraceResult& r, PixelData& d) const;
-  /// The end of a traced ray (trace_direction): hit refinement result, shading, data.
+  /// The end of a traced ray (trace_direction): hit refinement result, shading, data. y_start: the
+  /// ray's start state, x and k, and for the Jacobi system also the screen s_a (jacobi.h layout).
   TraceResult end_ray(const RayState& rs, const Vec4& k0, const double* y, const double* y_start,
                       const GeodesicResult& gr, TraceStats& stats) const;
   const RenderJob& job_;

@@ -164,6 +164,14 @@ class Metric {
   /// y'' = f(y) when cfg.separable is set (KerrBL, Schwarzschild: spacetime/kerr_mino.h), which
   /// is what the RKN86 solver needs.
   virtual bool has_separable_geodesics() const { return false; }
+  /// Screen vectors s_a at (x, k) parallel transported along the light ray from (x0, k0), where
+  /// they were s0_a (⟂ k0), in closed form: true for metrics that have one (the Kerr family, by the
+  /// Walker–Penrose constant: spacetime/kerr_jacobi.h). The result is exact up to a multiple of k,
+  /// which no screen projection g(s_a, ·) of a vector ⟂ k sees.
+  virtual bool transported_screen(const Vec4& /*x0*/, const Vec4& /*k0*/, const Vec4 (&/*s0*/)[2], const Vec4& /*x*/,
+                                  const Vec4& /*k*/, Vec4 (&/*s*/)[2]) const {
+    return false;
+  }
   /// Asymptotically flat, with a proven test for light rays that can no longer turn back
   /// (StopReason::Escaped, spacetime/escape.h); declared by the metric (MetricCRTP).
   virtual bool asymptotically_flat() const { return false; }

@@ -25,6 +25,7 @@
 #include "spacetime/geodesic_packet.h"
 #include "spacetime/integrators.h"
 #include "spacetime/jacobi.h"
+#include "spacetime/kerr_jacobi.h"
 #include "spacetime/kerr_mino.h"
 #include "spacetime/metric.h"
 #include "spacetime/metric_kernel.h"
@@ -90,6 +91,14 @@ class MetricCRTP : public Metric {
   /// form reports).
   static constexpr bool kSeparable = requires(const M& m) { m.kerr_mino_params(); };
   bool has_separable_geodesics() const override { return kSeparable; }
+  bool transported_screen(const Vec4& x0, const Vec4& k0, const Vec4 (&s0)[2], const Vec4& x, const Vec4& k,
+                          Vec4 (&s)[2]) const override {
+    if constexpr (kSeparable) {
+      const KerrMinoParams p = self().kerr_mino_params();
+      return kerr_transported_screen(p.mass, p.a, x0, k0, s0, x, k, s);
+    }
+    return false;
+  }
 
   /// A metric that can tell an escaped light ray provides `escapes` (escape.h); that is the
   /// declaration of asymptotic flatness (a metric whose flatness depends on its parameters
@@ -112,6 +121,13 @@ class MetricCRTP : public Metric {
       if (sys == GeodesicSystem::Geodesic && cfg.separable && is_valid_inline(Vec4{{y[0], y[1], y[2], y[3]}})) {
         const KerrMinoParams p = self().kerr_mino_params();
         return integrate_kerr_mino(p.mass, p.a, p.r_break, cfg, y, lambda0, cb);
+      }
+      // The Jacobi system as derivatives of the Mino-time flow (kerr_jacobi.h), except for rays
+      // through the polar axis, which keep the coordinate form.
+      if (sys == GeodesicSystem::Jacobi && cfg.separable && is_valid_inline(Vec4{{y[0], y[1], y[2], y[3]}})) {
+        const KerrMinoParams p = self().kerr_mino_params();
+        GeodesicResult r;
+        if (integrate_kerr_mino_jacobi(p.mass, p.a, p.r_break, cfg, y, lambda0, cb, r)) return r;
       }
     }
     if (compiled_per_metric(sys, cfg.kind)) {

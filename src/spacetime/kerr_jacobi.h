@@ -1,0 +1,71 @@
+// The Jacobi system (jacobi.h) of a light ray in the Kerr family (KerrBL; Schwarzschild as a = 0)
+// without integrating its 32 coordinate components: Jacobi fields as derivatives of the Mino-time
+// flow (kerr_mino.h), the parallel-transported screen from the Walker–Penrose constant.
+//
+// Jacobi fields. The Jacobi field Y_f with Y_f(0) = 0, Y_f'(0) = δk_f (jacobi.h: δk_f = s_f, a
+// bundle with its vertex at the observer) is the derivative of the geodesic with respect to its
+// initial tangent, Y_f(λ) = ∂x(λ; k0 + ε δk_f)/∂ε at ε = 0, for the family of geodesics from the
+// same event x0 with the same origin λ = 0 of the affine parameter (the Jacobi equation is the
+// geodesic equation linearised about the ray, jacobi.h). k0 + ε s_f is null to first order
+// (g(k0, s_f) = 0), so μ² = 0 has no derivative. Forward-mode differentiation (spacetime/dual.h,
+// Dual<double, 2>, one slot per field) carries ε through the constants E, L, Q (linear resp.
+// quadratic in k0), the initial Mino state and the integration of Carter's separated equations
+// (kerr_mino_rhs on dual numbers): the dual parts of the state are the derivatives
+// V_f = ∂(w, ζ, w', z', t, φ, λ)/∂ε at fixed Mino time σ. Differentiation and the Runge–Kutta
+// step commute (a step is a smooth function of its start state at fixed h), so the dual parts
+// are the exact derivative of the numerical flow, whose step sizes the ray itself sets.
+// At fixed σ the perturbed ray is at a different λ: with x(σ, ε) and λ(σ, ε),
+//   ∂x/∂ε|_λ = ∂x/∂ε|_σ − k ∂λ/∂ε|_σ,
+// so the affine Jacobi field is Y_f = V_f^x − δλ_f k (δλ_f the dual part of the λ component),
+// exactly (not only up to the multiple of k that the screen projection J_ab = g(s_a, Y_b) would
+// not see, g(s_a, k) = 0), and its λ-derivative, with ' = d/dσ, dλ/dσ = Σ and dk/dσ = Σ dk/dλ,
+//   dY_f/dλ = (V_f^x' − δΣ_f k)/Σ − δλ_f dk/dλ,     δΣ_f = ∂Σ/∂ε|_σ = δλ_f'.
+// The Boyer–Lindquist V^x = ∂(t, r, θ, φ)/∂ε follows from r = 1/w, θ = θ_off ± acos z (kerr_mino.h):
+//   V^r = −δw/w²,  V^θ = ∓δz/|sin θ|,  and V^r' = −δw'/w² + 2δw w'/w³,
+//   V^θ' = ∓(δz'/|sin θ| + δz z z'/|sin θ|³)   (d|sin θ|/dσ = −z z'/|sin θ|).
+//
+// Screen. A vector f ⟂ k parallel transported along a null geodesic of Kerr keeps the complex
+// Walker–Penrose constant (Walker & Penrose, Commun. Math. Phys. 18 (1970) 265; Chandrasekhar,
+// "The Mathematical Theory of Black Holes" §63; Connors, Piran & Stark, ApJ 235 (1980) 224):
+//   κ = (A − iB)(r − i a cos θ),
+//   A = (k^t f^r − k^r f^t) + a sin²θ (k^r f^φ − k^φ f^r),
+//   B = [(r² + a²)(k^φ f^θ − k^θ f^φ) − a (k^t f^θ − k^θ f^t)] sin θ.
+// κ is real-linear in f and vanishes for f = k, and it maps the screen (vectors ⟂ k modulo k) one to
+// one onto C unless k is a principal null direction ((L − aE)² + Q = 0: a radial ray of
+// Schwarzschild, where every κ vanishes). So s_a at any event of the ray is the screen vector
+// with κ(s_a) = κ(s_a at the observer): in a basis e_1, e_2 of the screen there, a 2x2 real linear
+// system. s_a is then known up to a multiple of k, which J does not see.
+//
+// Rays through the polar axis (L = 0, kerr_mino.h) drop L/sin²θ from the right-hand side, whose
+// derivative with respect to L does not vanish: they keep the coordinate Jacobi system.
+#pragma once
+
+#include <complex>
+
+#include "spacetime/geodesic.h"
+#include "spacetime/vec.h"
+
+namespace geovis {
+
+/// Walker–Penrose constant κ of f along the null geodesic with tangent k at BL event x (file
+/// comment), spin a of the hole.
+std::complex<double> walker_penrose(double a, const Vec4& x, const Vec4& k, const Vec4& f);
+
+/// Screen vectors s_a at BL (x, k) with the Walker–Penrose constants of s0_a at (x0, k0): the
+/// parallel transport of s0_a along the ray up to a multiple of k (file comment). False when the
+/// screen basis is degenerate (a principal null ray) or not finite.
+bool kerr_transported_screen(double M, double a, const Vec4& x0, const Vec4& k0, const Vec4 (&s0)[2], const Vec4& x,
+                             const Vec4& k, Vec4 (&s)[2]);
+
+/// The Jacobi system (jacobi.h layout, 32 components in BL, y_io updated in place) through the
+/// Mino-time flow and its derivatives (file comment), same SolverConfig meaning as
+/// integrate_kerr_mino. Requires Y_f = 0 at the start (a bundle with its vertex at the start).
+/// Every accepted step is reported with x, k, dk/dλ, Y_f, Y_f' and dY_f/dλ; the slots this path
+/// does not compute (s_a, ds_a/dλ and d²Y_f/dλ²) are NaN in the steps: the screen at an event of
+/// the ray comes from kerr_transported_screen (Metric::transported_screen). The final state
+/// carries s_a. Returns false, without integrating, for rays through the polar axis, starts with
+/// Y_f ≠ 0 and geodesics that are not light rays: the caller integrates the coordinate Jacobi system.
+bool integrate_kerr_mino_jacobi(double M, double a, double r_break, const SolverConfig& cfg, double* y_io,
+                                double lambda0, StepCallback cb, GeodesicResult& res);
+
+}  // namespace geovis
