@@ -154,13 +154,22 @@ StepAction test_step(RayState& rs, const StepView& st) {
   Segment seg;
   seg.x0 = vec4_at(st.y0);
   seg.x1 = vec4_at(st.y1);
+  // The integrator's pseudo-Cartesian ends where it has them (StepView::p0/p1: chart 0).
   if (rs.have_prev) {
     seg.p0 = rs.prev_p;
     seg.chart0 = rs.prev_chart;
+  } else if (st.p0) {
+    seg.p0 = Vec3{st.p0[0], st.p0[1], st.p0[2]};
+    seg.chart0 = 0;
   } else {
     seg.chart0 = mm.to_pseudo_cartesian(seg.x0, seg.p0);
   }
-  seg.chart1 = mm.to_pseudo_cartesian(seg.x1, seg.p1);
+  if (st.p1) {
+    seg.p1 = Vec3{st.p1[0], st.p1[1], st.p1[2]};
+    seg.chart1 = 0;
+  } else {
+    seg.chart1 = mm.to_pseudo_cartesian(seg.x1, seg.p1);
+  }
   seg.step = &st;
   seg.metric = &mm;
   rs.prev_p = seg.p1;

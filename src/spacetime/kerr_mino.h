@@ -424,6 +424,40 @@ PolarOffset kerr_mino_from_bl(const KerrMinoConstants& c, const Vec4& x, const V
 void kerr_mino_to_bl(const KerrMinoConstants& c, const PolarOffset& polar, const double* y, const double* dy,
                      const ThetaBranch& b, Vec4& x, Vec4& k, Vec4* dk = nullptr);
 
+/// One ray integrated in Mino time as its caller sees it (integrate_kerr_mino, and each lane of the
+/// packet integrator, geodesic_packet.h): the constants and the system of the ray, its θ branch
+/// (passages through the axis), the Boyer–Lindquist view of each accepted step — (x, k) and dk/dλ
+/// of both ends, and their pseudo-Cartesian positions (StepView::p0/p1) from r = 1/w, cos θ = z,
+/// sin θ = ±√(sin²θ) with one sine and cosine, of φ; each end converted once — and the final state.
+/// The system refers to the constants and the branch: constructed in place, never copied.
+struct KerrMinoRay {
+  /// The solver settings of Mino-time integration: step_max only where the scene gave it
+  /// (SolverConfig::step_max_separable).
+  static SolverConfig config(const SolverConfig& cfg);
+  /// The ray through BL (x, k) = y_bl[0..7] at λ = lambda0 around hole (M, a, r_break); writes its
+  /// Mino state to y (KerrMinoRHS::N components). cfg: as config() gives it (for the box).
+  KerrMinoRay(double M, double a, double r_break, const SolverConfig& cfg, const double* y_bl, double lambda0,
+              double* y);
+  KerrMinoRay(const KerrMinoRay&) = delete;
+  KerrMinoRay& operator=(const KerrMinoRay&) = delete;
+
+  KerrMinoConstants c;
+  ThetaBranch branch;
+  KerrMinoSystem sys;
+
+  /// Follows a passage through the axis (L = 0: z turns at ±1) inside the accepted step s.
+  void track_axis(const StepView& s);
+  /// The accepted Mino step s: track_axis, then cb (when given) with the step in BL terms.
+  StepAction step(const StepView& s, StepCallback cb);
+  /// The BL (x, k) of Mino state y (after the last step) to y_bl[0..7].
+  void to_bl_state(const double* y, double* y_bl) const;
+
+ private:
+  void to_bl(const double* y, const double* dy, double* bl, double* dbl, double* p) const;
+  double bl0_[8], dbl0_[8], p0_[3], bl1_[8], dbl1_[8], p1_[3];
+  bool have0_ = false;
+};
+
 /// Integrates a Kerr (a = 0: Schwarzschild) geodesic given in Boyer–Lindquist (x, k) =
 /// y_io[0..7] in Mino time and reports it in BL terms: same SolverConfig meaning (tolerances apply
 /// to the Mino state; step sizes, λ_max and the box are in λ and BL coordinates), same stop
