@@ -342,11 +342,11 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   // motions along geodesics need their worldline sampled, `geovis geodesic` prints the steps — and
   // the objects test such a step whole however long it is (render/local_object.h).
   straight_ = job.metric->info().inertial_cartesian;
-  // Packets (spacetime/geodesic_packet.h): the geodesic system with Cash–Karp in the metric's
-  // coordinates; the Jacobi system, other solvers and Carter's separated equations stay scalar,
-  // and straight rays need no integrator at all.
-  packets_ = system_ == GeodesicSystem::Geodesic && cfg_.kind == SolverKind::CashKarp45 &&
-             !(cfg_.separable && job.metric->has_separable_geodesics()) && !straight_;
+  // Packets (spacetime/geodesic_packet.h): the geodesic system with Cash–Karp, in the metric's
+  // coordinates or through Carter's separated equations (Metric::integrate_packet chooses as
+  // integrate does); the Jacobi system and other solvers stay scalar, and straight rays need no
+  // integrator at all.
+  packets_ = system_ == GeodesicSystem::Geodesic && cfg_.kind == SolverKind::CashKarp45 && !straight_;
 }
 
 TraceResult Tracer::trace_direction(const Vec3& d, TraceStats& stats) const { return trace_direction(d, stats, {}); }
