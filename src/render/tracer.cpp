@@ -154,13 +154,22 @@ StepAction test_step(RayState& rs, const StepView& st) {
   Segment seg;
   seg.x0 = vec4_at(st.y0);
   seg.x1 = vec4_at(st.y1);
+  // The integrator's pseudo-Cartesian ends where it has them (StepView::p0/p1: chart 0).
   if (rs.have_prev) {
     seg.p0 = rs.prev_p;
     seg.chart0 = rs.prev_chart;
+  } else if (st.p0) {
+    seg.p0 = Vec3{st.p0[0], st.p0[1], st.p0[2]};
+    seg.chart0 = 0;
   } else {
     seg.chart0 = mm.to_pseudo_cartesian(seg.x0, seg.p0);
   }
-  seg.chart1 = mm.to_pseudo_cartesian(seg.x1, seg.p1);
+  if (st.p1) {
+    seg.p1 = Vec3{st.p1[0], st.p1[1], st.p1[2]};
+    seg.chart1 = 0;
+  } else {
+    seg.chart1 = mm.to_pseudo_cartesian(seg.x1, seg.p1);
+  }
   seg.step = &st;
   seg.metric = &mm;
   rs.prev_p = seg.p1;
@@ -351,11 +360,11 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   // motions along geodesics need their worldline sampled, `geovis geodesic` prints the steps — and
   // the objects test such a step whole however long it is (render/local_object.h).
   straight_ = job.metric->info().inertial_cartesian;
-  // Packets (spacetime/geodesic_packet.h): the geodesic system with Cash–Karp in the metric's
-  // coordinates; the Jacobi system, other solvers and Carter's separated equations stay scalar,
-  // and straight rays need no integrator at all.
-  packets_ = system_ == GeodesicSystem::Geodesic && cfg_.kind == SolverKind::CashKarp45 &&
-             !(cfg_.separable && job.metric->has_separable_geodesics()) && !straight_;
+  // Packets (spacetime/geodesic_packet.h): the geodesic system with Cash–Karp, in the metric's
+  // coordinates or through Carter's separated equations (Metric::integrate_packet chooses as
+  // integrate does); the Jacobi system and other solvers stay scalar, and straight rays need no
+  // integrator at all.
+  packets_ = system_ == GeodesicSystem::Geodesic && cfg_.kind == SolverKind::CashKarp45 && !straight_;
   if (job.reference_tracing) {
     straight_ = packets_ = false;
     cfg_.escape_radius = std::numeric_limits<double>::infinity();  // SolverConfig: no escape test

@@ -65,7 +65,7 @@ class Tracer {
   /// where packet_tracing() (spacetime/geodesic_packet.h), with the same results to the bit.
   void trace_pixels(std::span<const PixelSample> samples, Color* colors, TraceStats& stats) const;
   /// Light rays go in packets: the geodesic system (Filter RGB, RGBpdz; not RGBjac) with the
-  /// CashKarp45 solver, not through Carter's separated equations.
+  /// CashKarp45 solver, in coordinates or through Carter's separated equations.
   bool packet_tracing() const { return packets_; }
 
   /// Traces the ray leaving the observer in local direction `d` (need not be unit).

@@ -17,6 +17,8 @@
 
 namespace geovis {
 
+#include "spacetime/sincos_reduced.h"  // sincos_reduced: in namespace geovis
+
 #if defined(__GNUC__)
 [[gnu::always_inline]]
 #endif
@@ -27,25 +29,8 @@ fast_sincos(double x, double& s, double& c) {
     c = std::cos(x);
     return;
   }
-  constexpr double kTwoOverPi = 0.63661977236758134308;
-  constexpr double kP1 = 0x1.921fb544p+0, kP2 = 0x1.0b4611a6p-34, kP3 = 0x1.3198a2e037073p-69;
-  constexpr double kRound = 6755399441055744.0;  // 1.5·2^52: adding it rounds to an integer
-  const double n = (x * kTwoOverPi + kRound) - kRound;
-  const double r = ((x - n * kP1) - n * kP2) - n * kP3;
-  const double z = r * r;
-  // (−1)^k / (2k+1)!  and  (−1)^k / (2k)!
-  constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040, s9 = 1.0 / 362880, s11 = -1.0 / 39916800,
-                   s13 = 1.0 / 6227020800.0, s15 = -1.0 / 1307674368000.0, s17 = 1.0 / 355687428096000.0;
-  constexpr double c4 = 1.0 / 24, c6 = -1.0 / 720, c8 = 1.0 / 40320, c10 = -1.0 / 3628800, c12 = 1.0 / 479001600,
-                   c14 = -1.0 / 87178291200.0, c16 = 1.0 / 20922789888000.0, c18 = -1.0 / 6402373705728000.0;
-  // Estrin's scheme: the right-hand side of a geodesic is one long dependency chain from θ to
-  // the next stage, so the latency of the polynomials matters more than their operation count
-  // (depth 4 multiply-adds instead of Horner's 8).
-  const double z2 = z * z, z4 = z2 * z2;
-  const double ps = ((s3 + z * s5) + z2 * (s7 + z * s9)) + z4 * ((s11 + z * s13) + z2 * (s15 + z * s17));
-  const double pc = ((c4 + z * c6) + z2 * (c8 + z * c10)) + z4 * ((c12 + z * c14) + z2 * (c16 + z * c18));
-  const double sr = r + r * z * ps;
-  const double cr = (1.0 - 0.5 * z) + z * z * pc;
+  double n, sr, cr;
+  sincos_reduced(x, n, sr, cr);
   switch (static_cast<long>(n) & 3) {
     case 0: s = sr, c = cr; break;
     case 1: s = cr, c = -sr; break;

@@ -130,6 +130,11 @@ struct StepView {
   const double* dy1;
   int dim;
   int step_index;  ///< 1 for the first accepted step
+  /// Pseudo-Cartesian positions (Metric::to_pseudo_cartesian, 3 components) of the two ends when
+  /// the integrator has them at hand without trigonometry (Carter's equations in Mino time hold
+  /// cos θ and sin²θ: kerr_mino.h), else null.
+  const double* p0 = nullptr;
+  const double* p1 = nullptr;
 };
 enum class StepAction { Continue, Stop };
 using StepCallback = FunctionRef<StepAction(const StepView&)>;

@@ -1,6 +1,9 @@
-// The packet integrator (geodesic_packet.h). The Runge–Kutta attempt (rk_attempt) is compiled once
-// per SIMD instruction set by Highway's foreach_target (this file includes itself per target);
-// the per-lane step control and stop logic is compiled once (the HWY_ONCE part).
+// The packet integrator (geodesic_packet.h). The Runge–Kutta attempt (rk_attempt) and the Mino-time
+// right-hand side are compiled once per SIMD instruction set by Highway's foreach_target (this
+// file includes itself per target); the per-lane step control and stop logic is compiled once
+// (the HWY_ONCE part), as one driver over the system (integrate_lanes): the geodesic system in
+// the metric's coordinates (CoordinatePacket) or Carter's separated equations in Mino time
+// (MinoPacket, kerr_mino.h).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "spacetime/geodesic_packet.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -15,10 +18,14 @@
 #include <cfloat>
 #include <cmath>
 #include <cstring>
+#include <optional>
+#include <type_traits>
 
 #include "core/error.h"
 #include "spacetime/geodesic_packet.h"
 #include "spacetime/integrators.h"
+#include "spacetime/kerr_mino.h"
+#include "spacetime/metric.h"
 #include "spacetime/metric_kernel.h"
 
 namespace geovis {
@@ -32,6 +39,13 @@ inline void packet_rhs(const MetricKernel& m, const double* y, double* dy, unsig
   m.packet_acceleration(y, dy + 4 * kPacketLanes, lanes);
 }
 
+/// The constants of the rays in a packet's lanes (KerrMinoCoeffs, one row per coefficient; the
+/// pole ζ is measured from; axis: all bits set where L = 0), for the SIMD right-hand side.
+struct MinoLaneCoeffs {
+  enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, POLE, AXIS, kRows };
+  alignas(64) double v[kRows][kPacketLanes] = {};
+};
+
 }  // namespace
 }  // namespace geovis
 #endif  // GEOVIS_SPACETIME_GEODESIC_PACKET_ONCE_
@@ -39,28 +53,32 @@ inline void packet_rhs(const MetricKernel& m, const double* y, double* dy, unsig
 HWY_BEFORE_NAMESPACE();
 namespace geovis {
 namespace HWY_NAMESPACE {
+#include "spacetime/kerr_mino_rhs.h"
 
-/// ExplicitRK<CashKarpTableau>::attempt (integrators.h) on all lanes at once: from y, dy = f(y)
-/// and the signed steps h (per lane), the new state y1 and the error estimate e (SoA). The same
-/// operations in the same order as the scalar stepper's rk_detail::stage/weighted:
-///   stage s: tmp_i = y_i + h·(((0 + a_s0 k_0i) + a_s1 k_1i) + …)   (non-zero a only)
+/// ExplicitRK<CashKarpTableau>::attempt (integrators.h) on all lanes at once for a system of N
+/// components whose right-hand side reads the first kCoupled (rk_detail::coupled_dim): from y,
+/// dy = f(y) and the signed steps h (per lane), the new state y1 and the error estimate e (SoA).
+/// The same operations in the same order as the scalar stepper's rk_detail::stage/weighted:
+///   stage s: tmp_i = y_i + h·(((0 + a_s0 k_0i) + a_s1 k_1i) + …)   (non-zero a, i < kCoupled)
 ///   y1_i = y_i + h·Σ_j b_j k_ji,   e_i = h·Σ_j e_j k_ji.
-void rk_attempt(const MetricKernel& m, unsigned lanes, const double* y, const double* dy, const double* h, double* y1,
-                double* e) {
+template <int N, int kCoupled, class Rhs>
+HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* dy, const double* h, double* y1,
+                                 double* e) {
   using Tab = CashKarpTableau;
   constexpr int S = Tab::S, W = kPacketLanes;
   const SimdTag d;
   const size_t L = hn::Lanes(d);
-  HWY_ALIGN double k[S][kDim * W];
+  HWY_ALIGN double k[S][N * W];
   std::memcpy(k[0], dy, sizeof k[0]);
-  HWY_ALIGN double tmp[kDim * W];
+  HWY_ALIGN double tmp[N * W];
+  if constexpr (kCoupled < N) std::memcpy(tmp + kCoupled * W, y + kCoupled * W, (N - kCoupled) * W * sizeof(double));
   // clang-format off
   [&]<int... s>(std::integer_sequence<int, s...>) {
     ([&] {
       constexpr int st = s + 1;
       for (size_t l = 0; l < static_cast<size_t>(W); l += L) {
         const SimdD hv = SimdD::load(h + l);
-        for (int i = 0; i < kDim; ++i) {
+        for (int i = 0; i < kCoupled; ++i) {
           SimdD acc(0.0);
           [&]<int... j>(std::integer_sequence<int, j...>) {
             ([&] {
@@ -70,12 +88,12 @@ void rk_attempt(const MetricKernel& m, unsigned lanes, const double* y, const do
           (SimdD::load(y + i * W + l) + hv * acc).store(tmp + i * W + l);
         }
       }
-      packet_rhs(m, tmp, k[st], lanes);
+      rhs(tmp, k[st]);
     }(), ...);
   }(std::make_integer_sequence<int, S - 1>{});
   for (size_t l = 0; l < static_cast<size_t>(W); l += L) {
     const SimdD hv = SimdD::load(h + l);
-    for (int i = 0; i < kDim; ++i) {
+    for (int i = 0; i < N; ++i) {
       SimdD ab(0.0), ae(0.0);
       [&]<int... j>(std::integer_sequence<int, j...>) {
         ([&] {
@@ -91,6 +109,39 @@ void rk_attempt(const MetricKernel& m, unsigned lanes, const double* y, const do
   }
 }
 
+/// The Cash–Karp attempt on the geodesic system in the metric's coordinates (lanes: those whose
+/// right-hand side is needed, for metrics evaluated lane by lane).
+void rk_attempt(const MetricKernel& m, unsigned lanes, const double* y, const double* dy, const double* h, double* y1,
+                double* e) {
+  rk_attempt_lanes<kDim, kDim>([&](const double* yy, double* dyy) { packet_rhs(m, yy, dyy, lanes); }, y, dy, h, y1, e);
+}
+
+/// kerr_mino_rhs (kerr_mino.h) on every lane: the Mino-time right-hand side, SoA (KerrMinoRHS's
+/// components, kPacketLanes per row).
+HWY_INLINE void mino_rhs_lanes(const MinoLaneCoeffs& c, const double* y, double* dy) {
+  using R = MinoLaneCoeffs;
+  constexpr int N = KerrMinoRHS::N, W = kPacketLanes;
+  const SimdTag d;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
+    KerrMinoCoeffs<SimdD> k{at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
+                            at(R::MU2), at(R::C),      at(R::K),  at(R::A), at(R::B)};
+    const SimdMask axis{hn::Ne(at(R::AXIS).v, hn::Zero(d))};
+    SimdD ys[N], dys[N];
+    for (int i = 0; i < N; ++i) ys[i] = SimdD::load(y + i * W + l);
+    HWY_NAMESPACE::kerr_mino_rhs(k, axis, at(R::POLE), ys, dys);  // this target's copy
+    for (int i = 0; i < N; ++i) dys[i].store(dy + i * W + l);
+  }
+}
+
+void mino_rhs(const MinoLaneCoeffs& c, const double* y, double* dy) { mino_rhs_lanes(c, y, dy); }
+
+/// The Cash–Karp attempt on the Mino-time system (t, φ, λ are quadratures: KerrMinoRHS::kCoupled).
+void mino_attempt(const MinoLaneCoeffs& c, const double* y, const double* dy, const double* h, double* y1, double* e) {
+  rk_attempt_lanes<KerrMinoRHS::N, KerrMinoRHS::kCoupled>(
+      [&](const double* yy, double* dyy) { mino_rhs_lanes(c, yy, dyy); }, y, dy, h, y1, e);
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -99,37 +150,64 @@ HWY_AFTER_NAMESPACE();
 namespace geovis {
 
 HWY_EXPORT(rk_attempt);
+HWY_EXPORT(mino_rhs);
+HWY_EXPORT(mino_attempt);
 
 namespace {
 
 /// One lane's run of integrate_with<ExplicitRK<CashKarpTableau>> (its local variables there).
+template <int N>
 struct Lane {
   bool live = false;
   double lambda = 0, h = 0, hstep = 0, h_cross = 0, err = 0;
+  double hmax = 0, hmin = 0, affine0 = 0, remaining = 0;
+  int affine_retries = 0;
   bool after_reject = false, clipped = false;
   StepController<CashKarpTableau::kErrExp> control;  ///< ExplicitRK::control
   GeodesicResult res;
+  double inv_tol[N] = {};  ///< ErrorScale::inv of systems with their own tolerance scales
 };
 
-}  // namespace
+/// Integrates the rays of `rays` on the lanes of packet system PS, each lane exactly as
+/// integrate_with<ExplicitRK<CashKarpTableau>> (integrators.h) integrates PS's scalar system of the
+/// lane from λ = 0: the same steps, checks and stops in the same order (the optional parts —
+/// own affine parameter, scaled tolerance, projection, re-basing — chosen by the same `requires`).
+/// PS provides
+///   N                                   the state's dimension;
+///   system(l)                           the scalar system of lane l (integrators.h concept);
+///   start(l, y_start, y)                the ray's state from its start (8 components: x, k);
+///                                       false when it handled the ray itself (done already called);
+///   rhs(y, dy, lanes), attempt(lanes, y, dy, h, y1, e)   SoA right-hand side and Cash–Karp attempt;
+///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
+///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies.
+template <class PS>
+void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
+  constexpr int W = kPacketLanes, N = PS::N;
+  using Sys = std::remove_cvref_t<decltype(ps.system(0))>;
+  constexpr bool kOwnAffine = requires(const Sys& s, const double* p) {
+    s.affine(p);
+    s.param_per_affine(p);
+  };
+  constexpr bool kScaledTol = requires(const Sys& s, const double* p, double* q) { s.tolerance_inv_scale(p, q); };
+  auto affine = [](const Sys& s, const double* yy, double sv) {
+    if constexpr (kOwnAffine) return s.affine(yy);
+    return sv;
+  };
+  auto per_affine = [](const Sys& s, const double* yy) {
+    if constexpr (kOwnAffine) return s.param_per_affine(yy);
+    return 1.0;
+  };
 
-void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& cfg, const PacketRays& rays) {
-  validate_solver_config(cfg);
-  if (cfg.kind != SolverKind::CashKarp45) throw Error("packet integrator: only the CashKarp45 solver");
-  constexpr int W = kPacketLanes, N = kDim;
-  GeodesicRHS<MetricKernel> f{metric};
-  const MetricSystem<MetricKernel, GeodesicRHS<MetricKernel>> sys{metric, f};
-
-  // integrate_with's constants (no own affine parameter, no scaled tolerance, λ0 = 0).
+  // integrate_with's constants (λ0 = 0).
   const double dir = cfg.direction >= 0 ? 1.0 : -1.0;
   const bool adaptive = cfg.step_ctrl;
-  const ErrorScale tol{cfg.eps_abs, cfg.eps_rel};
-  const double hmax = std::max(cfg.step_max, cfg.step_min), hmin = cfg.step_min;
-  const double h_first = std::max(std::min(std::fabs(cfg.step_size), hmax), hmin);
+  const double hmax_affine = std::max(cfg.step_max, cfg.step_min);
+  const double inv_eps_abs = 1.0 / cfg.eps_abs;
+  const double lambda_res = kOwnAffine && std::isfinite(cfg.lambda_max) ? 1e-12 * cfg.lambda_max : 0.0;
   constexpr double kBoundaryRes = 1.0 / 1024;
 
   HWY_ALIGN double y[N * W] = {}, dy[N * W] = {}, y1[N * W] = {}, dy1[N * W] = {}, e[N * W] = {}, hv[W] = {};
-  Lane lane[W];
+  Lane<N> lane[W];
   bool exhausted = false;
   unsigned need_dy = 0;  // lanes whose dy = f(y) is still to be evaluated (fresh rays)
   unsigned ready = 0;    // lanes whose next trial step is set up (hv)
@@ -140,17 +218,29 @@ void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& c
   auto put = [](double* soa, int l, const double* in) {
     for (int i = 0; i < N; ++i) soa[i * W + l] = in[i];
   };
+  // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step.
+  auto set_tolerance = [&](int l, const double* yl) {
+    if constexpr (kScaledTol) {
+      double* inv = lane[l].inv_tol;
+      ps.system(l).tolerance_inv_scale(yl, inv);
+      if (cfg.eps_rel == 0.0) {
+        for (int i = 0; i < N; ++i) inv[i] *= inv_eps_abs;
+      } else {
+        for (int i = 0; i < N; ++i) inv[i] = 1.0 / (cfg.eps_abs / inv[i] + cfg.eps_rel * std::fabs(yl[i]));
+      }
+    }
+  };
   // integrate_with's finish(): the result with the state where the ray stopped.
   auto finish = [&](int l, StopReason r) {
-    Lane& ln = lane[l];
+    Lane<N>& ln = lane[l];
     double yl[N];
     get(y, l, yl);
     ln.res.reason = r;
-    ln.res.lambda = ln.lambda;
+    ln.res.lambda = affine(ps.system(l), yl, ln.lambda);
     double scale;
-    sys.constraint(yl, cfg.type, ln.res.constraint_drift, scale);
+    ps.system(l).constraint(yl, cfg.type, ln.res.constraint_drift, scale);
     ln.live = false;
-    rays.done(l, yl, ln.res);
+    ps.done(l, yl, ln.res);
   };
   // Fills lane l with the next ray (integrate_with's set-up); rays that stop before their first
   // step are finished at once.
@@ -158,15 +248,23 @@ void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& c
     const unsigned bit = 1u << l;
     ready &= ~bit;
     while (!exhausted) {
-      double yl[N];
-      if (!rays.next(l, yl)) {
+      double ys[kDim], yl[N];
+      if (!rays.next(l, ys)) {
         exhausted = true;
         break;
       }
+      if (!ps.start(l, ys, yl)) continue;
       put(y, l, yl);
-      lane[l] = Lane{};
-      lane[l].live = true;
-      lane[l].h = h_first;
+      Lane<N>& ln = lane[l];
+      ln = Lane<N>{};
+      ln.live = true;
+      const Sys& sys = ps.system(l);
+      set_tolerance(l, yl);
+      const double ppa = per_affine(sys, yl);
+      ln.hmax = hmax_affine * ppa;
+      ln.hmin = cfg.step_min * ppa;
+      ln.h = std::max(std::min(std::fabs(cfg.step_size), hmax_affine) * ppa, ln.hmin);
+      ln.affine0 = affine(sys, yl, 0.0);
       if (!sys.valid(yl)) {
         finish(l, StopReason::Invalid);
         continue;
@@ -185,29 +283,37 @@ void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& c
     // Every live lane set up for a trial step (the top of integrate_with's loop).
     do {
       if (need_dy) {
-        packet_rhs(metric, y, dy, need_dy);
+        ps.rhs(y, dy, need_dy);
         for (int l = 0; l < W; ++l)
           if (need_dy >> l & 1u) ++lane[l].res.rhs_evals;
         need_dy = 0;
       }
       for (int l = 0; l < W; ++l) {
-        Lane& ln = lane[l];
+        Lane<N>& ln = lane[l];
         if (!ln.live || (ready >> l & 1u)) continue;
         if (ln.res.steps >= cfg.max_steps) {
           finish(l, StopReason::MaxSteps);
           refill(l);
           continue;
         }
-        const double remaining = cfg.lambda_max - std::fabs(ln.lambda - 0.0);
-        if (!(remaining > 0.0)) {
+        double yl[N];
+        if constexpr (kOwnAffine) get(y, l, yl);
+        const Sys& sys = ps.system(l);
+        ln.remaining = cfg.lambda_max - std::fabs(affine(sys, yl, ln.lambda) - ln.affine0);
+        if (!(ln.remaining > lambda_res)) {
           finish(l, StopReason::LambdaMax);
           refill(l);
           continue;
         }
         ln.hstep = ln.h;
         ln.clipped = false;
-        if (ln.hstep >= remaining) {
-          ln.hstep = remaining;
+        const double ppa = per_affine(sys, yl);
+        if constexpr (kOwnAffine) {
+          ln.hmax = hmax_affine * ppa;
+          ln.hmin = cfg.step_min * ppa;
+        }
+        if (ln.hstep >= ln.remaining * ppa) {
+          ln.hstep = ln.remaining * ppa;
           ln.clipped = true;
         }
         hv[l] = dir * ln.hstep;
@@ -216,17 +322,19 @@ void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& c
     } while (need_dy);
     if (!ready) return;
 
-    // Looked up per call: before the first dispatch the table entry is Highway's target chooser.
-    HWY_DYNAMIC_DISPATCH(rk_attempt)(metric, ready, y, dy, hv, y1, e);
+    ps.attempt(ready, y, dy, hv, y1, e);
     unsigned accepted = 0;
     for (int l = 0; l < W; ++l) {
       if (!(ready >> l & 1u)) continue;
-      Lane& ln = lane[l];
+      Lane<N>& ln = lane[l];
+      auto& sys = ps.system(l);
       ln.res.rhs_evals += CashKarpTableau::S - 1;
       double yl[N], yl1[N], el[N];
       get(y, l, yl);
       get(y1, l, yl1);
       get(e, l, el);
+      ErrorScale tol{cfg.eps_abs, cfg.eps_rel};
+      if constexpr (kScaledTol) tol.inv = ln.inv_tol;
       ln.err = tol.norm<N>(el, yl);
       bool finite = true;
       for (int i = 0; i < N; ++i) finite = finite && std::isfinite(yl1[i]);
@@ -249,23 +357,46 @@ void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& c
         }
         ln.h = in_domain ? ln.control.next(ln.hstep, ln.err, false, ln.after_reject) : 0.5 * ln.hstep;
         ln.after_reject = true;
-        if (ln.h < hmin || ln.h <= 4 * DBL_EPSILON * std::fabs(ln.lambda)) {
+        if (ln.h < ln.hmin || ln.h <= 4 * DBL_EPSILON * std::fabs(ln.lambda)) {
           finish(l, !finite ? StopReason::NotFinite : (!in_domain ? StopReason::Invalid : StopReason::StepUnderflow));
           refill(l);
         }
         continue;
       }
+      if constexpr (kOwnAffine) {
+        // λ_max overshot, or a step longer than step_max in λ: retried shorter (integrate_with).
+        const double dl = std::fabs(sys.affine(yl1) - sys.affine(yl));
+        if (ln.affine_retries < 50) {
+          if (std::isfinite(cfg.lambda_max) && dl > ln.remaining * (1.0 + 1e-12)) {
+            ln.h = ln.hstep * ln.remaining / dl;
+            ++ln.affine_retries;
+            ready &= ~(1u << l);
+            continue;
+          }
+          if (dl > hmax_affine * (1.0 + 1e-12)) {
+            ln.h = ln.hstep * hmax_affine / dl * (1.0 - 1e-9);
+            ++ln.affine_retries;
+            ready &= ~(1u << l);
+            continue;
+          }
+        }
+        ln.affine_retries = 0;
+        ln.clipped = dl >= ln.remaining * (1.0 - 1e-12);
+      }
       if (cfg.reproject) sys.reproject(yl1, cfg.type);
-      sys.rescale(yl1, cfg.type);
+      if constexpr (requires { sys.project_invariants(yl1); }) sys.project_invariants(yl1);
+      if constexpr (requires { sys.rescale(yl1, cfg.type); }) sys.rescale(yl1, cfg.type);
       put(y1, l, yl1);
       accepted |= 1u << l;
     }
     if (!accepted) continue;
 
-    packet_rhs(metric, y1, dy1, accepted);
+    // Cash–Karp is not first-same-as-last: f at every accepted state (integrate_with).
+    ps.rhs(y1, dy1, accepted);
     for (int l = 0; l < W; ++l) {
       if (!(accepted >> l & 1u)) continue;
-      Lane& ln = lane[l];
+      Lane<N>& ln = lane[l];
+      auto& sys = ps.system(l);
       ready &= ~(1u << l);
       ++ln.res.rhs_evals;
       double yl[N], yl1[N], dyl[N], dyl1[N];
@@ -281,12 +412,14 @@ void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& c
         continue;
       }
       ++ln.res.steps;
-      const double lambda1 = ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
-      StepAction act = StepAction::Continue;
-      if (rays.on_step) act = rays.on_step(l, StepView{ln.lambda, lambda1, yl, yl1, dyl, dyl1, N, ln.res.steps});
+      const double lambda1 = !kOwnAffine && ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
+      const StepAction act = ps.step(
+          l, StepView{affine(sys, yl, ln.lambda), affine(sys, yl1, lambda1), yl, yl1, dyl, dyl1, N, ln.res.steps});
+      if constexpr (requires { ps.rebase(l, yl1); }) ps.rebase(l, yl1);
       put(y, l, yl1);
       put(dy, l, dyl1);
       ln.lambda = lambda1;
+      set_tolerance(l, yl1);
       StopReason stop = StopReason::None;
       if (act == StepAction::Stop)
         stop = StopReason::Callback;
@@ -303,11 +436,108 @@ void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& c
         refill(l);
         continue;
       }
-      if (adaptive) ln.h = std::min(hmax, std::max(ln.control.next(ln.hstep, ln.err, true, ln.after_reject), hmin));
+      if (adaptive)
+        ln.h = std::min(ln.hmax, std::max(ln.control.next(ln.hstep, ln.err, true, ln.after_reject), ln.hmin));
+      if (!adaptive && kOwnAffine) ln.h = std::fabs(cfg.step_size) * per_affine(sys, yl1);
       if (!ln.after_reject) ln.h_cross = 0.0;
       ln.after_reject = false;
     }
   }
+}
+
+/// The geodesic system y = (x, k) in the metric's coordinates (MetricSystem), the same for all
+/// lanes.
+struct CoordinatePacket {
+  static constexpr int N = kDim;
+  const MetricKernel& metric;
+  const PacketRays& rays;
+  GeodesicRHS<MetricKernel> f{metric};
+  MetricSystem<MetricKernel, GeodesicRHS<MetricKernel>> sys{metric, f};
+
+  const MetricSystem<MetricKernel, GeodesicRHS<MetricKernel>>& system(int) const { return sys; }
+  bool start(int, const double* ys, double* y) const {
+    std::memcpy(y, ys, N * sizeof(double));
+    return true;
+  }
+  void rhs(const double* y, double* dy, unsigned lanes) const { packet_rhs(metric, y, dy, lanes); }
+  void attempt(unsigned lanes, const double* y, const double* dy, const double* h, double* y1, double* e) const {
+    // Looked up per call: before the first dispatch the table entry is Highway's target chooser.
+    HWY_DYNAMIC_DISPATCH(rk_attempt)(metric, lanes, y, dy, h, y1, e);
+  }
+  StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
+  void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
+};
+
+/// Carter's separated equations in Mino time (kerr_mino.h), one ray (KerrMinoRay) per lane.
+struct MinoPacket {
+  static constexpr int N = KerrMinoRHS::N;
+  const Metric& metric;
+  const KerrMinoParams hole;
+  const SolverConfig& cfg_in;  ///< the caller's settings (for rays handed to metric.integrate)
+  const SolverConfig& cfg;     ///< KerrMinoRay::config(cfg_in)
+  const PacketRays& rays;
+  std::optional<KerrMinoRay> ray[kPacketLanes];
+  MinoLaneCoeffs coeffs;
+
+  KerrMinoSystem& system(int l) { return ray[l]->sys; }
+  /// The ray from BL (x, k); one that starts outside the metric's validity domain goes to
+  /// metric.integrate, as in MetricCRTP::integrate.
+  bool start(int l, const double* ys, double* y) {
+    if (!metric.is_valid(Vec4{{ys[0], ys[1], ys[2], ys[3]}})) {
+      double yy[kMaxSystemDim] = {};
+      std::memcpy(yy, ys, kDim * sizeof(double));
+      auto cb = [&](const StepView& s) { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; };
+      const GeodesicResult res = metric.integrate(cfg_in, GeodesicSystem::Geodesic, yy, 0.0, cb);
+      rays.done(l, yy, res);
+      return false;
+    }
+    const KerrMinoRay& r = ray[l].emplace(hole.mass, hole.a, hole.r_break, cfg, ys, 0.0, y);
+    using R = MinoLaneCoeffs;
+    const KerrMinoConstants& c = r.c;
+    const double row[R::kRows] = {
+        c.M, c.a, c.a2, c.E, c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0};
+    for (int i = 0; i < R::kRows; ++i) coeffs.v[i][l] = row[i];
+    return true;
+  }
+  void rhs(const double* y, double* dy, unsigned) const { HWY_DYNAMIC_DISPATCH(mino_rhs)(coeffs, y, dy); }
+  void attempt(unsigned, const double* y, const double* dy, const double* h, double* y1, double* e) const {
+    HWY_DYNAMIC_DISPATCH(mino_attempt)(coeffs, y, dy, h, y1, e);
+  }
+  StepAction step(int l, const StepView& s) {
+    if (!rays.on_step) return ray[l]->step(s, {});
+    auto cb = [&](const StepView& bl) { return rays.on_step(l, bl); };
+    return ray[l]->step(s, cb);
+  }
+  void rebase(int l, double* y) {
+    ray[l]->sys.rebase(y);
+    coeffs.v[MinoLaneCoeffs::POLE][l] = ray[l]->sys.f.polar.pole;
+  }
+  void done(int l, const double* y, const GeodesicResult& res) {
+    double ys[kDim];
+    ray[l]->to_bl_state(y, ys);
+    rays.done(l, ys, res);
+  }
+};
+
+void require_cash_karp(const SolverConfig& cfg) {
+  validate_solver_config(cfg);
+  if (cfg.kind != SolverKind::CashKarp45) throw Error("packet integrator: only the CashKarp45 solver");
+}
+
+}  // namespace
+
+void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& cfg, const PacketRays& rays) {
+  require_cash_karp(cfg);
+  CoordinatePacket ps{metric, rays};
+  integrate_lanes(ps, cfg, rays);
+}
+
+void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole, const SolverConfig& cfg,
+                                const PacketRays& rays) {
+  require_cash_karp(cfg);
+  const SolverConfig mino_cfg = KerrMinoRay::config(cfg);
+  MinoPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}};
+  integrate_lanes(ps, mino_cfg, rays);
 }
 
 }  // namespace geovis

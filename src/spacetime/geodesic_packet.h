@@ -21,7 +21,9 @@
 
 namespace geovis {
 
+class Metric;
 class MetricKernel;
+struct KerrMinoParams;
 
 /// Lanes of a packet: one AVX-512 vector of doubles, two AVX2 vectors, four SSE4 vectors.
 constexpr int kPacketLanes = 8;
@@ -42,5 +44,13 @@ struct PacketRays {
 /// metric's coordinates, not the separated Mino-time form) from `rays.next` until it has no more,
 /// starting each at λ = 0. Allocates nothing.
 void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& cfg, const PacketRays& rays);
+
+/// The same for a metric of the Kerr family (MetricCRTP::kSeparable) through Carter's separated
+/// equations in Mino time (kerr_mino.h), one ray per lane: each ray exactly as
+/// integrate_kerr_mino(hole.mass, hole.a, hole.r_break, cfg, y, 0, on_step) integrates it, the
+/// states handed to `rays` in Boyer–Lindquist (x, k). A ray starting outside the metric's validity
+/// domain goes to metric.integrate (which stops it there). Allocates nothing.
+void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole, const SolverConfig& cfg,
+                                const PacketRays& rays);
 
 }  // namespace geovis

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "spacetime/fast_math.h"
+
 namespace geovis {
 
 namespace {
@@ -102,68 +104,98 @@ void kerr_mino_to_bl(const KerrMinoConstants& c, const PolarOffset& polar, const
               (ddph * sigma - dy[I::PHI] * dsig) * i3}};
 }
 
-GeodesicResult integrate_kerr_mino(double M, double a, double r_break, const SolverConfig& cfg_in, double* y_io,
-                                   double lambda0, StepCallback cb) {
+SolverConfig KerrMinoRay::config(const SolverConfig& cfg_in) {
   SolverConfig cfg = cfg_in;
   if (!cfg_in.step_max_separable) cfg.step_max = SolverConfig{}.step_max;
-  const Vec4 x0{{y_io[0], y_io[1], y_io[2], y_io[3]}};
-  const Vec4 k0{{y_io[4], y_io[5], y_io[6], y_io[7]}};
-  const double mu2 = -constraint_target(cfg.type);
-  const KerrMinoConstants c = kerr_mino_constants(M, a, x0, k0, mu2);
-  double y[KerrMinoRHS::N];
-  const PolarOffset polar0 = kerr_mino_from_bl(c, x0, k0, lambda0, y);
-  KerrMinoSystem sys{c, KerrMinoRHS{c, polar0}, 1.0 / r_break};
-  ThetaBranch branch = ThetaBranch::through(x0[2]);
-  sys.set_box(cfg, branch);
-  // A turning point of z at the axis (L = 0) inside step s: the ray went through the pole.
-  auto track_axis = [&](const StepView& s) {
-    using I = KerrMinoRHS;
-    const double z1 = sys.f.polar.z(s.y1[I::Z]);
-    if (c.axis && s.y0[I::DZ] * s.y1[I::DZ] < 0.0 && z1 * s.y1[I::DZ] < 0.0) branch.cross_axis(z1);
-  };
+  return cfg;
+}
 
-  // BL view of the previous step end (the start of the next step).
-  double bl0[8], bl1[8], dbl0[8], dbl1[8];
-  bool have0 = false;
-  auto to_bl = [&](const double* ym, const double* dym, double* bl, double* dbl) {
-    Vec4 x, kk, acc;
-    kerr_mino_to_bl(c, sys.f.polar, ym, dym, branch, x, kk, &acc);
-    for (int i = 0; i < 4; ++i) {
-      bl[i] = x[i];
-      bl[4 + i] = kk[i];
-      dbl[i] = kk[i];
-      dbl[4 + i] = acc[i];
-    }
-  };
-  auto on_step = [&](const StepView& s) -> StepAction {
-    if (!have0) to_bl(s.y0, s.dy0, bl0, dbl0);
-    track_axis(s);
-    to_bl(s.y1, s.dy1, bl1, dbl1);
-    StepAction act = StepAction::Continue;
-    if (cb) act = cb(StepView{s.lambda0, s.lambda1, bl0, bl1, dbl0, dbl1, 8, s.step_index});
-    for (int i = 0; i < 8; ++i) {
-      bl0[i] = bl1[i];
-      dbl0[i] = dbl1[i];
-    }
-    have0 = true;
-    return act;
-  };
-  auto axis_only = [&](const StepView& s) {
+namespace {
+KerrMinoConstants ray_constants(double M, double a, const double* y_bl, double mu2) {
+  return kerr_mino_constants(M, a, Vec4{{y_bl[0], y_bl[1], y_bl[2], y_bl[3]}},
+                             Vec4{{y_bl[4], y_bl[5], y_bl[6], y_bl[7]}}, mu2);
+}
+}  // namespace
+
+KerrMinoRay::KerrMinoRay(double M, double a, double r_break, const SolverConfig& cfg, const double* y_bl,
+                         double lambda0, double* y)
+    : c(ray_constants(M, a, y_bl, -constraint_target(cfg.type))),
+      branch(ThetaBranch::through(y_bl[2])),
+      sys{c,
+          KerrMinoRHS{c, kerr_mino_from_bl(c, Vec4{{y_bl[0], y_bl[1], y_bl[2], y_bl[3]}},
+                                           Vec4{{y_bl[4], y_bl[5], y_bl[6], y_bl[7]}}, lambda0, y)},
+          1.0 / r_break} {
+  sys.set_box(cfg, branch);
+}
+
+void KerrMinoRay::track_axis(const StepView& s) {
+  // A turning point of z at the axis (L = 0) inside step s: the ray went through the pole.
+  using I = KerrMinoRHS;
+  const double z1 = sys.f.polar.z(s.y1[I::Z]);
+  if (c.axis && s.y0[I::DZ] * s.y1[I::DZ] < 0.0 && z1 * s.y1[I::DZ] < 0.0) branch.cross_axis(z1);
+}
+
+void KerrMinoRay::to_bl(const double* ym, const double* dym, double* bl, double* dbl, double* p) const {
+  using I = KerrMinoRHS;
+  Vec4 x, kk, acc;
+  kerr_mino_to_bl(c, sys.f.polar, ym, dym, branch, x, kk, &acc);
+  for (int i = 0; i < 4; ++i) {
+    bl[i] = x[i];
+    bl[4 + i] = kk[i];
+    dbl[i] = kk[i];
+    dbl[4 + i] = acc[i];
+  }
+  // Pseudo-Cartesian r (sin θ cos φ, sin θ sin φ, cos θ) (Metric::to_pseudo_cartesian) without θ:
+  // cos θ = z, sin θ = s·√(1 − z²) on the branch θ = offset + s·acos z (offset a multiple of 2π).
+  const double r = x[1], z = std::clamp(sys.f.polar.z(ym[I::Z]), -1.0, 1.0);
+  const double st = branch.sign * std::sqrt(std::max(0.0, sys.f.polar.sin2(ym[I::Z])));
+  double sp, cp;
+  fast_sincos(x[3], sp, cp);
+  p[0] = r * st * cp;
+  p[1] = r * st * sp;
+  p[2] = r * z;
+}
+
+StepAction KerrMinoRay::step(const StepView& s, StepCallback cb) {
+  if (!cb) {
     track_axis(s);
     return StepAction::Continue;
-  };
-  // Without a caller's callback only the axis passages need watching (the BL view is not built).
-  const GeodesicResult res = cb       ? integrate_dispatch(sys, cfg, y, lambda0, on_step)
-                             : c.axis ? integrate_dispatch(sys, cfg, y, lambda0, axis_only)
-                                      : integrate_dispatch(sys, cfg, y, lambda0, StepCallback{});
+  }
+  // The BL view of the previous step end is the start of this step.
+  if (!have0_) to_bl(s.y0, s.dy0, bl0_, dbl0_, p0_);
+  track_axis(s);
+  to_bl(s.y1, s.dy1, bl1_, dbl1_, p1_);
+  const StepAction act = cb(StepView{s.lambda0, s.lambda1, bl0_, bl1_, dbl0_, dbl1_, 8, s.step_index, p0_, p1_});
+  for (int i = 0; i < 8; ++i) {
+    bl0_[i] = bl1_[i];
+    dbl0_[i] = dbl1_[i];
+  }
+  for (int i = 0; i < 3; ++i) p0_[i] = p1_[i];
+  have0_ = true;
+  return act;
+}
+
+void KerrMinoRay::to_bl_state(const double* y, double* y_bl) const {
   double dy[KerrMinoRHS::N];
   sys(y, dy);
   Vec4 x, kk;
   kerr_mino_to_bl(c, sys.f.polar, y, dy, branch, x, kk);
   for (int i = 0; i < 4; ++i) {
-    y_io[i] = x[i];
-    y_io[4 + i] = kk[i];
+    y_bl[i] = x[i];
+    y_bl[4 + i] = kk[i];
   }
+}
+
+GeodesicResult integrate_kerr_mino(double M, double a, double r_break, const SolverConfig& cfg_in, double* y_io,
+                                   double lambda0, StepCallback cb) {
+  const SolverConfig cfg = KerrMinoRay::config(cfg_in);
+  double y[KerrMinoRHS::N];
+  KerrMinoRay ray(M, a, r_break, cfg, y_io, lambda0, y);
+  auto on_step = [&](const StepView& s) { return ray.step(s, cb); };
+  // Without a caller's callback only the axis passages need watching (the BL view is not built).
+  const GeodesicResult res = cb || ray.c.axis ? integrate_dispatch(ray.sys, cfg, y, lambda0, on_step)
+                                              : integrate_dispatch(ray.sys, cfg, y, lambda0, StepCallback{});
+  ray.to_bl_state(y, y_io);
   return res;
 }
 

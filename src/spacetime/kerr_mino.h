@@ -80,33 +80,7 @@ inline T select(bool cond, const T& x, const T& y) {
   return cond ? x : y;
 }
 
-/// The right-hand side of the Mino-time system (file comment) for state y = (w, ζ, w', z', t, φ, λ),
-/// z = pole + ζ, on any number type T; `axis` (L == 0: a bool, or a lane mask) picks the form
-/// without 1/sin²θ. One formula for one ray (KerrMinoRHS), for packets and for dual numbers.
-template <class T, class Cond, class Pole>
-GEOVIS_HOT_INLINE void kerr_mino_rhs(const KerrMinoCoeffs<T>& k, const Cond& axis, const Pole& pole, const T* y,
-                                     T* dy) {
-  enum { W = 0, Z = 1, DW = 2, DZ = 3, TT = 4, PHI = 5, LAM = 6 };
-  const T w = y[W], z = pole + y[Z];
-  const T w2 = w * w, z2 = z * z;
-  const T D = 1.0 - 2.0 * k.M * w + k.a2 * w2;  // Δ/r²
-  const T P = k.E + k.c * w2;                   // P/r²
-  const T muK = k.mu2 + k.K * w2;
-  const T s2 = -y[Z] * (2.0 * pole + y[Z]);  // sin²θ = 1 − z² (PolarOffset::sin2)
-  // One division: 1/(w² D s²) gives 1/D, 1/w² and 1/sin²θ. On the axis branch sin²θ may vanish and
-  // 1/sin²θ multiplies L = 0: it is left out (the factor 1 is exact, so both branches keep their bits).
-  const T s2d = select(axis, T(1.0), s2);
-  const T inv = 1.0 / (w2 * D * s2d);
-  const T iD = inv * w2 * s2d, iw2 = inv * D * s2d;
-  const T is2 = select(axis, T(0.0), inv * w2 * D);
-  dy[TT] = (1.0 + k.a2 * w2) * P * iD * iw2 + k.a * k.L - k.a2 * k.E * s2;
-  dy[W] = y[DW];
-  dy[Z] = y[DZ];
-  dy[PHI] = k.a * P * iD - k.a * k.E + k.L * is2;
-  dy[LAM] = iw2 + k.a2 * z2;
-  dy[DW] = 2.0 * k.c * w * P + (k.M - k.a2 * w) * muK - k.K * w * D;
-  dy[DZ] = -(k.B + 2.0 * k.A * z2) * z;
-}
+#include "spacetime/kerr_mino_rhs.h"  // kerr_mino_rhs: in namespace geovis
 
 /// The constants of one Kerr geodesic and the derived polynomial coefficients (file comment).
 struct KerrMinoConstants : KerrMinoCoeffs<double> {
@@ -423,6 +397,40 @@ PolarOffset kerr_mino_from_bl(const KerrMinoConstants& c, const Vec4& x, const V
 /// (the geodesic acceleration, from the Mino derivatives) when dk is given.
 void kerr_mino_to_bl(const KerrMinoConstants& c, const PolarOffset& polar, const double* y, const double* dy,
                      const ThetaBranch& b, Vec4& x, Vec4& k, Vec4* dk = nullptr);
+
+/// One ray integrated in Mino time as its caller sees it (integrate_kerr_mino, and each lane of the
+/// packet integrator, geodesic_packet.h): the constants and the system of the ray, its θ branch
+/// (passages through the axis), the Boyer–Lindquist view of each accepted step — (x, k) and dk/dλ
+/// of both ends, and their pseudo-Cartesian positions (StepView::p0/p1) from r = 1/w, cos θ = z,
+/// sin θ = ±√(sin²θ) with one sine and cosine, of φ; each end converted once — and the final state.
+/// The system refers to the constants and the branch: constructed in place, never copied.
+struct KerrMinoRay {
+  /// The solver settings of Mino-time integration: step_max only where the scene gave it
+  /// (SolverConfig::step_max_separable).
+  static SolverConfig config(const SolverConfig& cfg);
+  /// The ray through BL (x, k) = y_bl[0..7] at λ = lambda0 around hole (M, a, r_break); writes its
+  /// Mino state to y (KerrMinoRHS::N components). cfg: as config() gives it (for the box).
+  KerrMinoRay(double M, double a, double r_break, const SolverConfig& cfg, const double* y_bl, double lambda0,
+              double* y);
+  KerrMinoRay(const KerrMinoRay&) = delete;
+  KerrMinoRay& operator=(const KerrMinoRay&) = delete;
+
+  KerrMinoConstants c;
+  ThetaBranch branch;
+  KerrMinoSystem sys;
+
+  /// Follows a passage through the axis (L = 0: z turns at ±1) inside the accepted step s.
+  void track_axis(const StepView& s);
+  /// The accepted Mino step s: track_axis, then cb (when given) with the step in BL terms.
+  StepAction step(const StepView& s, StepCallback cb);
+  /// The BL (x, k) of Mino state y (after the last step) to y_bl[0..7].
+  void to_bl_state(const double* y, double* y_bl) const;
+
+ private:
+  void to_bl(const double* y, const double* dy, double* bl, double* dbl, double* p) const;
+  double bl0_[8], dbl0_[8], p0_[3], bl1_[8], dbl1_[8], p1_[3];
+  bool have0_ = false;
+};
 
 /// Integrates a Kerr (a = 0: Schwarzschild) geodesic given in Boyer–Lindquist (x, k) =
 /// y_io[0..7] in Mino time and reports it in BL terms: same SolverConfig meaning (tolerances apply

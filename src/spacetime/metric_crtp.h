@@ -140,6 +140,9 @@ class MetricCRTP : public Metric {
   }
 
   void integrate_packet(const SolverConfig& cfg, const PacketRays& rays) const override {
+    if constexpr (kSeparable) {
+      if (cfg.separable) return integrate_kerr_mino_packet(*this, self().kerr_mino_params(), cfg, rays);
+    }
     integrate_geodesic_packet(MetricKernel::of(self()), cfg, rays);
   }
 

@@ -10,8 +10,8 @@
 //
 // Bit-identical to the scalar path: every operator is one IEEE operation per lane (Highway's
 // Mul, Add, Div, Sqrt; no fused multiply-add: files that include this header are compiled with
-// -ffp-contract=off, CMakeLists.txt), and sin/cos are fast_math.h's polynomial evaluated with the
-// same operations in the same order (fast_sincos), so a formula written once as a template gives
+// -ffp-contract=off, CMakeLists.txt), and sin/cos are fast_math.h's polynomial, the same template
+// (sincos_reduced.h), so a formula written once as a template gives
 // the same bits per lane as on doubles.
 #if defined(GEOVIS_SPACETIME_SIMD_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef GEOVIS_SPACETIME_SIMD_H_
@@ -81,8 +81,10 @@ HWY_API SimdD fabs(SimdD a) { return SimdD(hn::Abs(a.v)); }
 HWY_API SimdD min(SimdD a, SimdD b) { return SimdD(hn::Min(a.v, b.v)); }
 HWY_API SimdD max(SimdD a, SimdD b) { return SimdD(hn::Max(a.v, b.v)); }
 
-/// fast_sincos (fast_math.h) lane by lane: the same reduction and the same Estrin polynomials,
-/// operation for operation, so each lane equals fast_sincos of that lane to the bit. Lanes outside
+#include "spacetime/sincos_reduced.h"  // sincos_reduced: this target's copy
+
+/// fast_sincos (fast_math.h) lane by lane: the same reduction and the same Estrin polynomials
+/// (sincos_reduced), operation for operation, so each lane equals fast_sincos of that lane to the bit. Lanes outside
 /// |x| < 1e5 (and NaN) take fast_sincos's own route through std::sin/std::cos.
 HWY_API void sincos_t(SimdD x, SimdD& s, SimdD& c) {
   const SimdTag d;
@@ -95,21 +97,8 @@ HWY_API void sincos_t(SimdD x, SimdD& s, SimdD& c) {
     c = SimdD(hn::Load(d, cs));
     return;
   }
-  constexpr double kTwoOverPi = 0.63661977236758134308;
-  constexpr double kP1 = 0x1.921fb544p+0, kP2 = 0x1.0b4611a6p-34, kP3 = 0x1.3198a2e037073p-69;
-  constexpr double kRound = 6755399441055744.0;
-  const SimdD n = (x * kTwoOverPi + kRound) - kRound;
-  const SimdD r = ((x - n * kP1) - n * kP2) - n * kP3;
-  const SimdD z = r * r;
-  constexpr double s3 = -1.0 / 6, s5 = 1.0 / 120, s7 = -1.0 / 5040, s9 = 1.0 / 362880, s11 = -1.0 / 39916800,
-                   s13 = 1.0 / 6227020800.0, s15 = -1.0 / 1307674368000.0, s17 = 1.0 / 355687428096000.0;
-  constexpr double c4 = 1.0 / 24, c6 = -1.0 / 720, c8 = 1.0 / 40320, c10 = -1.0 / 3628800, c12 = 1.0 / 479001600,
-                   c14 = -1.0 / 87178291200.0, c16 = 1.0 / 20922789888000.0, c18 = -1.0 / 6402373705728000.0;
-  const SimdD z2 = z * z, z4 = z2 * z2;
-  const SimdD ps = ((s3 + z * s5) + z2 * (s7 + z * s9)) + z4 * ((s11 + z * s13) + z2 * (s15 + z * s17));
-  const SimdD pc = ((c4 + z * c6) + z2 * (c8 + z * c10)) + z4 * ((c12 + z * c14) + z2 * (c16 + z * c18));
-  const SimdD sr = r + r * z * ps;
-  const SimdD cr = (1.0 - 0.5 * z) + z * z * pc;
+  SimdD n, sr, cr;
+  sincos_reduced(x, n, sr, cr);
   // Quadrant q = n mod 4: q odd swaps sin and cos; sin is negated for q = 2, 3, cos for q = 1, 2.
   const hn::RebindToSigned<SimdTag> di;
   const auto q = hn::ConvertTo(di, n.v);

@@ -129,6 +129,19 @@ TEST(TracerPackets, SchwarzschildCoordinateFormSameAsScalar) { expect_packets_eq
 
 TEST(TracerPackets, LaneByLaneMetricSameAsScalar) { expect_packets_equal_scalar(reissner_nordstrom_job(24, 24)); }
 
+// Carter's separated equations in Mino time (the default for these metrics), one ray per lane:
+// the step ends come with their pseudo-Cartesian positions (StepView::p0/p1), as on the scalar path.
+TEST(TracerPackets, MinoTimeSameAsScalar) {
+  RenderJob job = schwarzschild_job(24, 24);
+  job.solver.separable = true;
+  expect_packets_equal_scalar(job);
+  RenderJob kerr = job_for("KerrBL", Vec4{{0, 30, std::numbers::pi / 2 - 0.2, 0.3}}, Vec3{0, 0, 0}, 8.0, 24, 24);
+  kerr.solver.separable = true;
+  kerr.solver.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
+  kerr.solver.box_ur = Vec4{{1e300, 60, 1e300, 1e300}};
+  expect_packets_equal_scalar(kerr);
+}
+
 // The renderer traces a tile's samples in packets when the tracer can: the image (2×2
 // supersampling) and the data of the pixel centres equal the per-pixel scalar trace.
 TEST(TracerPackets, RendererImageEqualsPerPixelScalarTrace) {
@@ -164,14 +177,14 @@ TEST(TracerPackets, RendererImageEqualsPerPixelScalarTrace) {
   }
 }
 
-// Scenes where the tracer must stay scalar: Carter's separated equations, the Jacobi system,
-// another solver; and Minkowski, whose rays are straight lines without an integrator.
+// Scenes where the tracer must stay scalar: the Jacobi system, another solver; and Minkowski,
+// whose rays are straight lines without an integrator.
 TEST(TracerPackets, ScalarWhereThePacketIntegratorDoesNotApply) {
   RenderJob flat = job_for("Minkowski", Vec4{{0, 20, 0.5, 0}}, Vec3{0, 1, 0}, 5.0, 4, 4);
   EXPECT_FALSE(Tracer(flat).packet_tracing());
   RenderJob job = schwarzschild_job(4, 4);
   job.solver.separable = true;
-  EXPECT_FALSE(Tracer(job).packet_tracing());
+  EXPECT_TRUE(Tracer(job).packet_tracing());
   job.solver.separable = false;
   job.filter = Filter::RGBjac;
   EXPECT_FALSE(Tracer(job).packet_tracing());

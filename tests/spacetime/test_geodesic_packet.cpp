@@ -206,11 +206,17 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
 }  // namespace
 
 // (a) Every metric of the registry: 11 rays (one full packet and a refill) from the sample
-// position, bit-identical to the scalar integrator on every target.
+// position, bit-identical to the scalar integrator on every target; KerrBL and Schwarzschild also
+// through Carter's separated equations in Mino time (kerr_mino.h), their default.
 TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
   const auto m = make_metric(GetParam());
   const auto y0 = fan(*m, 11);
   for_every_target([&] { expect_packet_equals_scalar(*m, packet_config(), y0); });
+  if (m->has_separable_geodesics()) {
+    SolverConfig cfg = packet_config();
+    cfg.separable = true;
+    for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0); });
+  }
   EXPECT_GE(hwy::SupportedAndGeneratedTargets().size(), 2u) << "no SIMD target besides the scalar emulation";
 }
 
@@ -229,7 +235,41 @@ TEST(GeodesicPacket, RefilledLanesGiveEachRayItsScalarResult) {
   const auto y0 = fan(*m, 37);
   std::vector<int> stop_at(y0.size(), 0);
   for (size_t i = 0; i < y0.size(); i += 5) stop_at[i] = 1 + static_cast<int>(i % 17);
-  for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0, stop_at); });
+  for (const bool separable : {false, true}) {
+    SCOPED_TRACE(separable ? "Mino time" : "coordinate form");
+    cfg.separable = separable;
+    for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0, stop_at); });
+  }
+}
+
+// The parts of Mino-time integration a fan of rays may miss, each lane equal to its scalar run:
+// rays with L = 0 through the polar axis (θ branch switched, KerrMinoRay::track_axis), a θ range
+// in the bounding box, λ_max reached by the secant retries and a step_max in λ (its retries), the
+// equator crossed (re-based pole), and a ray starting inside the horizon (handed to
+// Metric::integrate, which stops it there).
+TEST(GeodesicPacket, MinoTimeAxisBoxLambdaMaxAndStepMax) {
+  const auto m = make_metric("KerrBL");
+  const auto s = make_metric("Schwarzschild");
+  SolverConfig cfg = packet_config();
+  cfg.separable = true;
+  cfg.max_steps = 400;
+  cfg.lambda_max = 25.0;
+  cfg.step_max_separable = true;
+  cfg.step_max = 1.5;
+  cfg.box_ll = Vec4{{-1e9, 0, -2.0, -1e9}};
+  cfg.box_ur = Vec4{{1e9, 40.0, 5.0, 1e9}};
+  // Schwarzschild: k^φ = 0 is L = 0 (local directions in the (r, θ) plane of the tetrad).
+  const Vec4 x{{0, 10, 1.0, 0.3}};
+  const Tetrad e = s->natural_tetrad(x, TetradKind::Default);
+  std::vector<std::array<double, 8>> y0;
+  for (int i = 0; i < 9; ++i) {
+    const double al = 0.7 * i;
+    const Vec4 k = local_null_direction(e, Vec3{std::cos(al), std::sin(al), 0.0});
+    y0.push_back({x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]});
+  }
+  y0.push_back({0, 1.5, 1.0, 0.0, -1.0, 0.1, 0.0, 0.0});  // inside the horizon r = 2
+  for_every_target([&] { expect_packet_equals_scalar(*s, cfg, y0); });
+  for_every_target([&] { expect_packet_equals_scalar(*m, cfg, fan(*m, 13)); });
 }
 
 // Fixed step (no error control), λ_max clipping and a bounding box, on KerrBL's coordinate form.

@@ -1,0 +1,34 @@
+// The right-hand side of the Mino-time system (kerr_mino.h) as one template over the number type.
+// Included (no include guard) by kerr_mino.h into namespace geovis, for doubles and dual numbers,
+// and by the packet integrator (geodesic_packet.cpp) into each SIMD target's namespace
+// (geovis::HWY_NAMESPACE), where its instantiation on SimdD must be compiled with that target's
+// instruction set: a template defined outside the target's region would be compiled for the
+// baseline and could not inline Highway's operations (as metrics/kerr_bl_accel.h).
+
+/// The right-hand side of the Mino-time system (kerr_mino.h) for state y = (w, ζ, w', z', t, φ, λ),
+/// z = pole + ζ, on any number type T; `axis` (L == 0: a bool, or a lane mask) picks the form
+/// without 1/sin²θ. One formula for one ray (KerrMinoRHS), for packets and for dual numbers.
+template <class T, class Cond, class Pole>
+GEOVIS_HOT_INLINE void kerr_mino_rhs(const KerrMinoCoeffs<T>& k, const Cond& axis, const Pole& pole, const T* y,
+                                     T* dy) {
+  enum { W = 0, Z = 1, DW = 2, DZ = 3, TT = 4, PHI = 5, LAM = 6 };
+  const T w = y[W], z = pole + y[Z];
+  const T w2 = w * w, z2 = z * z;
+  const T D = 1.0 - 2.0 * k.M * w + k.a2 * w2;  // Δ/r²
+  const T P = k.E + k.c * w2;                   // P/r²
+  const T muK = k.mu2 + k.K * w2;
+  const T s2 = -y[Z] * (2.0 * pole + y[Z]);  // sin²θ = 1 − z² (PolarOffset::sin2)
+  // One division: 1/(w² D s²) gives 1/D, 1/w² and 1/sin²θ. On the axis branch sin²θ may vanish and
+  // 1/sin²θ multiplies L = 0: it is left out (the factor 1 is exact, so both branches keep their bits).
+  const T s2d = select(axis, T(1.0), s2);
+  const T inv = 1.0 / (w2 * D * s2d);
+  const T iD = inv * w2 * s2d, iw2 = inv * D * s2d;
+  const T is2 = select(axis, T(0.0), inv * w2 * D);
+  dy[TT] = (1.0 + k.a2 * w2) * P * iD * iw2 + k.a * k.L - k.a2 * k.E * s2;
+  dy[W] = y[DW];
+  dy[Z] = y[DZ];
+  dy[PHI] = k.a * P * iD - k.a * k.E + k.L * is2;
+  dy[LAM] = iw2 + k.a2 * z2;
+  dy[DW] = 2.0 * k.c * w * P + (k.M - k.a2 * w) * muK - k.K * w * D;
+  dy[DZ] = -(k.B + 2.0 * k.A * z2) * z;
+}
