@@ -65,7 +65,7 @@ int run_check(const CheckArgs& a, const GlobalOptions& g) {
   return 0;
 }
 
-void setup(CLI::App& app, GlobalOptions& g) {
+void setup_check(CLI::App& app, GlobalOptions& g) {
   auto a = std::make_shared<CheckArgs>();
   CLI::App* sub = app.add_subcommand("check", "evaluate a scene and build every frame without rendering");
   sub->add_option("scene", a->scene, "GeoViS scene file (.scm)")->required();
@@ -88,7 +88,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
   });
 }
 
-const bool registered = register_command("check", &setup);
+const bool check_registered = register_command("check", &setup_check);
 
 }  // namespace
 

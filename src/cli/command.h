@@ -21,7 +21,9 @@ struct GlobalOptions {
 /// Adds the subcommand to `app`; its callback runs the command and sets opts.exit_code.
 using CommandSetup = void (*)(CLI::App& app, GlobalOptions& opts);
 
-/// Registers a subcommand (call from a namespace-scope initializer in the command's file).
+/// Registers a subcommand (call from a namespace-scope initializer in the command's file, named
+/// `<command>_registered` with the setup function `setup_<command>`: the command files are compiled
+/// as one unity unit, CMakeLists.txt).
 bool register_command(const char* name, CommandSetup setup);
 
 /// Runs the program (also used by tests). No arguments = `geovis render` of the built-in scene.

@@ -236,7 +236,7 @@ int run_geodesic(const GeodesicArgs& a) {
   return 0;
 }
 
-void setup(CLI::App& app, GlobalOptions& g) {
+void setup_geodesic(CLI::App& app, GlobalOptions& g) {
   auto a = std::make_shared<GeodesicArgs>();
   CLI::App* sub = app.add_subcommand("geodesic", "integrate one geodesic and print every step (CSV or JSON)");
   sub->footer(
@@ -282,7 +282,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
   });
 }
 
-const bool registered = register_command("geodesic", &setup);
+const bool geodesic_registered = register_command("geodesic", &setup_geodesic);
 
 }  // namespace
 

@@ -125,7 +125,7 @@ int run_metrics(bool json) {
   return 0;
 }
 
-void setup(CLI::App& app, GlobalOptions& g) {
+void setup_metrics(CLI::App& app, GlobalOptions& g) {
   auto json = std::make_shared<bool>(false);
   auto info = std::make_shared<std::string>();
   CLI::App* sub = app.add_subcommand(
@@ -140,7 +140,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
   });
 }
 
-const bool registered = register_command("metrics", &setup);
+const bool metrics_registered = register_command("metrics", &setup_metrics);
 
 }  // namespace
 

@@ -106,7 +106,7 @@ int run_post(const PostArgs& a, const GlobalOptions& g) {
   return 0;
 }
 
-void setup(CLI::App& app, GlobalOptions& g) {
+void setup_post(CLI::App& app, GlobalOptions& g) {
   auto a = std::make_shared<PostArgs>();
   CLI::App* sub = app.add_subcommand(
       "post", "pictures and numbers from a data file without re-tracing (redshift, disk flux, time, lensing, stop)");
@@ -129,7 +129,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->callback([a, &g]() { g.exit_code = run_post(*a, g); });
 }
 
-const bool registered = register_command("post", &setup);
+const bool post_registered = register_command("post", &setup_post);
 
 }  // namespace
 

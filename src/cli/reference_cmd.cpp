@@ -12,7 +12,7 @@ namespace geovis::cli {
 
 namespace {
 
-void setup(CLI::App& app, GlobalOptions& g) {
+void setup_reference(CLI::App& app, GlobalOptions& g) {
   auto out = std::make_shared<std::string>();
   CLI::App* sub = app.add_subcommand("reference", "print the scene reference: every command, type and key (Markdown)");
   sub->add_option("-o,--output", *out, "write it to this file instead of standard output");
@@ -28,7 +28,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
   });
 }
 
-const bool registered = register_command("reference", &setup);
+const bool reference_registered = register_command("reference", &setup_reference);
 
 }  // namespace
 

@@ -641,7 +641,7 @@ int run_render_in_mpi_job(const RenderArgs& a, const GlobalOptions& g) {
   }
 }
 
-void setup(CLI::App& app, GlobalOptions& g) {
+void setup_render(CLI::App& app, GlobalOptions& g) {
   auto a = std::make_shared<RenderArgs>();
   CLI::App* sub = app.add_subcommand("render", "render a scene (the built-in scene without SCENE)");
   sub->add_option("scene", a->scene, "GeoViS scene file (.scm)");
@@ -685,7 +685,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
   });
 }
 
-const bool registered = register_command("render", &setup);
+const bool render_registered = register_command("render", &setup_render);
 
 }  // namespace
 

@@ -48,7 +48,7 @@ int run_view(const ViewArgs& a, const GlobalOptions& g) {
   return 0;
 }
 
-void setup(CLI::App& app, GlobalOptions& g) {
+void setup_view(CLI::App& app, GlobalOptions& g) {
   auto a = std::make_shared<ViewArgs>();
   CLI::App* sub = app.add_subcommand(
       "view", "explore a data file in the browser: channels, colour maps, post shaders, and each pixel's light ray");
@@ -62,7 +62,7 @@ void setup(CLI::App& app, GlobalOptions& g) {
   sub->callback([a, &g]() { g.exit_code = run_view(*a, g); });
 }
 
-const bool registered = register_command("view", &setup);
+const bool view_registered = register_command("view", &setup_view);
 
 }  // namespace
 

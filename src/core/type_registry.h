@@ -5,14 +5,15 @@
 // per-frame change may set, its capabilities and its factory. The builder, `geovis check`, the
 // "did you mean" suggestions and the scene reference (docs/scene-reference.md) read these tables.
 //
-// Registration: a type's .cpp file defines `const TypeRegistrar<Entry> registrar{...};` at
-// namespace scope; its constructor runs during static initialisation and adds the entry. The
-// registry itself is a function-local static, so it exists before the first registrar uses it
-// whatever the initialisation order of the files. Because nothing else may reference such a file,
-// a static library would let the linker drop it; the layers that hold registrars (geovis_spacetime,
-// geovis_render) are therefore linked with WHOLE_ARCHIVE (CMakeLists.txt, `geovis_whole`), and
-// tests/core/test_type_registry.cpp plus each kind's test check that the expected names are there.
-// Entries are kept sorted by name, so listings and the reference do not depend on link order.
+// Registration: a type's .cpp file defines `const TypeRegistrar<Entry> <file>_registrar{...};` at
+// namespace scope (named after its file: the files of a layer are compiled in unity units, where
+// anonymous-namespace names must not clash; CMakeLists.txt); its constructor runs during static initialisation and adds
+// the entry. The registry itself is a function-local static, so it exists before the first registrar uses it whatever
+// the initialisation order of the files. Because nothing else may reference such a file, a static library would let the
+// linker drop it; the layers that hold registrars (geovis_spacetime, geovis_render) are therefore linked with
+// WHOLE_ARCHIVE (CMakeLists.txt, `geovis_whole`), and tests/core/test_type_registry.cpp plus each kind's test check
+// that the expected names are there. Entries are kept sorted by name, so listings and the reference do not depend on
+// link order.
 #pragma once
 
 #include <algorithm>

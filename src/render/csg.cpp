@@ -150,7 +150,7 @@ SceneObjectPtr make_csg(const ParamReader& keys, BuildContext& ctx) {
 
 // GeoViS lets a per-frame change set a CSG object's transform; ours has none yet (its solids'
 // normals are computed in their own parent frame), so such a change is an error, not ignored.
-const TypeRegistrar<ObjectType> registrar{
+const TypeRegistrar<ObjectType> csg_registrar{
     {{"csg-object",
       {},
       "union, difference or intersection of two solids",

@@ -80,7 +80,7 @@ void DomeCamera::set_param(std::string_view name, const Value& value) {
 
 namespace {
 // GeoViS 2PICam (docs/geovis-catalogue.md §2): square, only res[0] is used.
-const TypeRegistrar<CameraType> registrar{
+const TypeRegistrar<CameraType> dome_camera_registrar{
     {{"2PICam",
       {},
       "dome (fisheye) camera: the half sky around heading and pitch on a square image",

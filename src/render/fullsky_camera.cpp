@@ -35,7 +35,7 @@ void FullSkyCamera::set_param(std::string_view name, const Value& value) {
 
 namespace {
 // GeoViS 4PICam (docs/geovis-catalogue.md §2).
-const TypeRegistrar<CameraType> registrar{
+const TypeRegistrar<CameraType> fullsky_camera_registrar{
     {{"4PICam",
       {},
       "full-sky camera: equirectangular image of all directions",

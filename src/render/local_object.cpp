@@ -599,7 +599,7 @@ SceneObjectPtr make_local_comp(const ParamReader& keys, BuildContext& ctx) {
   });
 }
 
-const TypeRegistrar<ObjectType> registrar{
+const TypeRegistrar<ObjectType> local_object_registrar{
     {{"local-comp-object",
       {},
       "objects given in a local tetrad frame, riding on a motion",

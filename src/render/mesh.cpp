@@ -135,7 +135,7 @@ bool MeshObject::intersect(const Segment& seg, Hit& hit) const {
 
 namespace {
 
-const TypeRegistrar<ObjectType> registrar{
+const TypeRegistrar<ObjectType> mesh_registrar{
     {{"mesh-obj",
       {},
       "a triangle mesh from a Wavefront OBJ file",

@@ -51,7 +51,7 @@ void PanoramaCamera::set_param(std::string_view name, const Value& value) {
 
 namespace {
 // GeoViS PanoramaCam (docs/geovis-catalogue.md §2).
-const TypeRegistrar<CameraType> registrar{
+const TypeRegistrar<CameraType> panorama_camera_registrar{
     {{"PanoramaCam",
       {},
       "panorama camera: cylindrical mapping of longitude and latitude around dir",

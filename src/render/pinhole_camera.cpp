@@ -79,7 +79,7 @@ void PinholeCamera::set_param(std::string_view name, const Value& value) {
 
 namespace {
 // GeoViS PinHoleCam (docs/geovis-catalogue.md §2).
-const TypeRegistrar<CameraType> registrar{
+const TypeRegistrar<CameraType> pinhole_camera_registrar{
     {{"PinHoleCam",
       {},
       "pinhole camera: perspective image of the viewing direction dir",

@@ -6,7 +6,7 @@ namespace geovis {
 
 namespace {
 
-const TypeRegistrar<LightType> registrar{
+const TypeRegistrar<LightType> point_light_registrar{
     {{"PointLight",
       {},
       "a point light at an event, with colour and distance attenuation",

@@ -37,7 +37,7 @@ Vec3 PinholeStereoCamera::eye_offset(Eye eye) const {
 
 namespace {
 // GeoViS PinHoleStereoCam (docs/geovis-catalogue.md §2): two images, eyes at -+sep/2.
-const TypeRegistrar<CameraType> registrar{
+const TypeRegistrar<CameraType> stereo_camera_registrar{
     {{"PinHoleStereoCam",
       {},
       "two pinhole cameras (left and right eye), one image each",

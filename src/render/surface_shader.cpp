@@ -49,7 +49,7 @@ Color SurfaceShader::shade(const Hit& hit, const ShadeContext& ctx) const {
 namespace {
 
 // GeoViS SurfShader (docs/geovis-catalogue.md §6).
-const TypeRegistrar<ShaderType> registrar{
+const TypeRegistrar<ShaderType> surface_shader_registrar{
     {{"SurfShader",
       {},
       "object colour from a texture, ambient and diffuse reflection, point lights",

@@ -47,13 +47,6 @@
 
 namespace geovis {
 
-/// Forces inlining of the per-stage right-hand side into the Runge–Kutta stages (GCC/Clang).
-#if defined(__GNUC__)
-#define GEOVIS_HOT_INLINE [[gnu::always_inline]] inline
-#else
-#define GEOVIS_HOT_INLINE inline
-#endif
-
 // ---- ODE systems -------------------------------------------------------------------------------
 
 /// Geodesic equation in coordinates, d²x^μ/dλ² = −Γ^μ_{ab} k^a k^b (y = x, k). Uses the metric's
@@ -215,9 +208,10 @@ inline void all_stages(F& f, const double* y, double h, double (&k)[S][N]) {
 /// and takes the smaller proposal: when the error grows steadily from step to step (a ray falling
 /// towards a black hole), the standard rule keeps proposing steps that are then rejected.
 /// x^(1/q) (x > 0 finite) for the step-size controllers: square roots for q = 2, 4, 8 (DOP853),
-/// a division-free Newton iteration for q = 5, std::pow otherwise (a libm call per step).
+/// a division-free Newton iteration for q = 5, std::pow otherwise (a libm call per step). Always
+/// inlined, like StepController::next below.
 template <int q>
-inline double root_q(double x) {
+GEOVIS_HOT_INLINE double root_q(double x) {
   if constexpr (q == 5) {
     // err^(1/5) for the 4(5) pairs: y = x^(−1/5) by Newton's iteration y ← y (6 − x y⁵)/5
     // (no division) from the bit-pattern estimate 2^(−log2(x)/5) (within 9 %; the error e goes
@@ -265,7 +259,9 @@ struct StepController {
   static constexpr double kSafety = 0.9, kMaxGrow = 5.0, kMaxShrink = 0.2;
   double h_old = 0, q_old = 0;  ///< last accepted step and its err^(1/q̂); h_old = 0: none yet
 
-  double next(double h, double err, bool accepted, bool after_reject) {
+  // Always inlined: the per-metric integrator (metric_crtp.h) is its only caller in a metric file,
+  // but in a unity unit of several metrics (CMakeLists.txt) GCC stopped inlining it.
+  GEOVIS_HOT_INLINE double next(double h, double err, bool accepted, bool after_reject) {
     h = std::fabs(h);
     double fac, q = 0;
     if (!(err > 0.0)) {
@@ -319,7 +315,7 @@ struct ExplicitRK {
     }
     return false;
   }
-  double next_step(double h, double err, bool accepted, bool after_reject) {
+  GEOVIS_HOT_INLINE double next_step(double h, double err, bool accepted, bool after_reject) {
     if constexpr (kHasErrorEstimate) return control.next(h, err, accepted, after_reject);
     return std::fabs(h);
   }

@@ -16,7 +16,7 @@ namespace geovis {
 
 namespace {
 
-std::string num(double v) {
+std::string worldline_num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.10g", v);
   return buf;
@@ -53,7 +53,7 @@ WorldlineMotion::WorldlineMotion(std::shared_ptr<const Metric> metric, std::vect
       throw Error("Worldline motion: the curve parameter (" +
                   std::string(given_params ? "tau" : "coordinate time x^0") +
                   ") must increase strictly from event to event, but event " + std::to_string(i) + " has " +
-                  num(p_[i]) + " after " + num(p_[i - 1]));
+                  worldline_num(p_[i]) + " after " + worldline_num(p_[i - 1]));
 
   // Natural cubic spline per coordinate (second derivatives zero at both ends): solve the
   // tridiagonal system h_{i-1} M_{i-1} + 2(h_{i-1}+h_i) M_i + h_i M_{i+1} = 6(Δ_i − Δ_{i-1})
@@ -94,7 +94,7 @@ WorldlineMotion::WorldlineMotion(std::shared_ptr<const Metric> metric, std::vect
       const double nn = minus_norm2(m, x, dx);
       if (!(nn > 0))
         throw Error("Worldline motion: the worldline is not timelike between events " + std::to_string(i) + " and " +
-                    std::to_string(i + 1) + " (g(dx/dp, dx/dp) = " + num(-nn) + " >= 0)");
+                    std::to_string(i + 1) + " (g(dx/dp, dx/dp) = " + worldline_num(-nn) + " >= 0)");
       s += gw[q] * std::sqrt(nn);
     }
     tau_[i + 1] = tau_[i] + 0.5 * (b - a) * s;
@@ -152,7 +152,8 @@ WorldlineState WorldlineMotion::state_at_param(double p) const {
   Mat4 g;
   m.metric_tensor(x, g);
   const double nn = -dot(g, dx, dx);
-  if (!(nn > 0)) throw Error("Worldline motion: the interpolated worldline is not timelike at parameter " + num(p));
+  if (!(nn > 0))
+    throw Error("Worldline motion: the interpolated worldline is not timelike at parameter " + worldline_num(p));
   WorldlineState w;
   w.x = x;
   w.u = (1.0 / std::sqrt(nn)) * dx;

@@ -5,6 +5,14 @@
 #include <array>
 #include <cmath>
 
+/// Forces inlining of the per-stage right-hand side into the Runge–Kutta stages (integrators.h) and
+/// of the metric functions it calls (GCC/Clang).
+#if defined(__GNUC__)
+#define GEOVIS_HOT_INLINE [[gnu::always_inline]] inline
+#else
+#define GEOVIS_HOT_INLINE inline
+#endif
+
 namespace geovis {
 
 template <class T>

@@ -23,6 +23,7 @@
 #include "cli/command.h"
 #include "core/hash.h"
 #include "io/image.h"
+#include "support/run_geovis.h"
 
 namespace geovis::cli {
 namespace {
@@ -39,12 +40,7 @@ std::vector<fs::path> example_scenes() {
   return out;
 }
 
-int run_args(std::vector<std::string> args) {
-  args.insert(args.begin(), "geovis");
-  std::vector<const char*> argv;
-  for (auto& a : args) argv.push_back(a.c_str());
-  return run(static_cast<int>(argv.size()), argv.data());
-}
+using testing_support::run_args;
 
 TEST(Examples, EachPassesCheckStrictWithoutWarnings) {
   const auto scenes = example_scenes();

@@ -22,6 +22,7 @@
 #include "scene/scheme.h"
 #include "spacetime/horizon.h"
 #include "spacetime/kerr_mino.h"
+#include "support/run_geovis.h"
 
 namespace geovis::cli {
 namespace {
@@ -42,12 +43,7 @@ class FidelityScene : public ::testing::TestWithParam<const char*> {
   fs::path dir_;
 };
 
-int run_args(std::vector<std::string> args) {
-  args.insert(args.begin(), "geovis");
-  std::vector<const char*> argv;
-  for (auto& a : args) argv.push_back(a.c_str());
-  return run(static_cast<int>(argv.size()), argv.data());
-}
+using testing_support::run_args;
 
 int to8(double v) { return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
 bool is_colour8(const float* p, const Color& c) {
@@ -64,9 +60,9 @@ bool is_colour8(const float* p, const Color& c) {
 /// positive on all of [r₊(1 + 10⁻⁶), r_obs] and it starts inward, so r decreases monotonically to the
 /// horizon (Carter, Phys. Rev. 174 (1968) 1559; KerrMinoConstants::radial_potential_positive_on), and
 /// no object lies on its way (or, where that certificate is inconclusive, the geodesic integrated
-/// without a scene stops at the horizon break radius). Such a pixel of the reference is set to the constraint colour; any
-/// other difference is left for the match rule. Returns the number of corrected pixels; a differing
-/// pixel that cannot be proven is a failure.
+/// without a scene stops at the horizon break radius). Such a pixel of the reference is set to the constraint colour;
+/// any other difference is left for the match rule. Returns the number of corrected pixels; a differing pixel that
+/// cannot be proven is a failure.
 int correct_rays_into_the_hole(const fs::path& scene, const Image& image, Image& reference) {
   BuildOptions opts;
   opts.search_paths = {scene.parent_path().string()};
@@ -128,7 +124,8 @@ TEST_P(FidelityScene, MatchesGeoViSReference) {
   ASSERT_EQ(rc, 0) << err;
   const Image image = read_image(out);
   int corrected = 0;
-  if (name == "kerrAccretionDisk_jac") corrected = correct_rays_into_the_hole(kData / (name + ".scm"), image, reference);
+  if (name == "kerrAccretionDisk_jac")
+    corrected = correct_rays_into_the_hole(kData / (name + ".scm"), image, reference);
   const ImageMatch m = match_images(image, reference);
   std::printf("%-22s %s (render %.1f s)", name.c_str(), m.summary().c_str(), seconds);
   if (corrected) std::printf(", %d reference pixels of rays into the hole set to the constraint colour", corrected);

@@ -19,7 +19,7 @@ struct Output {
   std::string out, err;
 };
 
-Output run_args(std::vector<std::string> args) {
+Output run_captured(std::vector<std::string> args) {
   args.insert(args.begin(), "geovis");
   std::vector<const char*> argv;
   for (auto& a : args) argv.push_back(a.c_str());
@@ -57,9 +57,9 @@ TEST(GeodesicCmd, ReproducesRadialLightTravelTime) {
   // Both forms of the equations: Carter's in Mino time (default) and the coordinate geodesic equation.
   for (const std::string eq : {"separable", "coordinate"}) {
     SCOPED_TRACE(eq);
-    const Output o =
-        run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5707963267948966,0", "--dir", "1,0,0",
-                  "--forward", "--lambda-max", kLambdaTo30, "--eps-abs", "1e-10", "--equations", eq, "--no-escape"});
+    const Output o = run_captured({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5707963267948966,0",
+                                   "--dir", "1,0,0", "--forward", "--lambda-max", kLambdaTo30, "--eps-abs", "1e-10",
+                                   "--equations", eq, "--no-escape"});
     ASSERT_EQ(o.code, 0) << o.err;
     const auto ls = lines(o.out);
     ASSERT_GE(ls.size(), 4u);
@@ -76,16 +76,16 @@ TEST(GeodesicCmd, ReproducesRadialLightTravelTime) {
     EXPECT_NEAR(last[1] - first[1], expected, 1e-8);  // what the tolerance actually delivers
     for (size_t i = 1; i + 1 < ls.size(); ++i) EXPECT_LT(std::fabs(csv_numbers(ls[i])[9]), 1e-9) << ls[i];
   }
-  EXPECT_NE(run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5,0", "--dir", "1,0,0", "--equations",
-                      "carter"})
+  EXPECT_NE(run_captured({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5,0", "--dir", "1,0,0",
+                          "--equations", "carter"})
                 .code,
             0);
 }
 
 TEST(GeodesicCmd, BackwardRayIsPastDirectedByDefault) {
   // Without --forward the ray is traced backwards in time, as the renderer does: t decreases.
-  const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5707963267948966,0", "--dir",
-                             "1,0,0", "--lambda-max", "5", "--solver", "DP54"});
+  const Output o = run_captured({"geodesic", "--metric", "Schwarzschild", "--pos", "0,6,1.5707963267948966,0", "--dir",
+                                 "1,0,0", "--lambda-max", "5", "--solver", "DP54"});
   ASSERT_EQ(o.code, 0) << o.err;
   const auto ls = lines(o.out);
   const auto last = csv_numbers(ls[ls.size() - 2]);
@@ -94,8 +94,8 @@ TEST(GeodesicCmd, BackwardRayIsPastDirectedByDefault) {
 }
 
 TEST(GeodesicCmd, CapturedRayStopsAtTheHorizon) {
-  const Output o = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", "0,10,1.5707963267948966,0", "--dir",
-                             "-1,0,0", "--forward", "--eps-rel", "1e-8", "--solver", "DOP853"});
+  const Output o = run_captured({"geodesic", "--metric", "Schwarzschild", "--pos", "0,10,1.5707963267948966,0", "--dir",
+                                 "-1,0,0", "--forward", "--eps-rel", "1e-8", "--solver", "DOP853"});
   ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_EQ(lines(o.out).back(), "# stop: horizon");
 }
@@ -107,7 +107,7 @@ TEST(GeodesicCmd, EscapingRayStopsEscapedAtAModestRadius) {
   for (const std::string eq : {"separable", "coordinate"}) {
     SCOPED_TRACE(eq);
     const Output o =
-        run_args({"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "1,0,0", "--equations", eq});
+        run_captured({"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "1,0,0", "--equations", eq});
     ASSERT_EQ(o.code, 0) << o.err;
     const auto ls = lines(o.out);
     EXPECT_LT(ls.size(), 10u);
@@ -120,29 +120,30 @@ TEST(GeodesicCmd, EscapingRayStopsEscapedAtAModestRadius) {
     EXPECT_GT(radius, 10.0);
     EXPECT_LT(radius, 20.0);
 
-    const Output o2 = run_args({"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "0.3,1,0",
-                                "--equations", eq, "--escape-radius", "100"});
+    const Output o2 = run_captured({"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "0.3,1,0",
+                                    "--equations", eq, "--escape-radius", "100"});
     ASSERT_EQ(o2.code, 0) << o2.err;
     ASSERT_EQ(std::sscanf(lines(o2.out).back().c_str(), "# stop: escaped at radius %lf", &radius), 1) << o2.out;
     EXPECT_GT(radius, 100.0);
     EXPECT_LT(radius, 1000.0);
   }
   // JSON: radius and λ.
-  const Output j = run_args({"geodesic", "--metric", "KerrBL", "--pos", pos, "--dir", "1,0.2,0", "--format", "json"});
+  const Output j =
+      run_captured({"geodesic", "--metric", "KerrBL", "--pos", pos, "--dir", "1,0.2,0", "--format", "json"});
   ASSERT_EQ(j.code, 0) << j.err;
   const auto js = nlohmann::json::parse(j.out);
   EXPECT_EQ(js["stop"], "escaped");
   EXPECT_EQ(js["escape"]["radius"], js["points"].back()["x"][1]);
   EXPECT_EQ(js["escape"]["lambda"], js["points"].back()["lambda"]);
   // --no-escape: as before, no escape.
-  const Output n = run_args(
+  const Output n = run_captured(
       {"geodesic", "--metric", "Schwarzschild", "--pos", pos, "--dir", "1,0,0", "--no-escape", "--max-steps", "50"});
   ASSERT_EQ(n.code, 0) << n.err;
   EXPECT_EQ(lines(n.out).back(), "# stop: max-steps");
 }
 
 TEST(GeodesicCmd, HelpStatesTheStopReasons) {
-  const Output o = run_args({"geodesic", "--help"});
+  const Output o = run_captured({"geodesic", "--help"});
   EXPECT_EQ(o.code, 0);
   for (const char* r : {"escaped", "horizon", "bounding-box", "lambda-max", "max-steps", "constraint", "step-underflow",
                         "not-finite", "--escape-radius", "--no-escape"})
@@ -151,9 +152,9 @@ TEST(GeodesicCmd, HelpStatesTheStopReasons) {
 
 TEST(GeodesicCmd, NearAxisKerrRayThatUsedToStallGetsThrough) {
   // The Kerr ray that stalled at θ ≈ π − 7e-7 in the Mino equations and ended with max-steps.
-  const Output o =
-      run_args({"geodesic", "--metric", "KerrBL", "--param", "angmom=0.9", "--pos", "0,1000,0.29670597283903605,0",
-                "--dir", "-1,0.004989,-3e-7", "--eps-abs", "1e-9", "--max-steps", "30000", "--escape-radius", "1000"});
+  const Output o = run_captured({"geodesic", "--metric", "KerrBL", "--param", "angmom=0.9", "--pos",
+                                 "0,1000,0.29670597283903605,0", "--dir", "-1,0.004989,-3e-7", "--eps-abs", "1e-9",
+                                 "--max-steps", "30000", "--escape-radius", "1000"});
   ASSERT_EQ(o.code, 0) << o.err;
   const auto ls = lines(o.out);
   EXPECT_EQ(ls.back().rfind("# stop: escaped", 0), 0u) << ls.back();
@@ -161,9 +162,9 @@ TEST(GeodesicCmd, NearAxisKerrRayThatUsedToStallGetsThrough) {
 }
 
 TEST(GeodesicCmd, JsonCarriesTheSame) {
-  const Output o =
-      run_args({"geodesic", "--metric", "Schwarzschild", "--param", "mass=0.5", "--pos", "0,10,1.5707963267948966,0",
-                "--dir", "0,0.3,0", "--type", "timelike", "--max-steps", "20", "--format", "json"});
+  const Output o = run_captured({"geodesic", "--metric", "Schwarzschild", "--param", "mass=0.5", "--pos",
+                                 "0,10,1.5707963267948966,0", "--dir", "0,0.3,0", "--type", "timelike", "--max-steps",
+                                 "20", "--format", "json"});
   ASSERT_EQ(o.code, 0) << o.err;
   const auto j = nlohmann::json::parse(o.out);
   EXPECT_EQ(j["metric"], "Schwarzschild");
@@ -213,7 +214,7 @@ TEST(GeodesicCmd, ErrorsAreClear) {
   for (const auto& c : cases) {
     std::vector<std::string> args = {"geodesic"};
     args.insert(args.end(), c.args.begin(), c.args.end());
-    const Output o = run_args(args);
+    const Output o = run_captured(args);
     EXPECT_NE(o.code, 0) << c.expect;
     EXPECT_NE(o.err.find(c.expect), std::string::npos) << "expected \"" << c.expect << "\" in: " << o.err;
     EXPECT_TRUE(o.out.empty()) << o.out;
@@ -221,7 +222,7 @@ TEST(GeodesicCmd, ErrorsAreClear) {
 }
 
 TEST(MetricsCmd, ListsEveryMetric) {
-  const Output o = run_args({"metrics"});
+  const Output o = run_captured({"metrics"});
   ASSERT_EQ(o.code, 0) << o.err;
   for (const auto& n : metric_names()) EXPECT_NE(o.out.find(n + "\n"), std::string::npos) << n;
   EXPECT_NE(o.out.find("mass"), std::string::npos);
@@ -229,7 +230,7 @@ TEST(MetricsCmd, ListsEveryMetric) {
 }
 
 TEST(MetricsCmd, JsonHasCoordinatesTetradsAndParameters) {
-  const Output o = run_args({"metrics", "--json"});
+  const Output o = run_captured({"metrics", "--json"});
   ASSERT_EQ(o.code, 0) << o.err;
   const auto j = nlohmann::json::parse(o.out);
   ASSERT_EQ(j.size(), metric_names().size());
@@ -253,7 +254,7 @@ TEST(MetricsCmd, JsonHasCoordinatesTetradsAndParameters) {
 TEST(GeodesicCmd, EveryMetricRunsFromItsSamplePosition) {
   for (const auto& n : metric_names()) {
     SCOPED_TRACE(n);
-    const Output o = run_args({"geodesic", "--metric", n, "--max-steps", "50"});
+    const Output o = run_captured({"geodesic", "--metric", n, "--max-steps", "50"});
     ASSERT_EQ(o.code, 0) << o.err;
     const auto ls = lines(o.out);
     ASSERT_GE(ls.size(), 3u);
@@ -266,7 +267,7 @@ TEST(GeodesicCmd, EveryMetricRunsFromItsSamplePosition) {
 }
 
 TEST(MetricsCmd, TextShowsSamplePositionAndReference) {
-  const Output o = run_args({"metrics"});
+  const Output o = run_captured({"metrics"});
   ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_NE(o.out.find("sample position: (0, 6, 1.570796327, 0)"), std::string::npos) << o.out.substr(0, 2000);
   EXPECT_NE(o.out.find("arXiv:0904.4184"), std::string::npos);
@@ -275,17 +276,17 @@ TEST(MetricsCmd, TextShowsSamplePositionAndReference) {
 /// `--info`: Schwarzschild's extras (effective potential, circular orbits, embedding) and the tidal
 /// matrix of the static observer at r = 6: diag(−2M/r³, M/r³, M/r³) = (−0.00925926, 0.00462963, ...).
 TEST(MetricsCmd, InfoPrintsExtrasAndTidalMatrix) {
-  const Output o = run_args({"metrics", "--info", "Schwarzschild"});
+  const Output o = run_captured({"metrics", "--info", "Schwarzschild"});
   ASSERT_EQ(o.code, 0) << o.err;
   EXPECT_NE(o.out.find("effective potential"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("circular"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("embedding"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("tidal matrix"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("-0.009259259"), std::string::npos) << o.out;
-  const Output none = run_args({"metrics", "--info", "Minkowski"});
+  const Output none = run_captured({"metrics", "--info", "Minkowski"});
   ASSERT_EQ(none.code, 0) << none.err;
   EXPECT_NE(none.out.find("extras:      none"), std::string::npos) << none.out;
-  const Output bad = run_args({"metrics", "--info", "Schwarzschlid"});
+  const Output bad = run_captured({"metrics", "--info", "Schwarzschlid"});
   EXPECT_NE(bad.code, 0);
   EXPECT_NE(bad.err.find("did you mean \"Schwarzschild\""), std::string::npos) << bad.err;
 }

@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "io/image.h"
+#include "support/temp_dir.h"
 
 namespace geovis {
 namespace {
@@ -27,17 +28,7 @@ namespace fs = std::filesystem;
 
 const std::vector<std::string> kFormats = {".png", ".jpg", ".tif", ".ppm", ".exr"};
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("geovis_atomic_" + std::to_string(::getpid()) + "_" +
-                                        testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string file(const std::string& n) const { return (path / n).string(); }
-};
+using testing_support::TempDir;
 
 /// A small tmpfs mounted for the test (needs root); `ok` false with `why` set otherwise.
 struct TinyFileSystem {

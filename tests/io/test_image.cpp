@@ -8,28 +8,14 @@
 
 #include "core/error.h"
 #include "io/image.h"
+#include "support/temp_dir.h"
 
 namespace geovis {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("geovis_img_" + std::to_string(::getpid()) + "_" +
-                                        testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string file(const std::string& n) const { return (path / n).string(); }
-  int count() const {
-    int n = 0;
-    for (const auto& e : fs::directory_iterator(path)) n += e.is_regular_file();
-    return n;
-  }
-};
+using testing_support::TempDir;
 
 /// Every 8-bit code 0..255 appears (k/255 exactly representable after quantisation).
 Image test_image() {
@@ -118,8 +104,9 @@ TEST(Image, HeaderClaimingAHugeImageIsAnErrorNotAnAllocation) {
   // A Radiance header found by fuzz_files: 3 x 5 444 444 444 444 444 444 pixels (an allocation of
   // tens of GB before any pixel is read). A clear error naming the file, before allocating.
   TempDir d;
-  write_file_atomic(d.file("huge.hdr"), std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 3 +X 5444444444444444444\n") +
-                                            std::string(64, '\x98'));
+  write_file_atomic(
+      d.file("huge.hdr"),
+      std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 3 +X 5444444444444444444\n") + std::string(64, '\x98'));
   try {
     read_image(d.file("huge.hdr"));
     FAIL();

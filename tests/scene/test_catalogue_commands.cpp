@@ -15,6 +15,7 @@
 #include "io/image.h"
 #include "scene/builder.h"
 #include "scene/scheme.h"
+#include "support/temp_dir.h"
 
 namespace geovis {
 namespace {
@@ -112,15 +113,7 @@ TEST(CatalogueCommands, PlaneParallelogramExtensionBuildsAParallelogram) {
   }
 }
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("geovis_catalogue_test_" + std::to_string(::getpid()) + "_" +
-                                        std::to_string(reinterpret_cast<uintptr_t>(this)));
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
+using testing_support::TempDir;
 
 TEST(CatalogueCommands, TextureNamedByAnotherMachinesPathIsFoundByFileName) {
   // kastorTraschen.scm: (string-append homedir "/local/Texturen/sphereImageMaster_white.tif").

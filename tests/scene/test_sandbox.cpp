@@ -12,28 +12,14 @@
 
 #include "scene/builder.h"
 #include "scene/scheme.h"
+#include "support/temp_dir.h"
 
 namespace geovis {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    path = fs::temp_directory_path() / ("geovis_sandbox_test_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  std::string write(const std::string& name, const std::string& text) const {
-    const fs::path p = path / name;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p) << text;
-    return p.string();
-  }
-};
+using testing_support::TempDir;
 
 // Error message of evaluating the file (or "" if none).
 std::string error_of_file(const std::string& path, const SchemeOptions& opts = {}) {

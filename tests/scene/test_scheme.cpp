@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "scene/scheme.h"
+#include "support/temp_dir.h"
 
 namespace geovis {
 namespace {
@@ -43,21 +44,7 @@ std::array<double, 3> apply(const Transform& t, std::array<double, 3> p) {
   return r;
 }
 
-struct TempDir {
-  std::filesystem::path path;
-  TempDir() {
-    path = std::filesystem::temp_directory_path() / ("geovis_scheme_test_" + std::to_string(::getpid()) + "_" +
-                                                     std::to_string(reinterpret_cast<uintptr_t>(this)));
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
-  std::string write(const std::string& name, const std::string& text) const {
-    const auto p = path / name;
-    std::filesystem::create_directories(p.parent_path());
-    std::ofstream(p) << text;
-    return p.string();
-  }
-};
+using testing_support::TempDir;
 
 // ------------------------------------------------------------------------------------------
 // Language

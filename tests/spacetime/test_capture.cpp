@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numbers>
 #include <cmath>
 #include <random>
 #include <string>
@@ -19,8 +20,6 @@
 using namespace geovis;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// R(r) of constants c (kerr_mino.h: R = r⁴ W(1/r)).
 double radial_potential(const KerrMinoConstants& c, double r) { return r * r * r * r * c.W(1.0 / r); }
@@ -138,7 +137,7 @@ TEST(Capture, SchwarzschildPhotonSphereIsTheBoundOfTheSphericalTest) {
     const Vec4 k = local_null_direction(m->natural_tetrad(x, TetradKind::Default), d, true);
     EXPECT_TRUE(kerr_mino_constants(1.0, 0.0, x, k, 0.0).radial_potential_positive_on(rb, x[1])) << x[1];
   }
-  const Vec4 x{{0, 3.0 * (1 + 1e-3), 0.5 * kPi, 0}};
+  const Vec4 x{{0, 3.0 * (1 + 1e-3), 0.5 * std::numbers::pi, 0}};
   const Vec4 k = local_null_direction(m->natural_tetrad(x, TetradKind::Default), Vec3{0, 0, 1}, true);
   EXPECT_FALSE(kerr_mino_constants(1.0, 0.0, x, k, 0.0).radial_potential_positive_on(rb, x[1]));
 }
@@ -151,7 +150,7 @@ TEST(Capture, EarlyStopsEndAsTheRaysIntegratedToTheBreakRadius) {
   // the same steps; and the captured rays take fewer steps.
   for (const double a : {0.0, 0.998}) {
     auto m = make_metric("KerrBL", {{"angmom", a}, {"mass", 1.0}});
-    const Vec4 x{{0, 50.0, 80.0 * kPi / 180.0, 0}};
+    const Vec4 x{{0, 50.0, 80.0 * std::numbers::pi / 180.0, 0}};
     const Tetrad e = m->natural_tetrad(x, TetradKind::Default);
     for (const Form& f : kForms) {
       SCOPED_TRACE(testing::Message() << "a = " << a << ", " << f.name);
@@ -210,7 +209,7 @@ TEST(Capture, RayTurningJustOutsideThePhotonOrbitIsNotStopped) {
     auto m = make_metric("KerrBL", {{"angmom", a}, {"mass", 1.0}});
     for (const double sense : {1.0, -1.0}) {
       // Prograde when L/E > 0 (the equations are even in (E, L, k)).
-      const Vec4 x_probe{{0, 10.0, 0.5 * kPi, 0}};
+      const Vec4 x_probe{{0, 10.0, 0.5 * std::numbers::pi, 0}};
       const Vec4 k_probe =
           local_null_direction(m->natural_tetrad(x_probe, TetradKind::Default), Vec3{0, 0, sense}, true);
       const KerrMinoConstants c_probe = kerr_mino_constants(1.0, a, x_probe, k_probe, 0.0);
@@ -218,7 +217,7 @@ TEST(Capture, RayTurningJustOutsideThePhotonOrbitIsNotStopped) {
       for (const Form& f : kForms) {
         SCOPED_TRACE(testing::Message() << "a = " << a << ", sense " << sense << ", " << f.name);
         // Outside: periastron.
-        const Vec4 xo{{0, r_ph * (1 + 1e-3), 0.5 * kPi, 0}};
+        const Vec4 xo{{0, r_ph * (1 + 1e-3), 0.5 * std::numbers::pi, 0}};
         const Vec4 ko = local_null_direction(m->natural_tetrad(xo, TetradKind::Default), Vec3{0, 0, sense}, true);
         const KerrMinoConstants co = kerr_mino_constants(1.0, a, xo, ko, 0.0);
         ASSERT_GT(radial_potential_slope(co, xo[1]), 0.0);  // a minimum of r
@@ -250,7 +249,7 @@ TEST(Capture, RayTurningJustOutsideThePhotonOrbitIsNotStopped) {
           EXPECT_EQ(r.reason, m->integrate(cfg, f.sys, y_in, 0.0, {}).reason) << stop_reason_name(r.reason);
         }
         // Inside: apoastron, falls in.
-        const Vec4 xi{{0, r_ph * (1 - 1e-3), 0.5 * kPi, 0}};
+        const Vec4 xi{{0, r_ph * (1 - 1e-3), 0.5 * std::numbers::pi, 0}};
         const Vec4 ki = local_null_direction(m->natural_tetrad(xi, TetradKind::Default), Vec3{0, 0, sense}, true);
         ASSERT_LT(radial_potential_slope(kerr_mino_constants(1.0, a, xi, ki, 0.0), xi[1]), 0.0);
         start(*m, xi, ki, f.sys, y);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <set>
 
@@ -13,8 +14,6 @@
 using namespace geovis;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct Case {
   const char* name;
@@ -26,7 +25,7 @@ struct Case {
 /// coordinate q in the equatorial plane / on the x axis.
 bool cartesian_chart(const Metric& m) { return m.info().coord_type == CoordType::Cartesian; }
 Vec4 at_radius(const Metric& m, double q) {
-  return cartesian_chart(m) ? Vec4{{0, q, 0, 0}} : Vec4{{0, q, 0.5 * kPi, 0}};
+  return cartesian_chart(m) ? Vec4{{0, q, 0, 0}} : Vec4{{0, q, 0.5 * std::numbers::pi, 0}};
 }
 double p_norm(const Metric& m, const double* y) {
   Vec3 p;
@@ -176,7 +175,7 @@ TEST(Escape, EscapedRaysNeverTurnBack) {
     for (int n = 0; n < 40; ++n) {
       const bool cart = cartesian_chart(*m);
       const double q = c.name == std::string("MorrisThorne") ? 8 * U(rng) - 4 : 2.5 + 10 * U(rng);
-      const double th = 0.3 + (kPi - 0.6) * U(rng), ph = 2 * kPi * U(rng);
+      const double th = 0.3 + (std::numbers::pi - 0.6) * U(rng), ph = 2 * std::numbers::pi * U(rng);
       const Vec4 x = cart
                          ? Vec4{{0, q * std::sin(th) * std::cos(ph), q * std::sin(th) * std::sin(ph), q * std::cos(th)}}
                          : Vec4{{0, q, th, ph}};
@@ -252,7 +251,7 @@ TEST(Escape, KerrPotentialTestIsThePhotonSphereForSchwarzschild) {
   }
   // And inside the photon sphere a ray that turns back (periastron below 3M is impossible, so:
   // apoastron) exists: tangential at r = 2.9M it falls in; its R' < 0 there.
-  const Vec4 x{{0, 2.9, 0.5 * kPi, 0}};
+  const Vec4 x{{0, 2.9, 0.5 * std::numbers::pi, 0}};
   const Vec4 k = local_null_direction(m->natural_tetrad(x, TetradKind::Default), Vec3{1e-3, 0, 1}, true);
   EXPECT_FALSE(kerr_mino_constants(1.0, 0.0, x, k, 0.0).no_radial_turning_point_beyond(2.9));
   // Bound timelike orbits (E < 1) never escape.

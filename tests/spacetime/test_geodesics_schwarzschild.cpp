@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -15,8 +16,6 @@
 using namespace geovis;
 
 namespace {
-
-constexpr double kPi = 3.141592653589793238462643383280;
 
 struct AdaptiveCase {
   SolverKind kind;
@@ -60,7 +59,7 @@ void equatorial_null_ray(double r0, double b, double* y) {
   const double f = 1.0 - 2.0 / r0;
   y[0] = 0;
   y[1] = r0;
-  y[2] = kPi / 2;
+  y[2] = std::numbers::pi / 2;
   y[3] = 0;
   y[4] = 1.0 / f;
   y[5] = -std::sqrt(1.0 - f * b * b / (r0 * r0));
@@ -80,7 +79,7 @@ TEST(SchwarzschildGeodesics, CircularPhotonOrbitStaysAtThreeM) {
   // r = 3M is the (unstable) circular photon orbit; started tangentially there, the ray must stay
   // within 1e-8 of it for one revolution.
   auto m = make_metric("Schwarzschild");
-  const Vec4 x{{0, 3.0, kPi / 2, 0}};
+  const Vec4 x{{0, 3.0, std::numbers::pi / 2, 0}};
   const Tetrad e = m->natural_tetrad(x);
   const Vec4 k = local_null_direction(e, Vec3{0, 0, 1}, false);
   for (const auto& c : adaptive_cases()) {
@@ -88,7 +87,7 @@ TEST(SchwarzschildGeodesics, CircularPhotonOrbitStaysAtThreeM) {
     double rdev = 0;
     auto cb = [&](const StepView& s) {
       rdev = std::max(rdev, std::fabs(s.y1[1] - 3.0));
-      return s.y1[3] > 2 * kPi ? StepAction::Stop : StepAction::Continue;
+      return s.y1[3] > 2 * std::numbers::pi ? StepAction::Stop : StepAction::Continue;
     };
     const GeodesicResult r = m->integrate(config(c.kind, c.eps, c.separable), GeodesicSystem::Geodesic, y, 0.0, cb);
     EXPECT_EQ(r.reason, StopReason::Callback) << name(c);
@@ -127,7 +126,7 @@ TEST(SchwarzschildGeodesics, RadialLightTravelTime) {
   const double rs = 2.0;
   const double expected = (30.0 + rs * std::log(30.0 - rs)) - (6.0 + rs * std::log(6.0 - rs));
   EXPECT_NEAR(expected, 27.8918, 1e-4);
-  const Vec4 x{{0, 6.0, kPi / 2, 0}};
+  const Vec4 x{{0, 6.0, std::numbers::pi / 2, 0}};
   const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{1, 0, 0}, false);
   for (const auto& c : adaptive_cases()) {
     double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
@@ -145,16 +144,16 @@ TEST(SchwarzschildGeodesics, CircularTimelikeOrbitPeriod) {
   // (= 92.3436 at r = 6M). The static observer sees it move with β = sqrt(M/(r − 2M)) = 1/2.
   auto m = make_metric("Schwarzschild");
   const double r0 = 6.0;
-  const double period = 2 * kPi * std::sqrt(r0 * r0 * r0);
+  const double period = 2 * std::numbers::pi * std::sqrt(r0 * r0 * r0);
   EXPECT_NEAR(period, 92.3436, 1e-4);
-  const Vec4 x{{0, r0, kPi / 2, 0}};
+  const Vec4 x{{0, r0, std::numbers::pi / 2, 0}};
   const Vec4 u = local_four_velocity(m->natural_tetrad(x), Vec3{0, 0, std::sqrt(1.0 / (r0 - 2.0))});
   for (const auto& c : adaptive_cases()) {
     double y[8] = {x[0], x[1], x[2], x[3], u[0], u[1], u[2], u[3]};
     SolverConfig cfg = config(c.kind, c.eps, c.separable);
     cfg.type = GeodesicType::Timelike;
     // u^φ is constant on the circular orbit: one revolution takes proper time 2π/u^φ.
-    cfg.lambda_max = 2 * kPi / u[3];
+    cfg.lambda_max = 2 * std::numbers::pi / u[3];
     double rdev = 0;
     auto cb = [&](const StepView& s) {
       rdev = std::max(rdev, std::fabs(s.y1[1] - r0));
@@ -162,7 +161,7 @@ TEST(SchwarzschildGeodesics, CircularTimelikeOrbitPeriod) {
     };
     const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
     EXPECT_EQ(r.reason, StopReason::LambdaMax) << name(c);
-    EXPECT_NEAR(y[3], 2 * kPi, 1e-8) << name(c);
+    EXPECT_NEAR(y[3], 2 * std::numbers::pi, 1e-8) << name(c);
     EXPECT_NEAR(y[0], period, 1e-6) << name(c);
     EXPECT_LT(rdev, 1e-6) << name(c);
     EXPECT_LT(std::fabs(r.constraint_drift), 1e-9) << name(c);
@@ -183,7 +182,7 @@ TEST(SchwarzschildGeodesics, WeakFieldDeflection) {
     cfg.box_ur = Vec4{{1e300, R, 1e300, 1e300}};
     const GeodesicResult r = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
     EXPECT_EQ(r.reason, StopReason::BoundingBox) << name(c);
-    const double alpha = y[3] - (kPi - std::asin(b / R) - std::asin(b / y[1]));
+    const double alpha = y[3] - (std::numbers::pi - std::asin(b / R) - std::asin(b / y[1]));
     EXPECT_NEAR(alpha, 4.0 / b, 0.01 * 4.0 / b) << name(c) << " steps " << r.steps;
   }
 }
@@ -217,7 +216,7 @@ TEST(SchwarzschildGeodesics, HorizonStopsTheRay) {
   // A radial ingoing ray reaches the horizon at finite affine parameter; the integration ends
   // there (validity domain or step underflow at the coordinate singularity) without leaving r > r_s.
   auto m = make_metric("Schwarzschild");
-  const Vec4 x{{0, 10.0, kPi / 2, 0}};
+  const Vec4 x{{0, 10.0, std::numbers::pi / 2, 0}};
   const Vec4 k = local_null_direction(m->natural_tetrad(x), Vec3{-1, 0, 0}, false);
   for (const auto& c : adaptive_cases()) {
     double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};

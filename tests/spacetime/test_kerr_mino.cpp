@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "spacetime/kerr_mino.h"
@@ -14,8 +15,6 @@
 using namespace geovis;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Vec3 cartesian(const double* y) {
   const double r = y[1], st = std::sin(y[2]), ct = std::cos(y[2]);
@@ -48,7 +47,8 @@ TEST(KerrMino, AgreesWithTheCoordinateFormOnRandomGeodesics) {
     auto m = schwarzschild ? make_metric("Schwarzschild", {{"mass", M}})
                            : make_metric("KerrBL", {{"mass", M}, {"angmom", a}});
     const double rp = schwarzschild ? 2 * M : M + std::sqrt(M * M - a * a);
-    const Vec4 x{{5 * U(rng), rp * (1.5 + 8 * U(rng)), 0.2 + (kPi - 0.4) * U(rng), 2 * kPi * U(rng)}};
+    const Vec4 x{
+        {5 * U(rng), rp * (1.5 + 8 * U(rng)), 0.2 + (std::numbers::pi - 0.4) * U(rng), 2 * std::numbers::pi * U(rng)}};
     const Tetrad e = m->natural_tetrad(x, TetradKind::Default);
     const Vec3 d = normalize(Vec3{2 * U(rng) - 1, 2 * U(rng) - 1, 2 * U(rng) - 1});
     const bool timelike = n % 3 == 0;

@@ -30,6 +30,7 @@
 
 #include "metric_checks.h"
 #include "spacetime/metric_registry.h"
+#include "support/uniform.h"
 
 using namespace geovis;
 namespace mc = geovis::metric_checks;
@@ -38,7 +39,7 @@ namespace {
 
 using Params = std::vector<std::pair<std::string, double>>;
 
-double uni(std::mt19937& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+using geovis::testing_support::uni;
 
 }  // namespace
 

@@ -18,6 +18,7 @@
 
 #include "metric_checks.h"
 #include "spacetime/metric_registry.h"
+#include "support/uniform.h"
 
 using namespace geovis;
 namespace mc = geovis::metric_checks;
@@ -31,7 +32,7 @@ struct Sample {
   Vec4 x;
 };
 
-double uni(std::mt19937& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+using geovis::testing_support::uni;
 
 Vec3 random_unit(std::mt19937& rng) {
   const double z = uni(rng, -1, 1), ph = uni(rng, -M_PI, M_PI), s = std::sqrt(1 - z * z);

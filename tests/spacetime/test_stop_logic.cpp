@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numbers>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -19,8 +20,6 @@
 using namespace geovis;
 
 namespace {
-
-constexpr double kPi = 3.141592653589793238462643383280;
 
 const SolverKind kAdaptive[] = {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54,
                                 SolverKind::DormandPrince853, SolverKind::BulirschStoer};
@@ -49,7 +48,7 @@ TEST(StopLogic, HorizonStopsCapturedRayPromptly) {
   auto m = make_metric("Schwarzschild");
   const double r0 = 30, b = 0.9 * 3 * std::sqrt(3.0);
   const double sa = b / r0 * std::sqrt(1 - 2 / r0);
-  const Vec4 x{{0, r0, kPi / 2, 0}};
+  const Vec4 x{{0, r0, std::numbers::pi / 2, 0}};
   const double r_break = 2.0 * (1.0 + m->horizon_eps());
   for (SolverKind kind : kAdaptive)
     for (double eps : {1e-4, 1e-8}) {
@@ -109,7 +108,7 @@ TEST(StopLogic, EveryHorizonMetricStopsAFallingRayPromptly) {
 /// DOP853), but still ends at the break, so only the gallery tolerance gets a step bound.
 TEST(StopLogic, KruskalShadowRayStopsAtTheSingularity) {
   auto m = make_metric("Kruskal");
-  const Vec4 x{{0, 20, kPi / 2, 0}};
+  const Vec4 x{{0, 20, std::numbers::pi / 2, 0}};
   const double eps_h = m->horizon_eps();
   for (const Vec3& d : {Vec3{-1, 0, 0}, Vec3{-1, 0.1, 0}, Vec3{-1, 0.3, 0.2}, Vec3{-1, 0, 0.5}})
     for (SolverKind kind : {SolverKind::CashKarp45, SolverKind::DormandPrince853})
@@ -222,10 +221,10 @@ TEST(StopLogic, RaysLeavingTheChartStopAtTheHorizonMargin) {
   for (const char* name : {"EddFinkIn", "PainleveGullstrand"}) {
     auto m = make_metric(name);
     const double rs = 2.0, eps_h = m->horizon_eps();
-    const Vec4 x{{0, 1.5, kPi / 2, 0}};
+    const Vec4 x{{0, 1.5, std::numbers::pi / 2, 0}};
     int escaped = 0, stopped_inside = 0, stopped_outside = 0;
     for (int i = 0; i < 24; ++i) {
-      const double psi = kPi * (i + 0.5) / 24;  // angle from the outward radial direction
+      const double psi = std::numbers::pi * (i + 0.5) / 24;  // angle from the outward radial direction
       const Vec4 k = local_null_direction(m->natural_tetrad(x, TetradKind::Freefall),
                                           Vec3{std::cos(psi), 0, std::sin(psi)}, /*past_directed=*/true);
       Mat4 g;

@@ -12,12 +12,13 @@
 #include "spacetime/jacobi.h"
 #include "spacetime/metric.h"
 #include "spacetime/metric_registry.h"
+#include "support/uniform.h"
 
 using namespace geovis;
 
 namespace {
 
-double uni(std::mt19937& rng, double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+using geovis::testing_support::uni;
 
 /// A past-directed null ray from a random event inside the box: k = (−1, n̂).
 void random_ray(std::mt19937& rng, double* y) {

@@ -59,8 +59,10 @@ inline void diagonal_christoffel(const DiagonalMetric& d, Christoffel& G) {
 }
 
 /// a^i = −Γ^i_{ab} k^a k^b = −(1 / 2h_i) (2 k^i Σ_j ∂_j h_i k^j − Σ_j ∂_i h_j (k^j)²), which is the
-/// contraction of the three cases above (the j = i terms of both sums give Γ^i_{ii}).
-inline void diagonal_accel(const DiagonalMetric& d, const Vec4& k, Vec4& a) {
+/// contraction of the three cases above (the j = i terms of both sums give Γ^i_{ii}). Always
+/// inlined: it is the hot path of every diagonal metric, and in a unity unit of several metrics
+/// (CMakeLists.txt) GCC stopped inlining it into their integrators.
+GEOVIS_HOT_INLINE void diagonal_accel(const DiagonalMetric& d, const Vec4& k, Vec4& a) {
   for (int i = 0; i < 4; ++i) {
     double s1 = 0, s2 = 0;
     for (int j = 0; j < 4; ++j) {

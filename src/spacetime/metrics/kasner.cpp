@@ -56,7 +56,7 @@ class Kasner final : public MetricCRTP<Kasner> {
     diagonal(x, d);
     diagonal_christoffel(d, G);
   }
-  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
+  GEOVIS_HOT_INLINE void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
     DiagonalMetric d;
     diagonal(x, d);
     diagonal_accel(d, k, a);

@@ -138,7 +138,7 @@ class Kruskal final : public MetricCRTP<Kruskal> {
     diagonal(x, d);
     diagonal_christoffel(d, G);
   }
-  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
+  GEOVIS_HOT_INLINE void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
     DiagonalMetric d;
     diagonal(x, d);
     diagonal_accel(d, k, a);
