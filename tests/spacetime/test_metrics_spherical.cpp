@@ -46,14 +46,14 @@ Sampler cartesian(double r0, double r1) {
   };
 }
 
-struct Case {
+struct SphericalCase {
   std::string name;
   Params params;
   Sampler christoffel_points;  ///< valid points of the chart (may be inside a horizon)
   Sampler static_points;       ///< points where every supported tetrad is defined
 };
 
-std::vector<Case> cases() {
+std::vector<SphericalCase> spherical_cases() {
   return {
       {"SchwarzschildCart", {{"mass", 1.3}}, cartesian(2.7, 30), cartesian(2.7, 30)},
       {"SchwarzschildIsotropic", {{"mass", 1.3}}, cartesian(0.7, 30), cartesian(0.7, 30)},
@@ -74,7 +74,7 @@ std::vector<Case> cases() {
   };
 }
 
-std::string label(const Case& c) {
+std::string label(const SphericalCase& c) {
   std::string s = c.name;
   for (const auto& [k, v] : c.params) s += " " + k + "=" + std::to_string(v);
   return s;
@@ -122,7 +122,7 @@ TEST(MetricsSpherical, CatalogueNamesCoordinatesDefaultsAndTetrads) {
 
 TEST(MetricsSpherical, ClosedFormChristoffelMatchesAD) {
   std::mt19937 rng(12345);
-  for (const Case& c : cases()) {
+  for (const SphericalCase& c : spherical_cases()) {
     auto m = make_metric(c.name, c.params);
     for (int n = 0; n < 25; ++n) {
       const Vec4 x = c.christoffel_points(rng);
@@ -136,7 +136,7 @@ TEST(MetricsSpherical, ClosedFormChristoffelMatchesAD) {
 /// The hand-written accelerations (−Γ^μ_{ab} k^a k^b) agree with the contraction of the AD Γ.
 TEST(MetricsSpherical, GeodesicRightHandSideMatchesAD) {
   std::mt19937 rng(777);
-  for (const Case& c : cases()) {
+  for (const SphericalCase& c : spherical_cases()) {
     auto m = make_metric(c.name, c.params);
     for (int n = 0; n < 5; ++n) {
       const Vec4 x = c.christoffel_points(rng);
@@ -167,7 +167,7 @@ void expect_orthonormal(const Metric& m, const Vec4& x, TetradKind kind, const s
 
 TEST(MetricsSpherical, NaturalTetradsAreOrthonormalAndFutureDirected) {
   std::mt19937 rng(4242);
-  for (const Case& c : cases()) {
+  for (const SphericalCase& c : spherical_cases()) {
     auto m = make_metric(c.name, c.params);
     for (int n = 0; n < 20; ++n) {
       const Vec4 x = c.static_points(rng);
