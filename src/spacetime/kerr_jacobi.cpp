@@ -168,7 +168,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// The BL Jacobi state (jacobi.h layout) and its λ-derivative of Mino state y with σ-derivative
 /// dy (kerr_jacobi.h): x, k, dk/dλ, Y_f, Y_f', dY_f/dλ; s_a, ds_a/dλ and d²Y_f/dλ² are NaN.
 void to_bl_jacobi(const KerrMinoConstants& c, const PolarOffset& polar, const ThetaBranch& b, const double* y,
-                  const double* dy, double* out, double* dout) {
+                  const double* dy, double* out, double* dout, double* p = nullptr) {
   using L = MinoJacobiLayout;
   using I = KerrMinoRHS;
   double v[I::N], dv[I::N];
@@ -183,6 +183,7 @@ void to_bl_jacobi(const KerrMinoConstants& c, const PolarOffset& polar, const Th
     dout[kJacobiX + i] = k[i];
     dout[kJacobiK + i] = acc[i];
   }
+  if (p) kerr_mino_pseudo_cartesian(polar, b, v, x[1], x[3], p);
   const double w = v[I::W], r = 1.0 / w, z = polar.z(v[I::Z]), dw = v[I::DW], dz = v[I::DZ];
   const double st = std::sqrt(std::max(0.0, polar.sin2(v[I::Z]))), ist = 1.0 / st;
   const double isig = 1.0 / (r * r + c.a2 * z * z);
@@ -258,14 +259,16 @@ bool integrate_kerr_mino_jacobi(double M, double a, double r_break, const Solver
 
   ThetaBranch branch = ThetaBranch::through(x0[2]);
   sys.ray.set_box(cfg, branch);
-  double bl0[kJacobiDim], bl1[kJacobiDim], dbl0[kJacobiDim], dbl1[kJacobiDim];
+  double bl0[kJacobiDim], bl1[kJacobiDim], dbl0[kJacobiDim], dbl1[kJacobiDim], p0[3], p1[3];
   bool have0 = false;
   auto on_step = [&](const StepView& st_) -> StepAction {
-    if (!have0) to_bl_jacobi(c, sys.ray.f.polar, branch, st_.y0, st_.dy0, bl0, dbl0);
-    to_bl_jacobi(c, sys.ray.f.polar, branch, st_.y1, st_.dy1, bl1, dbl1);
-    const StepAction act = cb(StepView{st_.lambda0, st_.lambda1, bl0, bl1, dbl0, dbl1, kJacobiDim, st_.step_index});
+    if (!have0) to_bl_jacobi(c, sys.ray.f.polar, branch, st_.y0, st_.dy0, bl0, dbl0, p0);
+    to_bl_jacobi(c, sys.ray.f.polar, branch, st_.y1, st_.dy1, bl1, dbl1, p1);
+    const StepAction act =
+        cb(StepView{st_.lambda0, st_.lambda1, bl0, bl1, dbl0, dbl1, kJacobiDim, st_.step_index, p0, p1});
     std::copy(bl1, bl1 + kJacobiDim, bl0);
     std::copy(dbl1, dbl1 + kJacobiDim, dbl0);
+    std::copy(p1, p1 + 3, p0);
     have0 = true;
     return act;
   };

@@ -145,12 +145,18 @@ void KerrMinoRay::to_bl(const double* ym, const double* dym, double* bl, double*
     dbl[i] = kk[i];
     dbl[4 + i] = acc[i];
   }
-  // Pseudo-Cartesian r (sin θ cos φ, sin θ sin φ, cos θ) (Metric::to_pseudo_cartesian) without θ:
-  // cos θ = z, sin θ = s·√(1 − z²) on the branch θ = offset + s·acos z (offset a multiple of 2π).
-  const double r = x[1], z = std::clamp(sys.f.polar.z(ym[I::Z]), -1.0, 1.0);
-  const double st = branch.sign * std::sqrt(std::max(0.0, sys.f.polar.sin2(ym[I::Z])));
+  kerr_mino_pseudo_cartesian(sys.f.polar, branch, ym, x[1], x[3], p);
+}
+
+void kerr_mino_pseudo_cartesian(const PolarOffset& polar, const ThetaBranch& b, const double* y, double r, double phi,
+                                double* p) {
+  using I = KerrMinoRHS;
+  // r (sin θ cos φ, sin θ sin φ, cos θ) (Metric::to_pseudo_cartesian) without θ: cos θ = z,
+  // sin θ = s·√(1 − z²) on the branch θ = offset + s·acos z (offset a multiple of 2π).
+  const double z = std::clamp(polar.z(y[I::Z]), -1.0, 1.0);
+  const double st = b.sign * std::sqrt(std::max(0.0, polar.sin2(y[I::Z])));
   double sp, cp;
-  fast_sincos(x[3], sp, cp);
+  fast_sincos(phi, sp, cp);
   p[0] = r * st * cp;
   p[1] = r * st * sp;
   p[2] = r * z;

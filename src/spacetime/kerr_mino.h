@@ -398,6 +398,12 @@ PolarOffset kerr_mino_from_bl(const KerrMinoConstants& c, const Vec4& x, const V
 void kerr_mino_to_bl(const KerrMinoConstants& c, const PolarOffset& polar, const double* y, const double* dy,
                      const ThetaBranch& b, Vec4& x, Vec4& k, Vec4* dk = nullptr);
 
+/// The pseudo-Cartesian position (Metric::to_pseudo_cartesian) of Mino state y (ζ relative to
+/// `polar`) on θ branch b, with r and φ of its BL view, from z = cos θ and sin²θ (one sine and
+/// cosine, of φ): StepView::p0/p1 of the Mino paths.
+void kerr_mino_pseudo_cartesian(const PolarOffset& polar, const ThetaBranch& b, const double* y, double r, double phi,
+                                double* p);
+
 /// One ray integrated in Mino time as its caller sees it (integrate_kerr_mino, and each lane of the
 /// packet integrator, geodesic_packet.h): the constants and the system of the ray, its θ branch
 /// (passages through the axis), the Boyer–Lindquist view of each accepted step — (x, k) and dk/dλ
