@@ -362,11 +362,12 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   straight_ = job.metric->info().inertial_cartesian;
   // Packets (spacetime/geodesic_packet.h): the geodesic system with Cash–Karp, in the metric's
   // coordinates or through Carter's separated equations (Metric::integrate_packet chooses as
-  // integrate does); the Jacobi system and other solvers stay scalar, and straight rays need no
-  // integrator at all.
-  packets_ = system_ == GeodesicSystem::Geodesic && cfg_.kind == SolverKind::CashKarp45 && !straight_;
+  // integrate does), also RGBjac's geodesic pass (jacobi_hits_only_); the Jacobi system and other
+  // solvers stay scalar, and straight rays need no integrator at all.
+  jacobi_hits_only_ = system_ == GeodesicSystem::Jacobi;
+  packets_ = cfg_.kind == SolverKind::CashKarp45 && !straight_;
   if (job.reference_tracing) {
-    straight_ = packets_ = false;
+    straight_ = packets_ = jacobi_hits_only_ = false;
     cfg_.escape_radius = std::numeric_limits<double>::infinity();  // SolverConfig: no escape test
     cfg_.capture_radius = 0.0;                                     // no capture test
   }
@@ -374,24 +375,38 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
 
 TraceResult Tracer::trace_direction(const Vec3& d, TraceStats& stats) const { return trace_direction(d, stats, {}); }
 
-TraceResult Tracer::trace_direction(const Vec3& d_in, TraceStats& stats,
+TraceResult Tracer::trace_direction(const Vec3& d, TraceStats& stats,
                                     FunctionRef<void(const StepView&)> observe_step) const {
   ++stats.rays;
+  // RGBjac: the Jacobi fields only for a ray that hits (jacobi_hits_only_). A ray the geodesic pass
+  // sees miss keeps that result, which has no lensing data (fill_data); one that hits is traced
+  // again with its fields and keeps that second result whole (its hit and its data), so every
+  // pixel's colour and data come from one traced ray. The steps of both passes are counted. A
+  // caller watching the steps (the viewer) sees one pass.
+  if (jacobi_hits_only_ && !observe_step) {
+    TraceResult g = trace_system(GeodesicSystem::Geodesic, d, stats, {});
+    if (!g.hit) return g;
+  }
+  return trace_system(system_, d, stats, observe_step);
+}
+
+TraceResult Tracer::trace_system(GeodesicSystem system, const Vec3& d_in, TraceStats& stats,
+                                 FunctionRef<void(const StepView&)> observe_step) const {
   const Metric& m = *job_.metric;
   double y[kMaxSystemDim] = {};
-  const Vec4 k0 = start_state(job_.observer, normalize(d_in), system_, y);
+  const Vec4 k0 = start_state(job_.observer, normalize(d_in), system, y);
   double y_start[kJacobiY1];  // x, k and, for the Jacobi system, the observer's screen s_a
   for (int i = 0; i < kJacobiY1; ++i) y_start[i] = y[i];
 
   RayState rs;
   rs.metric = &m;
   rs.scene = job_.scene.get();
-  const GeodesicResult gr = search_hit(m, straight_, cfg_, system_, y, rs, observe_step);
-  return end_ray(rs, k0, y, y_start, gr, stats);
+  const GeodesicResult gr = search_hit(m, straight_, cfg_, system, y, rs, observe_step);
+  return end_ray(system, rs, k0, y, y_start, gr, stats);
 }
 
-TraceResult Tracer::end_ray(const RayState& rs, const Vec4& k0, const double* y, const double* y_start,
-                            const GeodesicResult& gr, TraceStats& stats) const {
+TraceResult Tracer::end_ray(GeodesicSystem system, const RayState& rs, const Vec4& k0, const double* y,
+                            const double* y_start, const GeodesicResult& gr, TraceStats& stats) const {
   TraceResult res;
   res.traced = true;
   const Metric& m = *job_.metric;
@@ -399,7 +414,7 @@ TraceResult Tracer::end_ray(const RayState& rs, const Vec4& k0, const double* y,
   stats.rhs_evals += gr.rhs_evals;
   res.reason = gr.reason;
   if (!rs.hit) {
-    end_without_hit(m, straight_, cfg_, system_, y, y_start, gr, stats, res);
+    end_without_hit(m, straight_, cfg_, system, y, y_start, gr, stats, res);
     res.color = stop_color(res.reason);
     return res;
   }
@@ -411,7 +426,7 @@ TraceResult Tracer::end_ray(const RayState& rs, const Vec4& k0, const double* y,
   hermite_interpolate(st, rs.frac, res.pos, res.k);
   res.lambda = rs.lambda0 + rs.frac * (rs.lambda1 - rs.lambda0);
   res.freqshift = frequency_shift(m, job_.observer, k0, rs.best, res.pos, res.k);
-  if (system_ == GeodesicSystem::Jacobi) jacobi_at_hit(m, rs, y_start, cfg_.separable, res);
+  if (system == GeodesicSystem::Jacobi) jacobi_at_hit(m, rs, y_start, cfg_.separable, res);
   res.color = shade_hit(job_, point_lights_, rs.best, res.pos);
   return res;
 }
@@ -425,6 +440,7 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
   // Each lane's ray: its sample, start and hit search, as trace_direction keeps them on its stack.
   struct LaneRay {
     size_t sample;
+    Vec3 d;  // the local direction (RGBjac: a ray that hits is traced again, trace_direction)
     Vec4 k0;
     double y_start[8];  // x, k: packets trace the geodesic system only (no screen, jacobi_at_hit)
     RayState rs;
@@ -445,8 +461,9 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
       ++stats.rays;
       LaneRay& r = lanes[lane];
       r.sample = next++;
+      r.d = d;
       double ys[kMaxSystemDim];
-      r.k0 = start_state(job_.observer, normalize(d), system_, ys);
+      r.k0 = start_state(job_.observer, normalize(d), GeodesicSystem::Geodesic, ys);
       for (int i = 0; i < 8; ++i) y[i] = r.y_start[i] = ys[i];
       r.rs = RayState{};
       r.rs.metric = &m;
@@ -458,7 +475,8 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
   auto on_step = [&](int lane, const StepView& st) { return test_step(lanes[lane].rs, st); };
   auto done = [&](int lane, const double* y, const GeodesicResult& gr) {
     const LaneRay& r = lanes[lane];
-    const TraceResult res = end_ray(r.rs, r.k0, y, r.y_start, gr, stats);
+    TraceResult res = end_ray(GeodesicSystem::Geodesic, r.rs, r.k0, y, r.y_start, gr, stats);
+    if (jacobi_hits_only_ && res.hit) res = trace_system(system_, r.d, stats, {});
     colors[r.sample] = res.color;
     if (samples[r.sample].data) fill_data(res, *samples[r.sample].data);
   };

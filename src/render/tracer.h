@@ -64,8 +64,9 @@ class Tracer {
   /// trace_pixel for each sample (colour i to colors[i]), in packets of rays integrated on SIMD lanes
   /// where packet_tracing() (spacetime/geodesic_packet.h), with the same results to the bit.
   void trace_pixels(std::span<const PixelSample> samples, Color* colors, TraceStats& stats) const;
-  /// Light rays go in packets: the geodesic system (Filter RGB, RGBpdz; not RGBjac) with the
-  /// CashKarp45 solver, in coordinates or through Carter's separated equations.
+  /// Light rays go in packets: the geodesic system with the CashKarp45 solver, in coordinates or
+  /// through Carter's separated equations (RGBjac: its first, geodesic pass; the rays that hit are
+  /// traced again one by one with their Jacobi fields).
   bool packet_tracing() const { return packets_; }
 
   /// Traces the ray leaving the observer in local direction `d` (need not be unit).
@@ -98,9 +99,12 @@ class Tracer {
 
  private:
   void fill_data(const TraceResult& r, PixelData& d) const;
+  /// One ray in local direction d integrated as `system` (trace_direction without counting the ray).
+  TraceResult trace_system(GeodesicSystem system, const Vec3& d, TraceStats& stats,
+                           FunctionRef<void(const StepView&)> observe_step) const;
   /// The end of a traced ray (trace_direction): hit refinement result, shading, data. y_start: the
   /// ray's start state, x and k, and for the Jacobi system also the screen s_a (jacobi.h layout).
-  TraceResult end_ray(const RayState& rs, const Vec4& k0, const double* y, const double* y_start,
+  TraceResult end_ray(GeodesicSystem system, const RayState& rs, const Vec4& k0, const double* y, const double* y_start,
                       const GeodesicResult& gr, TraceStats& stats) const;
   const RenderJob& job_;
   SolverConfig cfg_;
@@ -108,6 +112,9 @@ class Tracer {
   bool point_lights_;  ///< shadow rays possible: Minkowski, lights with shadows on
   bool straight_;      ///< straight rays without integrator: Minkowski (spacetime/straight_ray.h)
   bool packets_;       ///< packet_tracing()
+  /// RGBjac: every ray is first traced as a geodesic and only a ray that hits is traced again with
+  /// its Jacobi fields (trace_direction): the lensing data exist only at hits (fill_data).
+  bool jacobi_hits_only_;
 };
 
 }  // namespace geovis
