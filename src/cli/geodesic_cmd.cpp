@@ -14,7 +14,6 @@
 // `# stop: escaped at radius R, lambda L`). JSON carries the same.
 // The start vector is checked: finite and null (timelike) to 1e-8 of its size.
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <limits>
@@ -28,6 +27,7 @@
 
 #include "cli/command.h"
 #include "core/error.h"
+#include "core/number_text.h"
 #include "spacetime/integrators.h"
 #include "spacetime/metric_registry.h"
 
@@ -80,12 +80,6 @@ std::vector<double> parse_vector(const std::string& option, const std::string& t
   return v;
 }
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 int run_geodesic(const GeodesicArgs& a) {
   // ---- metric and parameters ----
   std::vector<std::pair<std::string, double>> params;
@@ -110,9 +104,9 @@ int run_geodesic(const GeodesicArgs& a) {
   cfg.max_steps = a.max_steps;
   cfg.lambda_max = a.lambda_max;
   if (!(a.escape_radius >= 0.0) || !std::isfinite(a.escape_radius))
-    throw Error("--escape-radius: expected a finite number >= 0, found " + fmt(a.escape_radius));
+    throw Error("--escape-radius: expected a finite number >= 0, found " + exact_number_text(a.escape_radius));
   cfg.escape_radius = a.no_escape ? std::numeric_limits<double>::infinity() : a.escape_radius;
-  if (!(a.lambda_max > 0)) throw Error("--lambda-max: expected a number > 0, found " + fmt(a.lambda_max));
+  if (!(a.lambda_max > 0)) throw Error("--lambda-max: expected a number > 0, found " + exact_number_text(a.lambda_max));
   if (a.max_steps < 1) throw Error("--max-steps: expected an integer >= 1, found " + std::to_string(a.max_steps));
   if (a.format != "csv" && a.format != "json") {
     const std::vector<std::string> valid = {"csv", "json"};
@@ -130,7 +124,10 @@ int run_geodesic(const GeodesicArgs& a) {
   const Vec4 x{{pv[0], pv[1], pv[2], pv[3]}};
   const auto& c = m->info().coords;
   if (!m->is_valid(x))
-    throw Error("--pos: (" + (a.pos.empty() ? fmt(x[0]) + "," + fmt(x[1]) + "," + fmt(x[2]) + "," + fmt(x[3]) : a.pos) +
+    throw Error("--pos: (" +
+                (a.pos.empty() ? exact_number_text(x[0]) + "," + exact_number_text(x[1]) + "," +
+                                     exact_number_text(x[2]) + "," + exact_number_text(x[3])
+                               : a.pos) +
                 ") is outside the validity domain of the " + m->name() + " coordinates (" + c[0] + ", " + c[1] + ", " +
                 c[2] + ", " + c[3] + ")");
   const Tetrad e = m->natural_tetrad(x, TetradKind::Default);
@@ -143,7 +140,8 @@ int run_geodesic(const GeodesicArgs& a) {
                   ") overflows in double precision; give components of moderate size (only the direction counts)");
     k = local_null_direction(e, d, /*past_directed=*/!a.forward);
   } else {
-    if (!(norm(d) < 1.0)) throw Error("--dir: expected a local 3-velocity with |v| < 1, found |v| = " + fmt(norm(d)));
+    if (!(norm(d) < 1.0))
+      throw Error("--dir: expected a local 3-velocity with |v| < 1, found |v| = " + exact_number_text(norm(d)));
     k = local_four_velocity(e, d);
   }
 
@@ -163,10 +161,10 @@ int run_geodesic(const GeodesicArgs& a) {
     }
     const double target = constraint_target(type);
     if (!finite || !(std::fabs(gkk - target) <= 1e-8 * std::max(size, 1.0)))
-      throw Error(std::string("--dir: the start vector k = (") + fmt(k[0]) + ", " + fmt(k[1]) + ", " + fmt(k[2]) +
-                  ", " + fmt(k[3]) + ") is not " +
-                  (type == GeodesicType::Lightlike ? "null" : "a unit timelike vector") + ": g(k,k) = " + fmt(gkk) +
-                  " instead of " + fmt(target) + " (direction \"" + dir + "\")");
+      throw Error(std::string("--dir: the start vector k = (") + exact_number_text(k[0]) + ", " +
+                  exact_number_text(k[1]) + ", " + exact_number_text(k[2]) + ", " + exact_number_text(k[3]) +
+                  ") is not " + (type == GeodesicType::Lightlike ? "null" : "a unit timelike vector") + ": g(k,k) = " +
+                  exact_number_text(gkk) + " instead of " + exact_number_text(target) + " (direction \"" + dir + "\")");
   }
 
   // ---- integrate, collecting points ----
@@ -224,13 +222,13 @@ int run_geodesic(const GeodesicArgs& a) {
   std::ostringstream os;
   os << "lambda,x0,x1,x2,x3,k0,k1,k2,k3,constraint\n";
   for (const auto& p : points) {
-    os << fmt(p.lambda);
-    for (double v : p.y) os << ',' << fmt(v);
-    os << ',' << fmt(p.constraint) << '\n';
+    os << exact_number_text(p.lambda);
+    for (double v : p.y) os << ',' << exact_number_text(v);
+    os << ',' << exact_number_text(p.constraint) << '\n';
   }
   os << "# stop: " << stop_reason_name(res.reason);
   if (res.reason == StopReason::Escaped)
-    os << " at radius " << fmt(res.escape_radius) << ", lambda " << fmt(res.lambda);
+    os << " at radius " << exact_number_text(res.escape_radius) << ", lambda " << exact_number_text(res.lambda);
   os << '\n';
   std::cout << os.str();
   return 0;

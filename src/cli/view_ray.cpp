@@ -8,6 +8,7 @@
 
 #include "cli/scene_options.h"
 #include "core/error.h"
+#include "core/number_text.h"
 #include "render/camera.h"
 #include "render/compound.h"
 #include "render/data_exr.h"
@@ -40,12 +41,6 @@ std::string read_text(const std::string& path) {
 
 nlohmann::json vec4(const Vec4& v) { return {v[0], v[1], v[2], v[3]}; }
 nlohmann::json vec3(const Vec3& v) { return {v.x, v.y, v.z}; }
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
 
 /// Bounds of the primitives (compounds are opened), pseudo-Cartesian; unbounded ones are left out.
 void collect_outlines(const SceneObject& o, nlohmann::json& out) {
@@ -202,21 +197,23 @@ nlohmann::json PixelRayTracer::trace(const ChannelImage& data, const std::string
   const SolverConfig& s = job.solver;
   std::string cmd = "geovis geodesic --metric " + m.name();
   for (size_t i = 0; i < m.info().params.size(); ++i)
-    cmd += " --param " + m.info().params[i].name + "=" + num(m.param_values()[i]);
-  cmd += " --pos " + num(job.observer.pos[0]) + "," + num(job.observer.pos[1]) + "," + num(job.observer.pos[2]) + "," +
-         num(job.observer.pos[3]);
-  cmd += " --dir " + num(path.natural_dir.x) + "," + num(path.natural_dir.y) + "," + num(path.natural_dir.z);
-  cmd += std::string(" --solver ") + solver_kind_name(s.kind) + " --eps-abs " + num(s.eps_abs) + " --eps-rel " +
-         num(s.eps_rel) + " --max-steps " + std::to_string(s.max_steps) + " --equations " +
-         (s.separable ? "separable" : "coordinate");
-  if (std::isfinite(s.lambda_max)) cmd += " --lambda-max " + num(s.lambda_max);
-  cmd += std::isfinite(path.escape_radius) ? " --escape-radius " + num(path.escape_radius) : " --no-escape";
+    cmd += " --param " + m.info().params[i].name + "=" + exact_number_text(m.param_values()[i]);
+  cmd += " --pos " + exact_number_text(job.observer.pos[0]) + "," + exact_number_text(job.observer.pos[1]) + "," +
+         exact_number_text(job.observer.pos[2]) + "," + exact_number_text(job.observer.pos[3]);
+  cmd += " --dir " + exact_number_text(path.natural_dir.x) + "," + exact_number_text(path.natural_dir.y) + "," +
+         exact_number_text(path.natural_dir.z);
+  cmd += std::string(" --solver ") + solver_kind_name(s.kind) + " --eps-abs " + exact_number_text(s.eps_abs) +
+         " --eps-rel " + exact_number_text(s.eps_rel) + " --max-steps " + std::to_string(s.max_steps) +
+         " --equations " + (s.separable ? "separable" : "coordinate");
+  if (std::isfinite(s.lambda_max)) cmd += " --lambda-max " + exact_number_text(s.lambda_max);
+  cmd +=
+      std::isfinite(path.escape_radius) ? " --escape-radius " + exact_number_text(path.escape_radius) : " --no-escape";
   // What `geovis geodesic` cannot express: the same steps only up to where these act.
   std::vector<std::string> differs;
   const SolverConfig d;
   if (!(std::fabs(path.natural_scale - 1) < 1e-12))
-    differs.push_back("the observer moves in the natural frame: its affine parameter is " + num(path.natural_scale) +
-                      " times this one");
+    differs.push_back("the observer moves in the natural frame: its affine parameter is " +
+                      exact_number_text(path.natural_scale) + " times this one");
   // Carter's separated equations ignore a max_step the scene did not give (SolverConfig::step_max_separable).
   const bool step_max_acts = !(s.separable && m.has_separable_geodesics()) || s.step_max_separable;
   if (s.step_ctrl != d.step_ctrl || s.step_size != d.step_size || s.step_min != d.step_min ||

@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "core/hash.h"
+#include "core/number_text.h"
 #include "render/camera.h"
 #include "render/data_files.h"
 #include "spacetime/metric.h"
@@ -21,18 +22,12 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 std::string vec(const double* v, int n) {
   // Appended piecewise: GCC 12 reports a false -Wrestrict on `"..." + std::string` chains.
   std::string s;
   for (int i = 0; i < n; ++i) {
     if (i) s.push_back(' ');
-    s.append(num(v[i]));
+    s.append(exact_number_text(v[i]));
   }
   return s;
 }
@@ -62,32 +57,33 @@ std::vector<std::pair<std::string, std::string>> header(const RenderJob& job, co
       m.info().coords[0] + " " + m.info().coords[1] + " " + m.info().coords[2] + " " + m.info().coords[3]);
   add("metric.coordtype", coord_type_name(m.info().coord_type));
   for (size_t i = 0; i < m.info().params.size(); ++i)
-    add("metric." + m.info().params[i].name, num(m.param_values()[i]));
+    add("metric." + m.info().params[i].name, exact_number_text(m.param_values()[i]));
   add("observer.pos", vec(job.observer.pos.c, 4));
-  add("observer.time", num(job.observer.pos[0]));
+  add("observer.time", exact_number_text(job.observer.pos[0]));
   for (int a = 0; a < 4; ++a) add("observer.e" + std::to_string(a), vec(job.observer.e[a].c, 4));
   const Camera& cam = *job.camera;
   const int W = cam.width(), H = cam.height();
   add("camera", cam.type_name());
   add("camera.resolution", std::to_string(W) + " " + std::to_string(H));
   // Measured between the outer pixel edges through the image centre (every camera type).
-  add("camera.fov", num(view_angle(cam, 0, 0.5 * H, W, 0.5 * H)) + " " + num(view_angle(cam, 0.5 * W, 0, 0.5 * W, H)));
+  add("camera.fov", exact_number_text(view_angle(cam, 0, 0.5 * H, W, 0.5 * H)) + " " +
+                        exact_number_text(view_angle(cam, 0.5 * W, 0, 0.5 * W, H)));
   add("camera.filter", std::to_string(int(job.filter)));
   add("supersample", std::to_string(job.supersample));
   const SolverConfig& s = job.solver;
   add("solver", solver_kind_name(s.kind));
-  add("solver.eps_abs", num(s.eps_abs));
-  add("solver.eps_rel", num(s.eps_rel));
+  add("solver.eps_abs", exact_number_text(s.eps_abs));
+  add("solver.eps_rel", exact_number_text(s.eps_rel));
   add("solver.step_ctrl", s.step_ctrl ? "1" : "0");
-  add("solver.step_size", num(s.step_size));
-  add("solver.step_min", num(s.step_min));
-  add("solver.step_max", num(s.step_max));
+  add("solver.step_size", exact_number_text(s.step_size));
+  add("solver.step_min", exact_number_text(s.step_min));
+  add("solver.step_max", exact_number_text(s.step_max));
   add("solver.max_steps", std::to_string(s.max_steps));
-  add("solver.lambda_max", num(s.lambda_max));
-  add("solver.constraint_tol", num(s.constraint_tol));
+  add("solver.lambda_max", exact_number_text(s.lambda_max));
+  add("solver.constraint_tol", exact_number_text(s.constraint_tol));
   add("solver.box_ll", vec(s.box_ll.c, 4));
   add("solver.box_ur", vec(s.box_ur.c, 4));
-  add("horizon_eps", num(m.horizon_eps()));
+  add("horizon_eps", exact_number_text(m.horizon_eps()));
   std::string stops;
   for (int i = 0; i < kRayStopCount; ++i) {
     if (i) stops.push_back(' ');

@@ -1,7 +1,8 @@
 #include "spacetime/motion.h"
 
-#include <cstdio>
 #include <ostream>
+
+#include "core/number_text.h"
 
 namespace geovis {
 
@@ -9,11 +10,9 @@ void Motion::write(std::ostream& os) const {
   // One line per sample: tau, x^μ, u^μ, then e_(0)^μ .. e_(3)^μ; 17 significant digits so the file
   // reproduces the doubles exactly.
   os << "# " << type_name() << " motion: tau x0 x1 x2 x3 u0 u1 u2 u3 e0^0 e0^1 e0^2 e0^3 ... e3^3\n";
-  char buf[32];
   auto put = [&](double v, bool first = false) {
-    std::snprintf(buf, sizeof buf, "%.17g", v);
     if (!first) os << ' ';
-    os << buf;
+    os << exact_number_text(v);
   };
   for (const MotionSample& s : samples()) {
     put(s.tau, true);

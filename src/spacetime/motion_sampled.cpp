@@ -2,20 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "core/error.h"
+#include "core/number_text.h"
 #include "spacetime/tetrad.h"
 
 namespace geovis {
 
 namespace {
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
 
 /// Quintic Hermite basis on s ∈ [0,1] (values/first/second derivatives at s = 0 and 1 are the
 /// unit vectors): H0, H1, H2 for p(0), p'(0), p''(0) and H3, H4, H5 for p(1), p'(1), p''(1).
@@ -54,8 +48,9 @@ size_t SampledMotion::interval(double tau) const {
   const double lo = nodes_.front().tau, hi = nodes_.back().tau;
   const double slack = 1e-12 * std::max({1.0, std::fabs(lo), std::fabs(hi)});
   if (!(tau >= lo - slack && tau <= hi + slack))
-    throw Error(std::string(type_name()) + " motion: proper time " + num(tau) + " is outside the computed range [" +
-                num(lo) + ", " + num(hi) + "] (extend it with `forward`/`backward` or `maxnumpoints`)");
+    throw Error(std::string(type_name()) + " motion: proper time " + number_text(tau) +
+                " is outside the computed range [" + number_text(lo) + ", " + number_text(hi) +
+                "] (extend it with `forward`/`backward` or `maxnumpoints`)");
   if (nodes_.size() == 1) return 0;
   auto it =
       std::upper_bound(nodes_.begin(), nodes_.end(), tau, [](double t, const MotionNode& n) { return t < n.tau; });
@@ -113,8 +108,9 @@ double SampledMotion::proper_time_at_coordinate_time(double t) const {
                 "an event cannot be selected by coordinate time");
   const double slack = 1e-12 * std::max({1.0, std::fabs(t_lo), std::fabs(t_hi)});
   if (!(t >= t_lo - slack && t <= t_hi + slack))
-    throw Error(std::string(type_name()) + " motion: coordinate time " + num(t) + " is outside the computed range [" +
-                num(t_lo) + ", " + num(t_hi) + "] (extend it with `forward`/`backward` or `maxnumpoints`)");
+    throw Error(std::string(type_name()) + " motion: coordinate time " + number_text(t) +
+                " is outside the computed range [" + number_text(t_lo) + ", " + number_text(t_hi) +
+                "] (extend it with `forward`/`backward` or `maxnumpoints`)");
   if (nodes_.size() == 1) return nodes_[0].tau;
   auto it =
       std::upper_bound(nodes_.begin(), nodes_.end(), t, [](double tt, const MotionNode& n) { return tt < n.x[0]; });

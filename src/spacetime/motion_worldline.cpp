@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "core/error.h"
+#include "core/number_text.h"
 #include "core/param_reader.h"
 #include "spacetime/motion_factory.h"
 #include "spacetime/tetrad.h"
@@ -15,12 +15,6 @@
 namespace geovis {
 
 namespace {
-
-std::string worldline_num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
 
 /// −g(v, v) at x: positive for timelike v.
 double minus_norm2(const Metric& m, const Vec4& x, const Vec4& v) {
@@ -53,7 +47,7 @@ WorldlineMotion::WorldlineMotion(std::shared_ptr<const Metric> metric, std::vect
       throw Error("Worldline motion: the curve parameter (" +
                   std::string(given_params ? "tau" : "coordinate time x^0") +
                   ") must increase strictly from event to event, but event " + std::to_string(i) + " has " +
-                  worldline_num(p_[i]) + " after " + worldline_num(p_[i - 1]));
+                  number_text(p_[i]) + " after " + number_text(p_[i - 1]));
 
   // Natural cubic spline per coordinate (second derivatives zero at both ends): solve the
   // tridiagonal system h_{i-1} M_{i-1} + 2(h_{i-1}+h_i) M_i + h_i M_{i+1} = 6(Δ_i − Δ_{i-1})
@@ -94,7 +88,7 @@ WorldlineMotion::WorldlineMotion(std::shared_ptr<const Metric> metric, std::vect
       const double nn = minus_norm2(m, x, dx);
       if (!(nn > 0))
         throw Error("Worldline motion: the worldline is not timelike between events " + std::to_string(i) + " and " +
-                    std::to_string(i + 1) + " (g(dx/dp, dx/dp) = " + worldline_num(-nn) + " >= 0)");
+                    std::to_string(i + 1) + " (g(dx/dp, dx/dp) = " + number_text(-nn) + " >= 0)");
       s += gw[q] * std::sqrt(nn);
     }
     tau_[i + 1] = tau_[i] + 0.5 * (b - a) * s;
@@ -153,7 +147,7 @@ WorldlineState WorldlineMotion::state_at_param(double p) const {
   m.metric_tensor(x, g);
   const double nn = -dot(g, dx, dx);
   if (!(nn > 0))
-    throw Error("Worldline motion: the interpolated worldline is not timelike at parameter " + worldline_num(p));
+    throw Error("Worldline motion: the interpolated worldline is not timelike at parameter " + number_text(p));
   WorldlineState w;
   w.x = x;
   w.u = (1.0 / std::sqrt(nn)) * dx;

@@ -1,25 +1,19 @@
 #include "spacetime/tetrad.h"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/number_text.h"
 #include "core/param_reader.h"
 
 namespace geovis {
 
 namespace {
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
 std::string vec_str(const Vec4& v) {
-  return "(" + fmt(v[0]) + ", " + fmt(v[1]) + ", " + fmt(v[2]) + ", " + fmt(v[3]) + ")";
+  return "(" + number_text(v[0]) + ", " + number_text(v[1]) + ", " + number_text(v[2]) + ", " + number_text(v[3]) + ")";
 }
 
 const char* const kKindNames[] = {"default", "static", "lnrf", "freefall", "comoving", "cylinder", "cartesian"};
@@ -55,11 +49,11 @@ void check_orthonormal(const Metric& m, const Vec4& x, const Tetrad& e, double t
       const double prod = dot(g, e[a], e[b]);
       if (!(std::fabs(prod - target) <= tol))
         bad += (bad.empty() ? "" : ", ") + std::string("g(e") + std::to_string(a) + ",e" + std::to_string(b) +
-               ") = " + fmt(prod) + " instead of " + fmt(target);
+               ") = " + number_text(prod) + " instead of " + number_text(target);
     }
   if (!bad.empty())
     throw Error(std::string(what) + " is not orthonormal with respect to the metric " + m.name() + " at " + vec_str(x) +
-                ": " + bad + " (tolerance " + fmt(tol) + "; expected g(e_a,e_b) = diag(-1,1,1,1))");
+                ": " + bad + " (tolerance " + number_text(tol) + "; expected g(e_a,e_b) = diag(-1,1,1,1))");
 }
 
 void require_valid_position(const Metric& m, const Vec4& x, std::string_view what) {
@@ -81,8 +75,8 @@ Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v) {
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) scale0 += std::fabs(g[i][j] * v[0][i] * v[0][j]);
   if (!(n0 < -kRel * scale0) || !std::isfinite(n0))
-    throw Error("Gram-Schmidt: the first vector e0 = " + vec_str(v[0]) +
-                " must be timelike, but g(e0,e0) = " + fmt(n0) + " (metric " + m.name() + " at " + vec_str(x) + ")");
+    throw Error("Gram-Schmidt: the first vector e0 = " + vec_str(v[0]) + " must be timelike, but g(e0,e0) = " +
+                number_text(n0) + " (metric " + m.name() + " at " + vec_str(x) + ")");
   e[0] = (1.0 / std::sqrt(-n0)) * v[0];
   for (int i = 1; i < 4; ++i) {
     Vec4 w = v[i];
@@ -99,7 +93,7 @@ Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v) {
       throw Error("Gram-Schmidt: e" + std::to_string(i) + " = " + vec_str(v[i]) +
                   " is degenerate (linearly dependent on the previous base vectors, zero or null; what remains "
                   "after projection has g(w,w) = " +
-                  fmt(n) + ") (metric " + m.name() + " at " + vec_str(x) + ")");
+                  number_text(n) + ") (metric " + m.name() + " at " + vec_str(x) + ")");
     e[i] = (1.0 / std::sqrt(n)) * w;
   }
   return e;
@@ -114,8 +108,8 @@ Tetrad tetrad_from_local(const Tetrad& base, const Tetrad& c) {
 Tetrad boost_tetrad(const Tetrad& e, const Vec3& beta) {
   const double b2 = dot(beta, beta);
   if (!std::isfinite(b2) || !(b2 < 1.0))
-    throw Error("local velocity (" + fmt(beta.x) + ", " + fmt(beta.y) + ", " + fmt(beta.z) +
-                ") has |v| = " + fmt(std::sqrt(b2)) + "; expected |v| < 1 (speed of light = 1)");
+    throw Error("local velocity (" + number_text(beta.x) + ", " + number_text(beta.y) + ", " + number_text(beta.z) +
+                ") has |v| = " + number_text(std::sqrt(b2)) + "; expected |v| < 1 (speed of light = 1)");
   if (b2 == 0.0) return e;
   const double gamma = 1.0 / std::sqrt(1.0 - b2);
   Tetrad out{};
@@ -130,10 +124,10 @@ Vec3 local_velocity(const Metric& m, const Vec4& x, const Tetrad& e, const Vec4&
   const Vec4 ul = coord_to_local(m, x, e, u);
   if (!(ul[0] > 0))
     throw Error("four-velocity " + vec_str(u) +
-                " is not future-directed with respect to the local frame (u^(0) = " + fmt(ul[0]) + ")");
+                " is not future-directed with respect to the local frame (u^(0) = " + number_text(ul[0]) + ")");
   const Vec3 beta{ul[1] / ul[0], ul[2] / ul[0], ul[3] / ul[0]};
   if (!(dot(beta, beta) < 1.0))
-    throw Error("four-velocity " + vec_str(u) + " is not timelike (local speed " + fmt(norm(beta)) + " >= 1)");
+    throw Error("four-velocity " + vec_str(u) + " is not timelike (local speed " + number_text(norm(beta)) + " >= 1)");
   return beta;
 }
 
@@ -142,8 +136,8 @@ Vec4 normalize_four_velocity(const Metric& m, const Vec4& x, const Vec4& u) {
   m.metric_tensor(x, g);
   const double n = dot(g, u, u);
   if (!(n < 0) || !std::isfinite(n))
-    throw Error("four-velocity " + vec_str(u) + " is not timelike: g(u,u) = " + fmt(n) + " (metric " + m.name() +
-                " at " + vec_str(x) + ")");
+    throw Error("four-velocity " + vec_str(u) + " is not timelike: g(u,u) = " + number_text(n) + " (metric " +
+                m.name() + " at " + vec_str(x) + ")");
   return (1.0 / std::sqrt(-n)) * u;
 }
 
@@ -250,7 +244,7 @@ TetradSpec tetrad_spec_from_params(const ParamSet& ps, bool require_pos, Vec4 de
   spec.localvel = Vec3{lv[0], lv[1], lv[2]};
   if (dot(spec.localvel, spec.localvel) >= 1.0)
     ps.fail("localvel",
-            "expected a 3-velocity with |v| < 1 (speed of light = 1), found |v| = " + fmt(norm(spec.localvel)));
+            "expected a 3-velocity with |v| < 1 (speed of light = 1), found |v| = " + number_text(norm(spec.localvel)));
   if (ps.has("vel")) {
     const std::vector<double> v = ps.get_vector("vel", 4);
     spec.has_vel = true;
