@@ -86,10 +86,14 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau) const {
   const double lo = bounded ? motion_->tau_min() : -inf, hi = bounded ? motion_->tau_max() : inf;
   tau = std::clamp(tau, lo, hi);
   for (int it = 0; it < 20; ++it) {
-    const State s = state(tau);
+    // Only the event and e_(0) are needed, not the whole frame.
+    Vec4 x_obj, e0;
+    motion_->event_at_proper_time(tau, x_obj, e0);
+    Mat4 g;
+    metric_->metric_tensor(x_obj, g);
     // f(τ) = g(e0, x − x_obj(τ)); df/dτ = −g(u, u) + g(∇_u e0, Δx) = 1 for geodesic or uniform
     // motion (and 1 + O(a·Δx) otherwise), so the Newton step is τ − f.
-    const double f = dot(s.g, s.e[0], delta(x, s.x));
+    const double f = dot(g, e0, delta(x, x_obj));
     double next = tau - f;
     if (next < lo || next > hi) {
       // Outside the worldline: one retry from the boundary, then give up.
@@ -101,6 +105,24 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau) const {
     if (done) return true;
   }
   return true;
+}
+
+bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, double tau, double radius) const {
+  Vec4 x_obj, e0;
+  motion_->event_at_proper_time(tau, x_obj, e0);
+  Mat4 g;
+  metric_->metric_tensor(x_obj, g);
+  // to_local is linear in Δx: the mapped segment is Δx(s) = a + s b, s ∈ [0, 1], and its
+  // distance² the quadratic A + 2Bs + Cs² in the spatial form Q(v, w) = g(v, w) + g(e0, v) g(e0, w).
+  const Vec4 a = delta(xa, x_obj), b = delta(xb, x_obj) - a;
+  const double ea = dot(g, e0, a), eb = dot(g, e0, b), gaa = dot(g, a, a), gbb = dot(g, b, b);
+  const double A = gaa + ea * ea, B = dot(g, a, b) + ea * eb, C = gbb + eb * eb;
+  const double s = C > 0 ? std::clamp(-B / C, 0.0, 1.0) : 0.0;
+  const double d2 = A + s * (2 * B + s * C);
+  // The sums cancel to rounding (~1e-16) of the size of their terms, and the tetrad of state() is
+  // orthonormal to rounding: margins far above both.
+  const double scale = std::fabs(gaa) + ea * ea + std::fabs(gbb) + eb * eb;
+  return d2 > radius * radius * (1 + 1e-6) + 1e-9 * scale;
 }
 
 Vec4 LocalFrame::body_velocity(const State& s, const Vec3& X, const Vec4& x_hit) const {
@@ -506,6 +528,10 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     if (!frame_.simultaneous_tau(x_ref, tau_new)) break;
     if (found && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) break;
     tau = tau_new;
+    // A sampled motion's full frame (interpolated and orthonormalized) is costly: first rule out,
+    // from the event and e_(0) alone, a segment that passes outside the body's bounding sphere
+    // (the child test below would miss it).
+    if (!tube_.empty() && frame_.passes_outside(seg.x0, seg.x1, tau, radius_local_)) break;
     const LocalFrame::State st = frame_.state(tau);
     const Vec4 X0 = frame_.to_local(st, seg.x0), X1 = frame_.to_local(st, seg.x1);
     Segment ls;

@@ -53,6 +53,11 @@ class LocalFrame {
   /// f(τ) = g(e_(0)(τ), x − x_obj(τ)) (Newton; f' = 1 + O(acceleration)). False when it lies
   /// outside the motion's proper-time range. Static frames: true, τ unchanged.
   bool simultaneous_tau(const Vec4& x, double& tau) const;
+  /// Whether the segment xa → xb, mapped into the frame of the moving tetrad at τ (to_local),
+  /// passes farther than `radius` from the local origin, with a margin for rounding. Needs only
+  /// x_obj(τ) and e_(0), not the whole frame: for an orthonormal tetrad the local spatial distance²
+  /// of Δx = x − x_obj is Σ_i (X^i)² = g(Δx, Δx) + (X^0)², X^0 = −g(e_(0), Δx).
+  bool passes_outside(const Vec4& xa, const Vec4& xb, double tau, double radius) const;
   /// Local coordinates X^a = η^{ab} g(e_(b), x − x_obj) of event x.
   Vec4 to_local(const State& s, const Vec4& x) const;
   /// x − y in coordinates, the periodic angle (φ of spherical/cylindrical charts) wrapped to

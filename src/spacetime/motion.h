@@ -24,6 +24,14 @@ class Motion {
   virtual ~Motion() = default;
   /// State at proper time tau (interpolated between samples to integration precision).
   virtual MotionSample at_proper_time(double tau) const = 0;
+  /// Event x and four-velocity u = e_(0) at proper time τ, the same values as at_proper_time
+  /// without the spatial axes (what a simultaneity search needs; sampled motions skip
+  /// interpolating and orthonormalizing e_(1..3)).
+  virtual void event_at_proper_time(double tau, Vec4& x, Vec4& u) const {
+    const MotionSample s = at_proper_time(tau);
+    x = s.x;
+    u = s.e[0];
+  }
   /// State at the event of the worldline whose coordinate time x^0 equals t.
   virtual MotionSample at_coordinate_time(double t) const = 0;
   /// Samples (GeoViS `actualpos N` of a projector with a motion picks sample N).

@@ -59,6 +59,13 @@ size_t SampledMotion::interval(double tau) const {
   return std::min(i, nodes_.size() - 2);
 }
 
+const MotionSample* SampledMotion::node_at(size_t i, double tau) const {
+  if (nodes_.size() == 1) return &samples_[0];
+  if (tau == nodes_[i].tau) return &samples_[i];
+  if (tau == nodes_[i + 1].tau) return &samples_[i + 1];
+  return nullptr;
+}
+
 void SampledMotion::interpolate_x(size_t i, double tau, Vec4& x, Vec4& u) const {
   const MotionNode& a = nodes_[i];
   const MotionNode& b = nodes_[i + 1];
@@ -76,11 +83,9 @@ void SampledMotion::interpolate_x(size_t i, double tau, Vec4& x, Vec4& u) const 
 
 MotionSample SampledMotion::at_proper_time(double tau) const {
   const size_t i = interval(tau);
-  if (nodes_.size() == 1) return samples_[0];
+  if (const MotionSample* node = node_at(i, tau)) return *node;
   const MotionNode& a = nodes_[i];
   const MotionNode& b = nodes_[i + 1];
-  if (tau == a.tau) return samples_[i];
-  if (tau == b.tau) return samples_[i + 1];
   MotionSample out;
   out.tau = tau;
   interpolate_x(i, tau, out.x, out.u);
@@ -98,6 +103,21 @@ MotionSample SampledMotion::at_proper_time(double tau) const {
   out.e = gram_schmidt(*metric_, out.x, e);
   out.u = out.e[0];
   return out;
+}
+
+void SampledMotion::event_at_proper_time(double tau, Vec4& x, Vec4& u) const {
+  const size_t i = interval(tau);
+  const MotionSample* node = node_at(i, tau);
+  if (node) {
+    x = node->x;
+    u = node->e[0];
+    return;
+  }
+  // As at_proper_time: e_(0) is the normalized u(τ) (the first Gram-Schmidt step).
+  interpolate_x(i, tau, x, u);
+  Mat4 g;
+  metric_->metric_tensor(x, g);
+  u = unit_timelike(*metric_, x, g, u);
 }
 
 double SampledMotion::proper_time_at_coordinate_time(double t) const {

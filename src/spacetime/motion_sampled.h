@@ -26,6 +26,7 @@ struct MotionNode {
 class SampledMotion : public Motion {
  public:
   MotionSample at_proper_time(double tau) const override;
+  void event_at_proper_time(double tau, Vec4& x, Vec4& u) const override;
   MotionSample at_coordinate_time(double t) const override;
   const std::vector<MotionSample>& samples() const override { return samples_; }
   const std::vector<MotionNode>& nodes() const { return nodes_; }
@@ -41,6 +42,9 @@ class SampledMotion : public Motion {
  private:
   /// Interval index i with nodes_[i].tau <= tau <= nodes_[i+1].tau; throws outside the range.
   size_t interval(double tau) const;
+  /// The sample at τ when τ is a node of interval i (or the only node), else null: nodes are
+  /// returned as computed, not interpolated.
+  const MotionSample* node_at(size_t i, double tau) const;
   void interpolate_x(size_t i, double tau, Vec4& x, Vec4& u) const;
 
   std::shared_ptr<const Metric> metric_;

@@ -16,6 +16,11 @@ std::string vec_str(const Vec4& v) {
   return "(" + number_text(v[0]) + ", " + number_text(v[1]) + ", " + number_text(v[2]) + ", " + number_text(v[3]) + ")";
 }
 
+// Relative degeneracy threshold of gram_schmidt: a vector counts as degenerate when what is left
+// of it after removing the components along the previous base vectors is ~1e-10 of its original
+// size.
+constexpr double kGramSchmidtRel = 1e-10;
+
 const char* const kKindNames[] = {"default", "static", "lnrf", "freefall", "comoving", "cylinder", "cartesian"};
 
 /// The natural tetrad of one of kKindNames (the default of the `localframe` spec).
@@ -63,21 +68,22 @@ void require_valid_position(const Metric& m, const Vec4& x, std::string_view wha
                 m.info().coords[3] + "; e.g. inside a horizon, at a singularity or on an axis)");
 }
 
+Vec4 unit_timelike(const Metric& m, const Vec4& x, const Mat4& g, const Vec4& v) {
+  const double n0 = dot(g, v, v);
+  double scale0 = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) scale0 += std::fabs(g[i][j] * v[i] * v[j]);
+  if (!(n0 < -kGramSchmidtRel * scale0) || !std::isfinite(n0))
+    throw Error("Gram-Schmidt: the first vector e0 = " + vec_str(v) + " must be timelike, but g(e0,e0) = " +
+                number_text(n0) + " (metric " + m.name() + " at " + vec_str(x) + ")");
+  return (1.0 / std::sqrt(-n0)) * v;
+}
+
 Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v) {
   Mat4 g;
   m.metric_tensor(x, g);
   Tetrad e{};
-  const double n0 = dot(g, v[0], v[0]);
-  // Relative degeneracy threshold: a vector counts as degenerate when what is left of it after
-  // removing the components along the previous base vectors is ~1e-10 of its original size.
-  constexpr double kRel = 1e-10;
-  double scale0 = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) scale0 += std::fabs(g[i][j] * v[0][i] * v[0][j]);
-  if (!(n0 < -kRel * scale0) || !std::isfinite(n0))
-    throw Error("Gram-Schmidt: the first vector e0 = " + vec_str(v[0]) + " must be timelike, but g(e0,e0) = " +
-                number_text(n0) + " (metric " + m.name() + " at " + vec_str(x) + ")");
-  e[0] = (1.0 / std::sqrt(-n0)) * v[0];
+  e[0] = unit_timelike(m, x, g, v[0]);
   for (int i = 1; i < 4; ++i) {
     Vec4 w = v[i];
     double scale = 0;
@@ -89,7 +95,7 @@ Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v) {
       w = w - c * e[a];
     }
     const double n = dot(g, w, w);
-    if (!(n > kRel * scale) || !std::isfinite(n))
+    if (!(n > kGramSchmidtRel * scale) || !std::isfinite(n))
       throw Error("Gram-Schmidt: e" + std::to_string(i) + " = " + vec_str(v[i]) +
                   " is degenerate (linearly dependent on the previous base vectors, zero or null; what remains "
                   "after projection has g(w,w) = " +

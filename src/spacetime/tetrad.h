@@ -40,6 +40,9 @@ void require_valid_position(const Metric& m, const Vec4& x, std::string_view wha
 /// Throws Error when v_0 is not timelike or a v_i is (nearly) linearly dependent on the previous
 /// ones (degenerate). e_(0) keeps the time orientation of v_0.
 Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v);
+/// The first step of gram_schmidt alone: v/√(−g(v,v)) with g the metric tensor of m at x (throws
+/// Error as gram_schmidt does when v is not timelike).
+Vec4 unit_timelike(const Metric& m, const Vec4& x, const Mat4& g, const Vec4& v);
 
 /// e_(a) = Σ_b c[a][b] ê_(b): a tetrad given relative to the frame `base` (GeoViS `incoords #f`).
 Tetrad tetrad_from_local(const Tetrad& base, const Tetrad& c);

@@ -3,6 +3,7 @@
 // frame shows the object at the light's arrival time.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -13,6 +14,8 @@
 #include "render/shapes.h"
 #include "spacetime/metric_registry.h"
 #include "spacetime/motion_const_velocity.h"
+#include "spacetime/motion_factory.h"
+#include "support/paper_orbit.h"
 
 namespace geovis {
 namespace {
@@ -211,6 +214,32 @@ TEST(ObjLocal, SpinningPaddleSeenAtLightArrivalTime) {
   const double r = std::hypot(hit.point.x, hit.point.y);
   const double vmag = std::hypot(hit.emitter_u[1], hit.emitter_u[2]) / hit.emitter_u[0];
   EXPECT_NEAR(vmag, omega * r, 1e-6);
+}
+
+TEST(ObjLocal, PassesOutsideExactlyWhereTheMappedSegmentMissesTheBall) {
+  // LocalFrame::passes_outside works from x_obj(τ) and e_(0) alone; the distance from the local
+  // origin of the segment mapped with the whole frame (to_local) decides it up to its margin. A
+  // geodesic of a sampled motion: the circular orbit at r = 6M of paper §3 in Schwarzschild.
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  const LocalFrame frame(m, make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 500; ++k) {
+    const double tau = k == 0 ? frame.motion()->samples()[150].tau : 10 + 9 * u(rng);  // k = 0: a node
+    const LocalFrame::State st = frame.state(tau);
+    Vec4 xa = st.x, xb = st.x;
+    for (int mu = 0; mu < 4; ++mu) {
+      xa[mu] += 0.5 * u(rng);
+      xb[mu] += 0.5 * u(rng);
+    }
+    const Vec4 Xa = frame.to_local(st, xa), Xb = frame.to_local(st, xb);
+    const Vec3 pa{Xa[1], Xa[2], Xa[3]}, d = Vec3{Xb[1], Xb[2], Xb[3]} - pa;
+    const double s = std::clamp(-dot(pa, d) / dot(d, d), 0.0, 1.0);
+    const Vec3 closest = pa + s * d;
+    const double dist = std::sqrt(dot(closest, closest));
+    EXPECT_TRUE(frame.passes_outside(xa, xb, tau, 0.999 * dist)) << k;
+    EXPECT_FALSE(frame.passes_outside(xa, xb, tau, 1.001 * dist)) << k;
+  }
 }
 
 TEST(ObjLocal, FactoryLocalCompObjectAndMovingPrimitive) {

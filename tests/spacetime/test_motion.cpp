@@ -16,6 +16,7 @@
 #include "spacetime/motion_factory.h"
 #include "spacetime/motion_geodesic.h"
 #include "spacetime/tetrad.h"
+#include "support/paper_orbit.h"
 
 using namespace geovis;
 
@@ -30,30 +31,8 @@ std::string error_of(auto&& f) {
   return "";
 }
 
-ParamSet paper_orbit_params() {
-  // Paper §3 init-motion (with more points and a longer forward range: one full orbit).
-  ParamSet ps("init-motion", SourceLoc{"orbit.scm", 20});
-  ps.add("type", "Geodesic");
-  ps.add("pos", std::vector<double>{0.0, 6.0, M_PI / 2, 0.0});
-  ps.add("localvel", std::vector<double>{0.0, 0.0, 0.5});
-  ps.add("e0", std::vector<double>{1, 0, 0, 0});
-  ps.add("e1", std::vector<double>{0, 0, -1, 0});
-  ps.add("e2", std::vector<double>{0, 0, 0, -1});
-  ps.add("e3", std::vector<double>{0, 1, 0, 0});
-  ps.add("maxnumpoints", 1000);
-  ps.add("forward", 70.0);
-  ps.add("backward", 10.0);
-  return ps;
-}
-
-SolverConfig paper_solver() {
-  SolverConfig cfg;  // paper §3: GSL_RK_Cash-Karp, step_ctrl #f, step_size 0.1
-  cfg.kind = SolverKind::CashKarp45;
-  cfg.step_ctrl = false;
-  cfg.step_size = 0.1;
-  cfg.eps_abs = 0.01;
-  return cfg;
-}
+using testing_support::paper_orbit_params;
+using testing_support::paper_solver;
 
 /// Radial free fall from rest at r_i (M = 1): r(τ) from the cycloid, solving τ(η) by Newton.
 double cycloid_r(double ri, double tau) {
@@ -114,6 +93,29 @@ TEST(Motion, CircularOrbitPeriodAndGeodeticPrecession) {
   EXPECT_NEAR(mid.x[3], 33.333 * std::sqrt(2.0) / std::sqrt(216.0), 1e-9);
   EXPECT_LT(orthonormality_error(*m, mid.x, mid.e), 1e-13);
   EXPECT_NE(error_of([&] { motion->at_proper_time(80.0); }).find("outside the computed range"), std::string::npos);
+}
+
+TEST(Motion, EventAtProperTimeIsTheFullSampleWithoutItsAxes) {
+  // event_at_proper_time (simultaneity searches) must give exactly at_proper_time's x and e_(0):
+  // on the orbit (u = e_(0) of the interpolated, orthonormalized frame) and at the nodes.
+  std::shared_ptr<const Metric> m = make_metric("Schwarzschild");
+  const MotionPtr motion = make_motion(paper_orbit_params(), m, paper_solver());
+  for (double tau : {-10.0, -3.21, 0.0, 0.05, 17.777, motion->samples()[400].tau, 69.99, 70.0}) {
+    const MotionSample full = motion->at_proper_time(tau);
+    Vec4 x, u;
+    motion->event_at_proper_time(tau, x, u);
+    for (int mu = 0; mu < 4; ++mu) {
+      EXPECT_EQ(x[mu], full.x[mu]) << tau;
+      EXPECT_EQ(u[mu], full.e[0][mu]) << tau;
+    }
+    Mat4 g;
+    m->metric_tensor(x, g);
+    EXPECT_NEAR(dot(g, u, u), -1.0, 1e-13);
+    EXPECT_NEAR(x[1], 6.0, 1e-9);  // on the circular orbit
+  }
+  Vec4 x, u;
+  EXPECT_NE(error_of([&] { motion->event_at_proper_time(80.0, x, u); }).find("outside the computed range"),
+            std::string::npos);
 }
 
 TEST(Motion, RadialFreeFallSchwarzschild) {
