@@ -8,6 +8,7 @@
 #include "render/compound.h"
 #include "render/object_type.h"
 #include "spacetime/motion_const_velocity.h"
+#include "spacetime/motion_sampled.h"
 
 namespace geovis {
 
@@ -50,6 +51,14 @@ LocalFrame::LocalFrame(std::shared_ptr<const Metric> metric, MotionPtr motion)
   if (!metric_) throw Error("local frame: no metric");
   if (!motion_ || motion_->samples().empty()) throw Error("local frame: the motion has no worldline samples");
   periodic_index_ = periodic_index_of(*metric_);
+  const auto* sampled = dynamic_cast<const SampledMotion*>(motion_.get());
+  if (sampled && &sampled->metric() == metric_.get()) sampled_ = sampled;
+}
+
+void LocalFrame::event(double tau, Vec4& x, Vec4& e0, Mat4& g) const {
+  if (sampled_) return sampled_->event_at_proper_time(tau, x, e0, g);
+  motion_->event_at_proper_time(tau, x, e0);
+  metric_->metric_tensor(x, g);
 }
 
 LocalFrame::State LocalFrame::state(double tau) const {
@@ -88,9 +97,8 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau) const {
   for (int it = 0; it < 20; ++it) {
     // Only the event and e_(0) are needed, not the whole frame.
     Vec4 x_obj, e0;
-    motion_->event_at_proper_time(tau, x_obj, e0);
     Mat4 g;
-    metric_->metric_tensor(x_obj, g);
+    event(tau, x_obj, e0, g);
     // f(τ) = g(e0, x − x_obj(τ)); df/dτ = −g(u, u) + g(∇_u e0, Δx) = 1 for geodesic or uniform
     // motion (and 1 + O(a·Δx) otherwise), so the Newton step is τ − f.
     const double f = dot(g, e0, delta(x, x_obj));
@@ -109,9 +117,8 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau) const {
 
 bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, double tau, double radius) const {
   Vec4 x_obj, e0;
-  motion_->event_at_proper_time(tau, x_obj, e0);
   Mat4 g;
-  metric_->metric_tensor(x_obj, g);
+  event(tau, x_obj, e0, g);
   // to_local is linear in Δx: the mapped segment is Δx(s) = a + s b, s ∈ [0, 1], and its
   // distance² the quadratic A + 2Bs + Cs² in the spatial form Q(v, w) = g(v, w) + g(e0, v) g(e0, w).
   const Vec4 a = delta(xa, x_obj), b = delta(xb, x_obj) - a;

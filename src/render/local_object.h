@@ -31,6 +31,7 @@
 namespace geovis {
 
 class ConstVelocityMotion;
+class SampledMotion;
 
 /// A local frame: a static tetrad (fixed event and base vectors) or a moving tetrad (Motion).
 class LocalFrame {
@@ -68,8 +69,12 @@ class LocalFrame {
   Vec4 body_velocity(const State& s, const Vec3& X, const Vec4& x_hit) const;
 
  private:
+  /// Worldline event x_obj(τ), e_(0)(τ) and the metric tensor at x_obj(τ).
+  void event(double tau, Vec4& x, Vec4& e0, Mat4& g) const;
   std::shared_ptr<const Metric> metric_;
   MotionPtr motion_;
+  /// motion_ when it is a SampledMotion of metric_ (it computes the metric tensor at the event).
+  const SampledMotion* sampled_ = nullptr;
   State fixed_;
   int periodic_index_ = -1;
 };

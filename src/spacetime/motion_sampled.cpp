@@ -106,16 +106,20 @@ MotionSample SampledMotion::at_proper_time(double tau) const {
 }
 
 void SampledMotion::event_at_proper_time(double tau, Vec4& x, Vec4& u) const {
+  Mat4 g;
+  event_at_proper_time(tau, x, u, g);
+}
+
+void SampledMotion::event_at_proper_time(double tau, Vec4& x, Vec4& u, Mat4& g) const {
   const size_t i = interval(tau);
-  const MotionSample* node = node_at(i, tau);
-  if (node) {
+  if (const MotionSample* node = node_at(i, tau)) {
     x = node->x;
     u = node->e[0];
+    metric_->metric_tensor(x, g);
     return;
   }
   // As at_proper_time: e_(0) is the normalized u(τ) (the first Gram-Schmidt step).
   interpolate_x(i, tau, x, u);
-  Mat4 g;
   metric_->metric_tensor(x, g);
   u = unit_timelike(*metric_, x, g, u);
 }

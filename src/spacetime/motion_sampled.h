@@ -27,6 +27,8 @@ class SampledMotion : public Motion {
  public:
   MotionSample at_proper_time(double tau) const override;
   void event_at_proper_time(double tau, Vec4& x, Vec4& u) const override;
+  /// The same, and g: the metric tensor of metric() at x (computed anyway to normalize u).
+  void event_at_proper_time(double tau, Vec4& x, Vec4& u, Mat4& g) const;
   MotionSample at_coordinate_time(double t) const override;
   const std::vector<MotionSample>& samples() const override { return samples_; }
   const std::vector<MotionNode>& nodes() const { return nodes_; }

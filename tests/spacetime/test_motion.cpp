@@ -111,6 +111,14 @@ TEST(Motion, EventAtProperTimeIsTheFullSampleWithoutItsAxes) {
     Mat4 g;
     m->metric_tensor(x, g);
     EXPECT_NEAR(dot(g, u, u), -1.0, 1e-13);
+    Vec4 x2, u2;
+    Mat4 g2;
+    static_cast<const SampledMotion&>(*motion).event_at_proper_time(tau, x2, u2, g2);
+    for (int mu = 0; mu < 4; ++mu) {
+      EXPECT_EQ(x2[mu], x[mu]);
+      EXPECT_EQ(u2[mu], u[mu]);
+      for (int nu = 0; nu < 4; ++nu) EXPECT_EQ(g2[mu][nu], g[mu][nu]);
+    }
     EXPECT_NEAR(x[1], 6.0, 1e-9);  // on the circular orbit
   }
   Vec4 x, u;
