@@ -21,6 +21,17 @@ std::string vec_str(const Vec4& v) {
 // size.
 constexpr double kGramSchmidtRel = 1e-10;
 
+/// Σ_pq |g_pq v^p v^q|, the size of the terms that cancel in g(v, v) (the scale of gram_schmidt's
+/// degeneracy test). Rows are summed separately, then together: independent additions instead of
+/// one chain of sixteen (the test runs on every interpolated motion frame).
+double abs_quadratic_form(const Mat4& g, const Vec4& v) {
+  double row[4];
+  for (int p = 0; p < 4; ++p)
+    row[p] = std::fabs(g[p][0] * v[p] * v[0]) + std::fabs(g[p][1] * v[p] * v[1]) + std::fabs(g[p][2] * v[p] * v[2]) +
+             std::fabs(g[p][3] * v[p] * v[3]);
+  return (row[0] + row[1]) + (row[2] + row[3]);
+}
+
 const char* const kKindNames[] = {"default", "static", "lnrf", "freefall", "comoving", "cylinder", "cartesian"};
 
 /// The natural tetrad of one of kKindNames (the default of the `localframe` spec).
@@ -70,10 +81,7 @@ void require_valid_position(const Metric& m, const Vec4& x, std::string_view wha
 
 Vec4 unit_timelike(const Metric& m, const Vec4& x, const Mat4& g, const Vec4& v) {
   const double n0 = dot(g, v, v);
-  double scale0 = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) scale0 += std::fabs(g[i][j] * v[i] * v[j]);
-  if (!(n0 < -kGramSchmidtRel * scale0) || !std::isfinite(n0))
+  if (!(n0 < -kGramSchmidtRel * abs_quadratic_form(g, v)) || !std::isfinite(n0))
     throw Error("Gram-Schmidt: the first vector e0 = " + vec_str(v) + " must be timelike, but g(e0,e0) = " +
                 number_text(n0) + " (metric " + m.name() + " at " + vec_str(x) + ")");
   return (1.0 / std::sqrt(-n0)) * v;
@@ -86,9 +94,7 @@ Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v) {
   e[0] = unit_timelike(m, x, g, v[0]);
   for (int i = 1; i < 4; ++i) {
     Vec4 w = v[i];
-    double scale = 0;
-    for (int p = 0; p < 4; ++p)
-      for (int q = 0; q < 4; ++q) scale += std::fabs(g[p][q] * v[i][p] * v[i][q]);
+    const double scale = abs_quadratic_form(g, v[i]);
     for (int a = 0; a < i; ++a) {
       // remove the component along e_a: w -= η_aa g(w, e_a) e_a
       const double c = kEta[a] * dot(g, w, e[a]);
