@@ -360,12 +360,13 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   // motions along geodesics need their worldline sampled, `geovis geodesic` prints the steps — and
   // the objects test such a step whole however long it is (render/local_object.h).
   straight_ = job.metric->info().inertial_cartesian;
-  // Packets (spacetime/geodesic_packet.h): the geodesic system with Cash–Karp, in the metric's
+  // Packets (spacetime/geodesic_packet.h): the geodesic system with an embedded Runge–Kutta pair
+  // of ExplicitRK (packet_solver: Cash–Karp, Fehlberg, Dormand–Prince 5(4)), in the metric's
   // coordinates or through Carter's separated equations (Metric::integrate_packet chooses as
   // integrate does), also RGBjac's geodesic pass (jacobi_hits_only_); the Jacobi system and other
   // solvers stay scalar, and straight rays need no integrator at all.
   jacobi_hits_only_ = system_ == GeodesicSystem::Jacobi;
-  packets_ = cfg_.kind == SolverKind::CashKarp45 && !straight_;
+  packets_ = packet_solver(cfg_.kind) && !straight_;
   if (job.reference_tracing) {
     straight_ = packets_ = jacobi_hits_only_ = false;
     cfg_.escape_radius = std::numeric_limits<double>::infinity();  // SolverConfig: no escape test

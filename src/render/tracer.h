@@ -64,9 +64,10 @@ class Tracer {
   /// trace_pixel for each sample (colour i to colors[i]), in packets of rays integrated on SIMD lanes
   /// where packet_tracing() (spacetime/geodesic_packet.h), with the same results to the bit.
   void trace_pixels(std::span<const PixelSample> samples, Color* colors, TraceStats& stats) const;
-  /// Light rays go in packets: the geodesic system with the CashKarp45 solver, in coordinates or
-  /// through Carter's separated equations (RGBjac: its first, geodesic pass; the rays that hit are
-  /// traced again one by one with their Jacobi fields).
+  /// Light rays go in packets: the geodesic system with a solver packet_solver accepts (CashKarp45,
+  /// Fehlberg45, DormandPrince54), in coordinates or through Carter's separated equations (RGBjac:
+  /// its first, geodesic pass; the rays that hit are traced again one by one with their Jacobi
+  /// fields).
   bool packet_tracing() const { return packets_; }
 
   /// Traces the ray leaving the observer in local direction `d` (need not be unit).

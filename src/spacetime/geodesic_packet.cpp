@@ -46,6 +46,17 @@ struct MinoLaneCoeffs {
   alignas(64) double v[kRows][kPacketLanes] = {};
 };
 
+/// Calls f.template operator()<Tab>() with the tableau of solver `kind` (one of those
+/// packet_solver accepts).
+template <class F>
+decltype(auto) with_packet_tableau(SolverKind kind, F&& f) {
+  switch (kind) {
+    case SolverKind::Fehlberg45: return f.template operator()<FehlbergTableau>();
+    case SolverKind::DormandPrince54: return f.template operator()<DormandPrince54Tableau>();
+    default: return f.template operator()<CashKarpTableau>();
+  }
+}
+
 }  // namespace
 }  // namespace geovis
 #endif  // GEOVIS_SPACETIME_GEODESIC_PACKET_ONCE_
@@ -55,16 +66,16 @@ namespace geovis {
 namespace HWY_NAMESPACE {
 #include "spacetime/kerr_mino_rhs.h"
 
-/// ExplicitRK<CashKarpTableau>::attempt (integrators.h) on all lanes at once for a system of N
-/// components whose right-hand side reads the first kCoupled (rk_detail::coupled_dim): from y,
-/// dy = f(y) and the signed steps h (per lane), the new state y1 and the error estimate e (SoA).
-/// The same operations in the same order as the scalar stepper's rk_detail::stage/weighted:
+/// ExplicitRK<Tab>::attempt (integrators.h) on all lanes at once for a system of N components
+/// whose right-hand side reads the first kCoupled (rk_detail::coupled_dim): from y, dy = f(y) and
+/// the signed steps h (per lane), the new state y1, the error estimate e and, for a
+/// first-same-as-last tableau (Tab::kFsal), f(y1) = the last stage in dy1 (SoA). The same
+/// operations in the same order as the scalar stepper's rk_detail::stage/weighted:
 ///   stage s: tmp_i = y_i + h·(((0 + a_s0 k_0i) + a_s1 k_1i) + …)   (non-zero a, i < kCoupled)
 ///   y1_i = y_i + h·Σ_j b_j k_ji,   e_i = h·Σ_j e_j k_ji.
-template <int N, int kCoupled, class Rhs>
+template <class Tab, int N, int kCoupled, class Rhs>
 HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* dy, const double* h, double* y1,
-                                 double* e) {
-  using Tab = CashKarpTableau;
+                                 double* e, double* dy1) {
   constexpr int S = Tab::S, W = kPacketLanes;
   const SimdTag d;
   const size_t L = hn::Lanes(d);
@@ -107,13 +118,17 @@ HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* 
       (hv * ae).store(e + i * W + l);
     }
   }
+  if constexpr (Tab::kFsal) std::memcpy(dy1, k[S - 1], sizeof k[S - 1]);
 }
 
-/// The Cash–Karp attempt on the geodesic system in the metric's coordinates (lanes: those whose
-/// right-hand side is needed, for metrics evaluated lane by lane).
-void rk_attempt(const MetricKernel& m, unsigned lanes, const double* y, const double* dy, const double* h, double* y1,
-                double* e) {
-  rk_attempt_lanes<kDim, kDim>([&](const double* yy, double* dyy) { packet_rhs(m, yy, dyy, lanes); }, y, dy, h, y1, e);
+/// The attempt of solver `kind` on the geodesic system in the metric's coordinates (lanes: those
+/// whose right-hand side is needed, for metrics evaluated lane by lane).
+void rk_attempt(SolverKind kind, const MetricKernel& m, unsigned lanes, const double* y, const double* dy,
+                const double* h, double* y1, double* e, double* dy1) {
+  with_packet_tableau(kind, [&]<class Tab>() {
+    rk_attempt_lanes<Tab, kDim, kDim>([&](const double* yy, double* dyy) { packet_rhs(m, yy, dyy, lanes); }, y, dy, h,
+                                      y1, e, dy1);
+  });
 }
 
 /// kerr_mino_rhs (kerr_mino.h) on every lane: the Mino-time right-hand side, SoA (KerrMinoRHS's
@@ -136,10 +151,14 @@ HWY_INLINE void mino_rhs_lanes(const MinoLaneCoeffs& c, const double* y, double*
 
 void mino_rhs(const MinoLaneCoeffs& c, const double* y, double* dy) { mino_rhs_lanes(c, y, dy); }
 
-/// The Cash–Karp attempt on the Mino-time system (t, φ, λ are quadratures: KerrMinoRHS::kCoupled).
-void mino_attempt(const MinoLaneCoeffs& c, const double* y, const double* dy, const double* h, double* y1, double* e) {
-  rk_attempt_lanes<KerrMinoRHS::N, KerrMinoRHS::kCoupled>(
-      [&](const double* yy, double* dyy) { mino_rhs_lanes(c, yy, dyy); }, y, dy, h, y1, e);
+/// The attempt of solver `kind` on the Mino-time system (t, φ, λ are quadratures:
+/// KerrMinoRHS::kCoupled).
+void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const double* y, const double* dy, const double* h,
+                  double* y1, double* e, double* dy1) {
+  with_packet_tableau(kind, [&]<class Tab>() {
+    rk_attempt_lanes<Tab, KerrMinoRHS::N, KerrMinoRHS::kCoupled>(
+        [&](const double* yy, double* dyy) { mino_rhs_lanes(c, yy, dyy); }, y, dy, h, y1, e, dy1);
+  });
 }
 
 }  // namespace HWY_NAMESPACE
@@ -155,32 +174,33 @@ HWY_EXPORT(mino_attempt);
 
 namespace {
 
-/// One lane's run of integrate_with<ExplicitRK<CashKarpTableau>> (its local variables there).
-template <int N>
+/// One lane's run of integrate_with<ExplicitRK<Tab>> (its local variables there).
+template <class Tab, int N>
 struct Lane {
   bool live = false;
   double lambda = 0, h = 0, hstep = 0, h_cross = 0, err = 0;
   double hmax = 0, hmin = 0, affine0 = 0, remaining = 0;
   int affine_retries = 0;
   bool after_reject = false, clipped = false;
-  StepController<CashKarpTableau::kErrExp> control;  ///< ExplicitRK::control
+  StepController<Tab::kErrExp> control;  ///< ExplicitRK::control
   GeodesicResult res;
   double inv_tol[N] = {};  ///< ErrorScale::inv of systems with their own tolerance scales
 };
 
 /// Integrates the rays of `rays` on the lanes of packet system PS, each lane exactly as
-/// integrate_with<ExplicitRK<CashKarpTableau>> (integrators.h) integrates PS's scalar system of the
-/// lane from λ = 0: the same steps, checks and stops in the same order (the optional parts —
+/// integrate_with<ExplicitRK<Tab>> (integrators.h, Tab: the tableau of cfg.kind) integrates PS's
+/// scalar system of the lane from λ = 0: the same steps, checks and stops in the same order (the optional parts —
 /// own affine parameter, scaled tolerance, projection, re-basing — chosen by the same `requires`).
 /// PS provides
 ///   N                                   the state's dimension;
 ///   system(l)                           the scalar system of lane l (integrators.h concept);
 ///   start(l, y_start, y)                the ray's state from its start (8 components: x, k);
 ///                                       false when it handled the ray itself (done already called);
-///   rhs(y, dy, lanes), attempt(lanes, y, dy, h, y1, e)   SoA right-hand side and Cash–Karp attempt;
+///   rhs(y, dy, lanes), attempt(kind, lanes, y, dy, h, y1, e, dy1)   SoA right-hand side and the
+///                                       attempt of solver `kind` (rk_attempt_lanes);
 ///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies.
-template <class PS>
+template <class Tab, class PS>
 void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   constexpr int W = kPacketLanes, N = PS::N;
   using Sys = std::remove_cvref_t<decltype(ps.system(0))>;
@@ -207,7 +227,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   constexpr double kBoundaryRes = 1.0 / 1024;
 
   HWY_ALIGN double y[N * W] = {}, dy[N * W] = {}, y1[N * W] = {}, dy1[N * W] = {}, e[N * W] = {}, hv[W] = {};
-  Lane<N> lane[W];
+  HWY_ALIGN double f1[Tab::kFsal ? N * W : 1];  // f(y1) of the lanes whose last stage is not it
+  Lane<Tab, N> lane[W];
   bool exhausted = false;
   unsigned need_dy = 0;  // lanes whose dy = f(y) is still to be evaluated (fresh rays)
   unsigned ready = 0;    // lanes whose next trial step is set up (hv)
@@ -232,7 +253,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   };
   // integrate_with's finish(): the result with the state where the ray stopped.
   auto finish = [&](int l, StopReason r) {
-    Lane<N>& ln = lane[l];
+    Lane<Tab, N>& ln = lane[l];
     double yl[N];
     get(y, l, yl);
     ln.res.reason = r;
@@ -255,8 +276,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       if (!ps.start(l, ys, yl)) continue;
       put(y, l, yl);
-      Lane<N>& ln = lane[l];
-      ln = Lane<N>{};
+      Lane<Tab, N>& ln = lane[l];
+      ln = Lane<Tab, N>{};
       ln.live = true;
       const Sys& sys = ps.system(l);
       set_tolerance(l, yl);
@@ -289,7 +310,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         need_dy = 0;
       }
       for (int l = 0; l < W; ++l) {
-        Lane<N>& ln = lane[l];
+        Lane<Tab, N>& ln = lane[l];
         if (!ln.live || (ready >> l & 1u)) continue;
         if (ln.res.steps >= cfg.max_steps) {
           finish(l, StopReason::MaxSteps);
@@ -322,13 +343,13 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     } while (need_dy);
     if (!ready) return;
 
-    ps.attempt(ready, y, dy, hv, y1, e);
-    unsigned accepted = 0;
+    ps.attempt(cfg.kind, ready, y, dy, hv, y1, e, dy1);
+    unsigned accepted = 0, need_dy1 = 0;
     for (int l = 0; l < W; ++l) {
       if (!(ready >> l & 1u)) continue;
-      Lane<N>& ln = lane[l];
+      Lane<Tab, N>& ln = lane[l];
       auto& sys = ps.system(l);
-      ln.res.rhs_evals += CashKarpTableau::S - 1;
+      ln.res.rhs_evals += Tab::S - 1;
       double yl[N], yl1[N], el[N];
       get(y, l, yl);
       get(y1, l, yl1);
@@ -384,21 +405,33 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         ln.clipped = dl >= ln.remaining * (1.0 - 1e-12);
       }
       if (cfg.reproject) sys.reproject(yl1, cfg.type);
-      if constexpr (requires { sys.project_invariants(yl1); }) sys.project_invariants(yl1);
-      if constexpr (requires { sys.rescale(yl1, cfg.type); }) sys.rescale(yl1, cfg.type);
+      bool changed = false;
+      if constexpr (requires { sys.project_invariants(yl1); }) changed = sys.project_invariants(yl1);
+      if constexpr (requires { sys.rescale(yl1, cfg.type); }) changed = sys.rescale(yl1, cfg.type) || changed;
       put(y1, l, yl1);
       accepted |= 1u << l;
+      if (!Tab::kFsal || cfg.reproject || changed) need_dy1 |= 1u << l;
     }
     if (!accepted) continue;
 
-    // Cash–Karp is not first-same-as-last: f at every accepted state (integrate_with).
-    ps.rhs(y1, dy1, accepted);
+    // f at the accepted states the last stage did not give (integrate_with); a first-same-as-last
+    // tableau's dy1 of the other lanes is kept.
+    if constexpr (Tab::kFsal) {
+      if (need_dy1) {
+        ps.rhs(y1, f1, need_dy1);
+        for (int l = 0; l < W; ++l)
+          if (need_dy1 >> l & 1u)
+            for (int i = 0; i < N; ++i) dy1[i * W + l] = f1[i * W + l];
+      }
+    } else {
+      ps.rhs(y1, dy1, need_dy1);
+    }
     for (int l = 0; l < W; ++l) {
       if (!(accepted >> l & 1u)) continue;
-      Lane<N>& ln = lane[l];
+      Lane<Tab, N>& ln = lane[l];
       auto& sys = ps.system(l);
       ready &= ~(1u << l);
-      ++ln.res.rhs_evals;
+      if (need_dy1 >> l & 1u) ++ln.res.rhs_evals;
       double yl[N], yl1[N], dyl[N], dyl1[N];
       get(y, l, yl);
       get(y1, l, yl1);
@@ -460,9 +493,10 @@ struct CoordinatePacket {
     return true;
   }
   void rhs(const double* y, double* dy, unsigned lanes) const { packet_rhs(metric, y, dy, lanes); }
-  void attempt(unsigned lanes, const double* y, const double* dy, const double* h, double* y1, double* e) const {
+  void attempt(SolverKind kind, unsigned lanes, const double* y, const double* dy, const double* h, double* y1,
+               double* e, double* dy1) const {
     // Looked up per call: before the first dispatch the table entry is Highway's target chooser.
-    HWY_DYNAMIC_DISPATCH(rk_attempt)(metric, lanes, y, dy, h, y1, e);
+    HWY_DYNAMIC_DISPATCH(rk_attempt)(kind, metric, lanes, y, dy, h, y1, e, dy1);
   }
   StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
   void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
@@ -500,8 +534,9 @@ struct MinoPacket {
     return true;
   }
   void rhs(const double* y, double* dy, unsigned) const { HWY_DYNAMIC_DISPATCH(mino_rhs)(coeffs, y, dy); }
-  void attempt(unsigned, const double* y, const double* dy, const double* h, double* y1, double* e) const {
-    HWY_DYNAMIC_DISPATCH(mino_attempt)(coeffs, y, dy, h, y1, e);
+  void attempt(SolverKind kind, unsigned, const double* y, const double* dy, const double* h, double* y1, double* e,
+               double* dy1) const {
+    HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, y, dy, h, y1, e, dy1);
   }
   StepAction step(int l, const StepView& s) {
     if (!rays.on_step) return ray[l]->step(s, {});
@@ -519,25 +554,30 @@ struct MinoPacket {
   }
 };
 
-void require_cash_karp(const SolverConfig& cfg) {
+void require_packet_solver(const SolverConfig& cfg) {
   validate_solver_config(cfg);
-  if (cfg.kind != SolverKind::CashKarp45) throw Error("packet integrator: only the CashKarp45 solver");
+  if (!packet_solver(cfg.kind))
+    throw Error("packet integrator: only the CashKarp45, Fehlberg45 and DormandPrince54 solvers");
 }
 
 }  // namespace
 
+bool packet_solver(SolverKind kind) {
+  return kind == SolverKind::CashKarp45 || kind == SolverKind::Fehlberg45 || kind == SolverKind::DormandPrince54;
+}
+
 void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& cfg, const PacketRays& rays) {
-  require_cash_karp(cfg);
+  require_packet_solver(cfg);
   CoordinatePacket ps{metric, rays};
-  integrate_lanes(ps, cfg, rays);
+  with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, cfg, rays); });
 }
 
 void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole, const SolverConfig& cfg,
                                 const PacketRays& rays) {
-  require_cash_karp(cfg);
+  require_packet_solver(cfg);
   const SolverConfig mino_cfg = KerrMinoRay::config(cfg);
   MinoPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}};
-  integrate_lanes(ps, mino_cfg, rays);
+  with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, mino_cfg, rays); });
 }
 
 }  // namespace geovis

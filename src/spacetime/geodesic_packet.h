@@ -1,8 +1,10 @@
 // Wavefront integration of light rays: a packet of kPacketLanes geodesics (GeodesicSystem::Geodesic,
-// y = (x^μ, k^μ)) integrated in lockstep with Cash–Karp 4(5), one ray per SIMD lane, in a
+// y = (x^μ, k^μ)) integrated in lockstep with an explicit embedded Runge–Kutta pair (Cash–Karp
+// 4(5), Fehlberg 4(5) or Dormand–Prince 5(4): packet_solver), one ray per SIMD lane, in a
 // structure-of-arrays layout (component i of lane l at y[i * kPacketLanes + l]).
 //
-// Every lane is one independent run of integrate_with<ExplicitRK<CashKarpTableau>> (integrators.h):
+// Every lane is one independent run of integrate_with<ExplicitRK<Tab>> (integrators.h, Tab the
+// solver's tableau):
 // its own λ, step size, step controller (StepController, the same object), boundary location,
 // stop reason and step count, and the same stop checks in the same order (the scalar
 // MetricSystem's valid/inside/constraint/escaped/captured/reproject/rescale, called per lane).
@@ -40,7 +42,11 @@ struct PacketRays {
   FunctionRef<void(int lane, const double* y, const GeodesicResult& result)> done;
 };
 
-/// Integrates light-ray geodesics (cfg.kind must be CashKarp45; the geodesic system in the
+/// Whether the packet integrator serves solver `kind` (the explicit embedded pairs that
+/// integrate_with<ExplicitRK<Tab>> runs: CashKarp45, Fehlberg45, DormandPrince54).
+bool packet_solver(SolverKind kind);
+
+/// Integrates light-ray geodesics (packet_solver(cfg.kind) must hold; the geodesic system in the
 /// metric's coordinates, not the separated Mino-time form) from `rays.next` until it has no more,
 /// starting each at λ = 0. Allocates nothing.
 void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& cfg, const PacketRays& rays);

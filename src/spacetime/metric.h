@@ -157,9 +157,9 @@ class Metric {
   /// affine parameter lambda0, calling `cb` after every accepted step.
   virtual GeodesicResult integrate(const SolverConfig& cfg, GeodesicSystem sys, double* y, double lambda0,
                                    StepCallback cb) const = 0;
-  /// Light-ray geodesics a packet at a time (spacetime/geodesic_packet.h: CashKarp45; the geodesic
-  /// system in coordinates, or Carter's separated equations where integrate uses them); each ray
-  /// as integrate(cfg, Geodesic, y, 0, cb).
+  /// Light-ray geodesics a packet at a time (spacetime/geodesic_packet.h: the solvers packet_solver
+  /// accepts; the geodesic system in coordinates, or Carter's separated equations where integrate
+  /// uses them); each ray as integrate(cfg, Geodesic, y, 0, cb).
   virtual void integrate_packet(const SolverConfig& cfg, const PacketRays& rays) const;
   /// Geodesics (GeodesicSystem::Geodesic) are integrated through separated equations of the form
   /// y'' = f(y) when cfg.separable is set (KerrBL, Schwarzschild: spacetime/kerr_mino.h), which

@@ -206,16 +206,22 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
 }  // namespace
 
 // (a) Every metric of the registry: 11 rays (one full packet and a refill) from the sample
-// position, bit-identical to the scalar integrator on every target; KerrBL and Schwarzschild also
-// through Carter's separated equations in Mino time (kerr_mino.h), their default.
+// position, bit-identical to the scalar integrator on every target, with each tableau the packets
+// serve (Cash–Karp; Fehlberg, GeoViS's GSL_RK_Fehlberg; Dormand–Prince 5(4), first-same-as-last);
+// KerrBL and Schwarzschild also through Carter's separated equations in Mino time (kerr_mino.h),
+// their default.
 TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
   const auto m = make_metric(GetParam());
   const auto y0 = fan(*m, 11);
-  for_every_target([&] { expect_packet_equals_scalar(*m, packet_config(), y0); });
-  if (m->has_separable_geodesics()) {
+  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54}) {
+    SCOPED_TRACE(solver_kind_name(kind));
     SolverConfig cfg = packet_config();
-    cfg.separable = true;
+    cfg.kind = kind;
     for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0); });
+    if (m->has_separable_geodesics()) {
+      cfg.separable = true;
+      for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0); });
+    }
   }
   EXPECT_GE(hwy::SupportedAndGeneratedTargets().size(), 2u) << "no SIMD target besides the scalar emulation";
 }
