@@ -35,14 +35,6 @@ inline Vec4 vec4_at(const double* y) { return Vec4{{y[0], y[1], y[2], y[3]}}; }
 
 bool is_zero(const Vec4& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0 && v[3] == 0; }
 
-/// Two local unit vectors spanning the screen orthogonal to the viewing direction n: a Sachs basis
-/// at the observer (Perlick, Living Rev. Relativ. 7 (2004) 9, §4: s_a ⟂ k and ⟂ u_obs, unit).
-void screen_basis(const Vec3& n, Vec3& s1, Vec3& s2) {
-  const Vec3 a = std::fabs(n.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
-  s1 = normalize(a - dot(a, n) * n);
-  s2 = cross(n, s1);
-}
-
 /// Refines a hit found on the chord of step `st` (fraction `s0` of the chord, hit `h`): the curved
 /// step (cubic Hermite dense output of the integrator, geodesic.h) is split into 4 sub-chords, the
 /// first one that hits becomes the new interval, until the curve deviates from the chord by less
@@ -125,7 +117,7 @@ Vec4 start_state(const Observer& obs, const Vec3& n, GeodesicSystem system, doub
   }
   if (system == GeodesicSystem::Jacobi) {
     Vec3 s1, s2;
-    screen_basis(n, s1, s2);
+    screen_basis(n, s1, s2);  // a Sachs basis at the observer (Perlick 2004, §4)
     const Vec4 c1 = local_to_coord(obs.e, Vec4{{0, s1.x, s1.y, s1.z}});
     const Vec4 c2 = local_to_coord(obs.e, Vec4{{0, s2.x, s2.y, s2.z}});
     for (int i = 0; i < 4; ++i) {

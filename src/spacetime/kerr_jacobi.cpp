@@ -33,8 +33,8 @@ bool kerr_transported_screen(double M, double a, const Vec4& x0, const Vec4& k0,
   const double omega = 2.0 * M * a * r / calA;
   const double er = std::sqrt(delta / sigma), eth = 1.0 / std::sqrt(sigma), eph = std::sqrt(sigma / calA) / st;
   const Vec3 n = normalize(Vec3{k[1] / er, k[2] / eth, (k[3] - omega * k[0]) / eph});
-  const Vec3 axis = std::fabs(n.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
-  const Vec3 b1 = normalize(axis - dot(axis, n) * n), b2 = cross(n, b1);
+  Vec3 b1, b2;
+  screen_basis(n, b1, b2);
   const Vec4 e1{{0.0, b1.x * er, b1.y * eth, b1.z * eph}}, e2{{0.0, b2.x * er, b2.y * eth, b2.z * eph}};
   const std::complex<double> K1 = walker_penrose(a, x, k, e1), K2 = walker_penrose(a, x, k, e2);
   // s_a = α e1 + β e2 with κ(s_a) = κ(s0_a): [Re K1 Re K2; Im K1 Im K2] (α, β) = (Re κ, Im κ).

@@ -97,4 +97,14 @@ constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
 inline Vec3 normalize(const Vec3& a) { return a / norm(a); }
 
+/// Two unit vectors spanning the plane orthogonal to the unit vector n, (s1, s2, n) right-handed:
+/// s1 is the projection of ẑ (of x̂ when n is within 26° of ẑ) into that plane, s2 = n × s1. The
+/// screen of a light ray seen in a local frame (Perlick, Living Rev. Relativ. 7 (2004) 9, §4:
+/// s_a ⟂ k and ⟂ the observer).
+inline void screen_basis(const Vec3& n, Vec3& s1, Vec3& s2) {
+  const Vec3 a = std::fabs(n.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+  s1 = normalize(a - dot(a, n) * n);
+  s2 = cross(n, s1);
+}
+
 }  // namespace geovis
