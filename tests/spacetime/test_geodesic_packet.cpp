@@ -214,13 +214,14 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
 
 // (a) Every metric of the registry: 11 rays (one full packet and a refill) from the sample
 // position, bit-identical to the scalar integrator on every target, with each tableau the packets
-// serve (Cash–Karp; Fehlberg, GeoViS's GSL_RK_Fehlberg; Dormand–Prince 5(4), first-same-as-last);
-// KerrBL and Schwarzschild also through Carter's separated equations in Mino time (kerr_mino.h),
+// serve (Cash–Karp; Fehlberg, GeoViS's GSL_RK_Fehlberg; Dormand–Prince 5(4), first-same-as-last;
+// DOP853, 12 stages and the combined norm of two error estimates); KerrBL and Schwarzschild also through Carter's separated equations in Mino time (kerr_mino.h),
 // their default.
 TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
   const auto m = make_metric(GetParam());
   const auto y0 = fan(*m, 11);
-  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54}) {
+  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54,
+                                SolverKind::DormandPrince853}) {
     SCOPED_TRACE(solver_kind_name(kind));
     SolverConfig cfg = packet_config();
     cfg.kind = kind;
@@ -242,10 +243,30 @@ TEST(GeodesicPacket, KastorTraschenExpandingSameBitsAsScalar) {
   const auto m = make_metric("KastorTraschen", {{"h", 0.02}, {"z1", 4.0}, {"z2", -4.0}});
   SolverConfig cfg = packet_config();
   cfg.escape_radius = 1e300;
-  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54}) {
+  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54,
+                                SolverKind::DormandPrince853}) {
     SCOPED_TRACE(solver_kind_name(kind));
     cfg.kind = kind;
     for_every_target([&] { expect_packet_equals_scalar(*m, cfg, fan(*m, 13, Vec4{{-20.0, 10.0, 0.5, 1.0}})); });
+  }
+}
+
+// DOP853 as the Gyoto comparison scene runs it (bench/gyoto: KerrBL a = 0.9 seen from r = 100,
+// eps_abs = eps_rel = 1e-6, so the tolerance scales with |y|), through Carter's separated
+// equations (their per-component scales, ErrorScale::inv) and in coordinates.
+TEST(GeodesicPacket, Dop853WithRelativeToleranceAsTheGyotoScene) {
+  const auto m = make_metric("KerrBL", {{"mass", 1.0}, {"angmom", 0.9}});
+  SolverConfig cfg = packet_config();
+  cfg.kind = SolverKind::DormandPrince853;
+  cfg.eps_rel = 1e-6;
+  cfg.max_steps = 400;
+  cfg.lambda_max = 1e300;
+  cfg.escape_radius = 1e300;
+  const auto y0 = fan(*m, 13, Vec4{{0.0, 100.0, 85.0 * M_PI / 180, 0.0}});
+  for (const bool separable : {true, false}) {
+    SCOPED_TRACE(separable ? "Mino time" : "coordinate form");
+    cfg.separable = separable;
+    for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0); });
   }
 }
 
@@ -314,7 +335,7 @@ TEST(GeodesicPacket, FixedStepLambdaMaxAndBox) {
 TEST(GeodesicPacket, RejectsOtherSolvers) {
   const auto m = make_metric("Minkowski");
   SolverConfig cfg = packet_config();
-  cfg.kind = SolverKind::DormandPrince853;
+  cfg.kind = SolverKind::BulirschStoer;
   auto next = [](int, double*) { return false; };
   auto done = [](int, const double*, const GeodesicResult&) {};
   EXPECT_THROW(m->integrate_packet(cfg, PacketRays{next, {}, done}), Error);
