@@ -53,8 +53,26 @@ decltype(auto) with_packet_tableau(SolverKind kind, F&& f) {
   switch (kind) {
     case SolverKind::Fehlberg45: return f.template operator()<FehlbergTableau>();
     case SolverKind::DormandPrince54: return f.template operator()<DormandPrince54Tableau>();
+    case SolverKind::DormandPrince853: return f.template operator()<DOP853Tableau>();
     default: return f.template operator()<CashKarpTableau>();
   }
+}
+
+/// A tableau with DOP853's two embedded estimates (weights e5 and e3, DOP853Tableau) instead of
+/// ExplicitRK's one (e).
+template <class Tab>
+constexpr bool kCombinedEstimate = requires {
+  Tab::e5;
+  Tab::e3;
+};
+
+/// The scaled error of a step of size h from its estimate(s) at the start state y0: the stepper's
+/// own norm, ExplicitRK's ErrorScale::norm of e = h·Σ e_j k_j, or DOP853's combined norm of
+/// e = Σ e5_j k_j and e3 = Σ e3_j k_j (DOP853::combined_error).
+template <class Tab, int N>
+double step_error_norm(const ErrorScale& tol, const double* e, const double* e3, const double* y0, double h) {
+  if constexpr (kCombinedEstimate<Tab>) return DOP853::combined_error(tol.norm<N>(e, y0), tol.norm<N>(e3, y0), h);
+  return tol.norm<N>(e, y0);
 }
 
 }  // namespace
@@ -66,16 +84,18 @@ namespace geovis {
 namespace HWY_NAMESPACE {
 #include "spacetime/kerr_mino_rhs.h"
 
-/// ExplicitRK<Tab>::attempt (integrators.h) on all lanes at once for a system of N components
-/// whose right-hand side reads the first kCoupled (rk_detail::coupled_dim): from y, dy = f(y) and
-/// the signed steps h (per lane), the new state y1, the error estimate e and, for a
-/// first-same-as-last tableau (Tab::kFsal), f(y1) = the last stage in dy1 (SoA). The same
-/// operations in the same order as the scalar stepper's rk_detail::stage/weighted:
+/// ExplicitRK<Tab>::attempt (integrators.h; DOP853::attempt for DOP853's tableau) on all lanes
+/// at once for a system of N components whose right-hand side reads the first kCoupled
+/// (rk_detail::coupled_dim): from y, dy = f(y) and the signed steps h (per lane), the new state y1,
+/// the error estimate e (and DOP853's second one e3) and, for a first-same-as-last tableau
+/// (Tab::kFsal), f(y1) = the last stage in dy1 (SoA). The same operations in the same order as
+/// the scalar stepper's rk_detail::stage/weighted:
 ///   stage s: tmp_i = y_i + h·(((0 + a_s0 k_0i) + a_s1 k_1i) + …)   (non-zero a, i < kCoupled)
-///   y1_i = y_i + h·Σ_j b_j k_ji,   e_i = h·Σ_j e_j k_ji.
+///   y1_i = y_i + h·Σ_j b_j k_ji,   e_i = h·Σ_j e_j k_ji
+///   (DOP853: e_i = Σ_j e5_j k_ji, e3_i = Σ_j e3_j k_ji, without h).
 template <class Tab, int N, int kCoupled, class Rhs>
 HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* dy, const double* h, double* y1,
-                                 double* e, double* dy1) {
+                                 double* e, double* e3, double* dy1) {
   constexpr int S = Tab::S, W = kPacketLanes;
   const SimdTag d;
   const size_t L = hn::Lanes(d);
@@ -105,17 +125,27 @@ HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* 
   for (size_t l = 0; l < static_cast<size_t>(W); l += L) {
     const SimdD hv = SimdD::load(h + l);
     for (int i = 0; i < N; ++i) {
-      SimdD ab(0.0), ae(0.0);
+      SimdD ab(0.0), ae(0.0), ae3(0.0);
       [&]<int... j>(std::integer_sequence<int, j...>) {
         ([&] {
           const SimdD kj = SimdD::load(k[j] + i * W + l);
           if constexpr (Tab::b[j] != 0.0) ab = ab + SimdD(Tab::b[j]) * kj;
-          if constexpr (Tab::e[j] != 0.0) ae = ae + SimdD(Tab::e[j]) * kj;
+          if constexpr (kCombinedEstimate<Tab>) {
+            if constexpr (Tab::e5[j] != 0.0) ae = ae + SimdD(Tab::e5[j]) * kj;
+            if constexpr (Tab::e3[j] != 0.0) ae3 = ae3 + SimdD(Tab::e3[j]) * kj;
+          } else {
+            if constexpr (Tab::e[j] != 0.0) ae = ae + SimdD(Tab::e[j]) * kj;
+          }
         }(), ...);
       }(std::make_integer_sequence<int, S>{});
       // clang-format on
       (SimdD::load(y + i * W + l) + hv * ab).store(y1 + i * W + l);
-      (hv * ae).store(e + i * W + l);
+      if constexpr (kCombinedEstimate<Tab>) {
+        ae.store(e + i * W + l);
+        ae3.store(e3 + i * W + l);
+      } else {
+        (hv * ae).store(e + i * W + l);
+      }
     }
   }
   if constexpr (Tab::kFsal) std::memcpy(dy1, k[S - 1], sizeof k[S - 1]);
@@ -124,10 +154,10 @@ HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* 
 /// The attempt of solver `kind` on the geodesic system in the metric's coordinates (lanes: those
 /// whose right-hand side is needed, for metrics evaluated lane by lane).
 void rk_attempt(SolverKind kind, const MetricKernel& m, unsigned lanes, const double* y, const double* dy,
-                const double* h, double* y1, double* e, double* dy1) {
+                const double* h, double* y1, double* e, double* e3, double* dy1) {
   with_packet_tableau(kind, [&]<class Tab>() {
     rk_attempt_lanes<Tab, kDim, kDim>([&](const double* yy, double* dyy) { packet_rhs(m, yy, dyy, lanes); }, y, dy, h,
-                                      y1, e, dy1);
+                                      y1, e, e3, dy1);
   });
 }
 
@@ -154,10 +184,10 @@ void mino_rhs(const MinoLaneCoeffs& c, const double* y, double* dy) { mino_rhs_l
 /// The attempt of solver `kind` on the Mino-time system (t, φ, λ are quadratures:
 /// KerrMinoRHS::kCoupled).
 void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const double* y, const double* dy, const double* h,
-                  double* y1, double* e, double* dy1) {
+                  double* y1, double* e, double* e3, double* dy1) {
   with_packet_tableau(kind, [&]<class Tab>() {
     rk_attempt_lanes<Tab, KerrMinoRHS::N, KerrMinoRHS::kCoupled>(
-        [&](const double* yy, double* dyy) { mino_rhs_lanes(c, yy, dyy); }, y, dy, h, y1, e, dy1);
+        [&](const double* yy, double* dyy) { mino_rhs_lanes(c, yy, dyy); }, y, dy, h, y1, e, e3, dy1);
   });
 }
 
@@ -188,16 +218,17 @@ struct Lane {
 };
 
 /// Integrates the rays of `rays` on the lanes of packet system PS, each lane exactly as
-/// integrate_with<ExplicitRK<Tab>> (integrators.h, Tab: the tableau of cfg.kind) integrates PS's
-/// scalar system of the lane from λ = 0: the same steps, checks and stops in the same order (the optional parts —
-/// own affine parameter, scaled tolerance, projection, re-basing — chosen by the same `requires`).
+/// integrate_with<ExplicitRK<Tab>> (integrators.h, Tab: the tableau of cfg.kind; DOP853 for its
+/// tableau, step_error_norm) integrates PS's scalar system of the lane from λ = 0: the same
+/// steps, checks and stops in the same order (the optional parts — own affine parameter, scaled
+/// tolerance, projection, re-basing — chosen by the same `requires`).
 /// PS provides
 ///   N                                   the state's dimension;
 ///   system(l)                           the scalar system of lane l (integrators.h concept);
 ///   start(l, y_start, y)                the ray's state from its start (8 components: x, k);
 ///                                       false when it handled the ray itself (done already called);
-///   rhs(y, dy, lanes), attempt(kind, lanes, y, dy, h, y1, e, dy1)   SoA right-hand side and the
-///                                       attempt of solver `kind` (rk_attempt_lanes);
+///   rhs(y, dy, lanes), attempt(kind, lanes, y, dy, h, y1, e, e3, dy1)   SoA right-hand side and
+///                                       the attempt of solver `kind` (rk_attempt_lanes);
 ///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies.
 template <class Tab, class PS>
@@ -228,6 +259,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
 
   HWY_ALIGN double y[N * W] = {}, dy[N * W] = {}, y1[N * W] = {}, dy1[N * W] = {}, e[N * W] = {}, hv[W] = {};
   HWY_ALIGN double f1[Tab::kFsal ? N * W : 1];  // f(y1) of the lanes whose last stage is not it
+  HWY_ALIGN double e3[kCombinedEstimate<Tab> ? N * W : 1];  // DOP853's second error estimate
   Lane<Tab, N> lane[W];
   bool exhausted = false;
   unsigned need_dy = 0;  // lanes whose dy = f(y) is still to be evaluated (fresh rays)
@@ -343,20 +375,21 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     } while (need_dy);
     if (!ready) return;
 
-    ps.attempt(cfg.kind, ready, y, dy, hv, y1, e, dy1);
+    ps.attempt(cfg.kind, ready, y, dy, hv, y1, e, e3, dy1);
     unsigned accepted = 0, need_dy1 = 0;
     for (int l = 0; l < W; ++l) {
       if (!(ready >> l & 1u)) continue;
       Lane<Tab, N>& ln = lane[l];
       auto& sys = ps.system(l);
       ln.res.rhs_evals += Tab::S - 1;
-      double yl[N], yl1[N], el[N];
+      double yl[N], yl1[N], el[N], el3[N];
       get(y, l, yl);
       get(y1, l, yl1);
       get(e, l, el);
+      if constexpr (kCombinedEstimate<Tab>) get(e3, l, el3);
       ErrorScale tol{cfg.eps_abs, cfg.eps_rel};
       if constexpr (kScaledTol) tol.inv = ln.inv_tol;
-      ln.err = tol.norm<N>(el, yl);
+      ln.err = step_error_norm<Tab, N>(tol, el, el3, yl, ln.hstep);
       bool finite = true;
       for (int i = 0; i < N; ++i) finite = finite && std::isfinite(yl1[i]);
       const bool in_domain = finite && sys.valid(yl1);
@@ -494,9 +527,9 @@ struct CoordinatePacket {
   }
   void rhs(const double* y, double* dy, unsigned lanes) const { packet_rhs(metric, y, dy, lanes); }
   void attempt(SolverKind kind, unsigned lanes, const double* y, const double* dy, const double* h, double* y1,
-               double* e, double* dy1) const {
+               double* e, double* e3, double* dy1) const {
     // Looked up per call: before the first dispatch the table entry is Highway's target chooser.
-    HWY_DYNAMIC_DISPATCH(rk_attempt)(kind, metric, lanes, y, dy, h, y1, e, dy1);
+    HWY_DYNAMIC_DISPATCH(rk_attempt)(kind, metric, lanes, y, dy, h, y1, e, e3, dy1);
   }
   StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
   void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
@@ -535,8 +568,8 @@ struct MinoPacket {
   }
   void rhs(const double* y, double* dy, unsigned) const { HWY_DYNAMIC_DISPATCH(mino_rhs)(coeffs, y, dy); }
   void attempt(SolverKind kind, unsigned, const double* y, const double* dy, const double* h, double* y1, double* e,
-               double* dy1) const {
-    HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, y, dy, h, y1, e, dy1);
+               double* e3, double* dy1) const {
+    HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, y, dy, h, y1, e, e3, dy1);
   }
   StepAction step(int l, const StepView& s) {
     if (!rays.on_step) return ray[l]->step(s, {});
@@ -557,13 +590,14 @@ struct MinoPacket {
 void require_packet_solver(const SolverConfig& cfg) {
   validate_solver_config(cfg);
   if (!packet_solver(cfg.kind))
-    throw Error("packet integrator: only the CashKarp45, Fehlberg45 and DormandPrince54 solvers");
+    throw Error("packet integrator: only the CashKarp45, Fehlberg45, DormandPrince54 and DormandPrince853 solvers");
 }
 
 }  // namespace
 
 bool packet_solver(SolverKind kind) {
-  return kind == SolverKind::CashKarp45 || kind == SolverKind::Fehlberg45 || kind == SolverKind::DormandPrince54;
+  return kind == SolverKind::CashKarp45 || kind == SolverKind::Fehlberg45 || kind == SolverKind::DormandPrince54 ||
+         kind == SolverKind::DormandPrince853;
 }
 
 void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& cfg, const PacketRays& rays) {
