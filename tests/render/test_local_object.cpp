@@ -242,6 +242,45 @@ TEST(ObjLocal, PassesOutsideExactlyWhereTheMappedSegmentMissesTheBall) {
   }
 }
 
+TEST(ObjLocal, FrameFromTheSearchedEventIsTheFrameAtItsProperTime) {
+  // intersect_piece completes the frame from the event the cull evaluated (state(ev)): it must be
+  // state(τ) bit for bit, at nodes and between them.
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  const LocalFrame frame(m, make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()));
+  for (double tau : {-3.21, 0.0, 0.05, 9.5, frame.motion()->samples()[150].tau}) {
+    const LocalFrame::State direct = frame.state(tau);
+    WorldlineEvent ev;
+    frame.event(tau, ev);
+    const LocalFrame::State from_event = frame.state(ev);
+    EXPECT_EQ(from_event.tau, direct.tau);
+    for (int a = 0; a < 4; ++a) {
+      EXPECT_EQ(from_event.x[a], direct.x[a]) << tau;
+      for (int b = 0; b < 4; ++b) {
+        EXPECT_EQ(from_event.e[a][b], direct.e[a][b]) << tau;
+        EXPECT_EQ(from_event.g[a][b], direct.g[a][b]) << tau;
+      }
+    }
+  }
+}
+
+TEST(ObjLocal, DeltaWrapsTheAzimuthAsRemainder) {
+  // LocalFrame::delta skips std::remainder for |Δφ| <= π, where it returns Δφ itself; across and
+  // at the boundary the results must be remainder's bit for bit.
+  constexpr double kPi = 3.14159265358979323846;
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  const LocalFrame frame(m, make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()));
+  for (double dphi : {0.0, -0.0, 1e-300, 1.0, -2.5, kPi, -kPi, std::nextafter(kPi, 4.0), std::nextafter(-kPi, -4.0),
+                      std::nextafter(kPi, 0.0), 3 * kPi, -3 * kPi, 4.0, -4.0, 7.0, 1e6, -1e6}) {
+    const Vec4 x{{1.0, 7.0, 1.5, 0.25 + dphi}}, y{{0.5, 6.0, 1.4, 0.25}};
+    const double expected = std::remainder(x[3] - y[3], 2 * kPi);
+    const Vec4 d = frame.delta(x, y);
+    EXPECT_EQ(d[3], expected) << dphi;
+    EXPECT_EQ(std::signbit(d[3]), std::signbit(expected)) << dphi;
+    EXPECT_EQ(d[0], x[0] - y[0]);
+    EXPECT_EQ(d[1], x[1] - y[1]);
+  }
+}
+
 TEST(ObjLocal, FactoryLocalCompObjectAndMovingPrimitive) {
   BuildContext ctx;
   ctx.metric = minkowski();
