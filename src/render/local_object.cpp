@@ -124,9 +124,10 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev
       if ((next < lo && tau == lo) || (next > hi && tau == hi)) return false;
       next = std::clamp(next, lo, hi);
     }
-    const bool done = std::fabs(next - tau) <= 1e-12 * (1.0 + std::fabs(tau));
+    // Converged: τ is within the tolerance of the root, and ev is its event (the caller's frame
+    // is built from it without evaluating the worldline again).
+    if (std::fabs(next - tau) <= 1e-12 * (1.0 + std::fabs(tau))) return true;
     tau = next;
-    if (done) return true;
   }
   return true;
 }
@@ -175,10 +176,7 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
   bool finite = !cb.empty();
   for (int i = 0; i < 3 && finite; ++i) finite = std::isfinite(cb.lo[i]) && std::isfinite(cb.hi[i]);
   if (!finite) throw Error("local object: the object inside a local frame must be bounded");
-  for (int k = 0; k < 8; ++k) {
-    const Vec3 c{(k & 1) ? cb.hi.x : cb.lo.x, (k & 2) ? cb.hi.y : cb.lo.y, (k & 4) ? cb.hi.z : cb.lo.z};
-    radius_local_ = std::max(radius_local_, norm(c));
-  }
+  radius_local_ = std::min(child_->outer_radius(), cb.farthest_distance_from_origin());
   const Metric& m = frame_.metric();
   if (!frame_.moving()) {
     const LocalFrame::State s = frame_.state(0);
@@ -261,9 +259,8 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
   double r_in = std::numeric_limits<double>::infinity(), r_out2 = 0;
   for (const TubeBox& b : tube_) {
     r_in = std::min(r_in, b.box.distance_from_origin());
-    const Vec3 far{std::max(-b.box.lo.x, b.box.hi.x), std::max(-b.box.lo.y, b.box.hi.y),
-                   std::max(-b.box.lo.z, b.box.hi.z)};
-    r_out2 = std::max(r_out2, dot(far, far));
+    const double far = b.box.farthest_distance_from_origin();
+    r_out2 = std::max(r_out2, far * far);
   }
   tube_inner2_ = r_in * r_in * (1 - 1e-9);
   tube_outer2_ = r_out2 * (1 + 1e-9);
@@ -290,14 +287,18 @@ double LocalObject::time_extent(const LocalFrame::State& s) const {
 }
 
 double LocalObject::pseudo_cartesian_radius(const LocalFrame::State& s) const {
-  // ‖J E‖_F bounds the stretch of a local displacement X (|X| <= R) into pseudo-Cartesian
-  // coordinates, J = ∂(pseudo-Cartesian)/∂(coordinates), E = (e_(1), e_(2), e_(3)); finite
-  // differences, widened by 25% for the variation of J across the object.
+  // The operator norm ‖J E‖ bounds the stretch of a local displacement X (|X| <= R) into
+  // pseudo-Cartesian coordinates, J = ∂(pseudo-Cartesian)/∂(coordinates), E = (e_(1), e_(2), e_(3));
+  // J E by finite differences, widened by 25% for the variation of J across the object. ‖J E‖² is
+  // the largest eigenvalue of the Gram matrix G = (J E)ᵀ(J E), at most its largest absolute row sum
+  // (Gershgorin; equal to it when the columns are orthogonal, as for an orthonormal frame in a
+  // diagonal metric, where the Frobenius norm would overestimate up to √3 times).
   const Metric& m = frame_.metric();
-  double sum = 0;
+  Vec3 je[3];
   for (int i = 1; i < 4; ++i) {
     const Vec4& e = s.e[i];
     const double en = std::sqrt(e[1] * e[1] + e[2] * e[2] + e[3] * e[3]);
+    je[i - 1] = Vec3{0, 0, 0};
     if (en == 0) continue;
     const double h = 1e-6 * (1.0 + std::sqrt(s.x[1] * s.x[1] + s.x[2] * s.x[2] + s.x[3] * s.x[3])) / en;
     Vec4 xa = s.x, xb = s.x;
@@ -308,10 +309,15 @@ double LocalObject::pseudo_cartesian_radius(const LocalFrame::State& s) const {
     Vec3 pa, pb;
     m.to_pseudo_cartesian(xa, pa);
     m.to_pseudo_cartesian(xb, pb);
-    const Vec3 je = (pa - pb) / (2 * h);
-    sum += dot(je, je);
+    je[i - 1] = (pa - pb) / (2 * h);
   }
-  return 1.25 * radius_local_ * std::sqrt(sum);
+  double gram_bound = 0;
+  for (int i = 0; i < 3; ++i) {
+    double row = 0;
+    for (int j = 0; j < 3; ++j) row += std::fabs(dot(je[i], je[j]));
+    gram_bound = std::max(gram_bound, row);
+  }
+  return 1.25 * radius_local_ * std::sqrt(gram_bound);
 }
 
 bool LocalObject::world_tube_test(const Segment& seg, double& s0, double& s1) const {
@@ -574,8 +580,9 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     if (!tube_.empty()) {
       // A sampled motion's full frame (interpolated and orthonormalized) is costly: first rule
       // out, from the event and e_(0) alone, a segment that passes outside the body's bounding
-      // sphere (the child test below would miss it); the frame is then completed from that event.
-      frame_.event(tau, ev);
+      // sphere (the child test below would miss it); the frame is then completed from that event,
+      // the one the search ended at.
+      if (ev.tau != tau) frame_.event(tau, ev);
       if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) break;
       st = frame_.state(ev);
     } else {

@@ -54,9 +54,15 @@ size_t SampledMotion::interval(double tau, size_t hint) const {
                 " is outside the computed range [" + number_text(lo) + ", " + number_text(hi) +
                 "] (extend it with `forward`/`backward` or `maxnumpoints`)");
   if (nodes_.size() == 1) return 0;
-  // The binary search below gives the last i <= size − 2 with τ_i <= τ (0 below the first node).
-  if (hint + 2 <= nodes_.size() && nodes_[hint].tau <= tau && (hint + 2 == nodes_.size() || tau < nodes_[hint + 1].tau))
-    return hint;
+  // The binary search below gives the last i <= size − 2 with τ_i <= τ (0 below the first node);
+  // the hint and its neighbours first (a Newton step from a node often ends in the interval before).
+  const size_t last = nodes_.size() - 2;
+  auto holds = [&](size_t i) { return nodes_[i].tau <= tau && (i == last || tau < nodes_[i + 1].tau); };
+  if (hint <= last) {
+    if (holds(hint)) return hint;
+    if (hint > 0 && holds(hint - 1)) return hint - 1;
+    if (hint < last && holds(hint + 1)) return hint + 1;
+  }
   auto it =
       std::upper_bound(nodes_.begin(), nodes_.end(), tau, [](double t, const MotionNode& n) { return t < n.tau; });
   size_t i = static_cast<size_t>(it - nodes_.begin());
