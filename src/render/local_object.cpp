@@ -34,6 +34,20 @@ double segment_point_dist2(const Vec3& p0, const Vec3& p1, const Vec3& c) {
   const Vec3 q = p0 + t * d - c;
   return dot(q, q);
 }
+
+/// Whether segment p0 -> p1 stays farther than √r2 from the origin (run on every step of every
+/// ray: no division). The closest point is p0 + t d, t = −p0·d/d·d clamped to [0, 1]; inside,
+/// |p0 + t d|² = |p0|² − (p0·d)²/d·d, compared after multiplying by d·d > 0. a c − b² cancels for
+/// a segment pointing at the origin: its rounding error is below 8ε a c (b² <= a c), so only a
+/// difference above 1e-12 a c counts.
+bool passes_outside_ball(const Vec3& p0, const Vec3& p1, double r2) {
+  const Vec3 d = p1 - p0;
+  const double a = dot(p0, p0), b = dot(p0, d), c = dot(d, d);
+  if (b >= 0) return a > r2;             // closest at p0 (or a degenerate segment)
+  if (b <= -c) return dot(p1, p1) > r2;  // closest at p1
+  return a * c - b * b > r2 * c + 1e-12 * a * c;
+}
+
 }  // namespace
 
 // ---- LocalFrame ---------------------------------------------------------------------------------
@@ -357,7 +371,7 @@ bool LocalObject::world_tube_test(const Segment& seg, double& s0, double& s1) co
     const Vec3 d = seg.p1 - seg.p0;
     return segment_box(seg.p0, Vec3{1.0 / d.x, 1.0 / d.y, 1.0 / d.z}, box, s0, s1);
   }
-  if (segment_point_dist2(seg.p0, seg.p1, Vec3{0, 0, 0}) > tube_outer2_ ||
+  if (passes_outside_ball(seg.p0, seg.p1, tube_outer2_) ||
       (dot(seg.p0, seg.p0) < tube_inner2_ && dot(seg.p1, seg.p1) < tube_inner2_))
     return false;
   const double ta = std::min(seg.x0[0], seg.x1[0]) - tube_margin_t_;
