@@ -129,9 +129,11 @@ void CompoundObject::restrict_surface_free_radii(double* free, int n) const {
   for (const SceneObject* c : unbounded_) c->restrict_surface_free_radii(local.data(), n);
   const double shrink = to_local_.stretch_bound(), shift = norm(to_parent_.point(Vec3{0, 0, 0}));
   const double box = bounds_.distance_from_origin();
-  for (int c = 0; c < n; ++c)
-    if (local[c] < std::numeric_limits<double>::infinity())
-      free[c] = std::min(free[c], std::max(box, local[c] / shrink - shift));
+  for (int c = 0; c < n; ++c) {
+    if (!(local[c] < std::numeric_limits<double>::infinity())) continue;
+    const double rho = local[c] / shrink;
+    free[c] = std::min(free[c], std::max(box, rho - shift - SolidPrimitive::kScaleMargin * (rho + shift)));
+  }
 }
 
 // ---- registration (docs/geovis-catalogue.md §4) -------------------------------------------------

@@ -108,9 +108,10 @@ class SceneObject {
   virtual double inner_radius() const { return bounds().distance_from_origin(); }
   /// Radius of the ball around the origin of the object's chart that holds none of its surface:
   /// a segment inside it cannot hit the object (every hit is a crossing of the surface; a solid
-  /// seen from inside is hit where the segment leaves it). Exact in real arithmetic; the tracer
-  /// adds the margin for rounding (tracer.cpp, SegmentCull). Default: inner_radius() (no point of
-  /// the object at all is closer).
+  /// seen from inside is hit where the segment leaves it). Exact in real arithmetic up to a
+  /// margin where it is a difference of large lengths; the tracer adds the margin for the rounding
+  /// of the chord's ends and of the tests (render/segment_cull.h). Default: inner_radius() (no
+  /// point of the object at all is closer).
   virtual double surface_free_radius() const { return inner_radius(); }
   /// Lowers free[c] to the surface-free radius of every part of the object in chart c < n (the
   /// scene's per-chart empty ball, Tracer): a leaf tests only segments of its own chart, so it

@@ -150,7 +150,8 @@ double SolidPrimitive::surface_free_radius() const {
     c = to_parent.point(c);
     rho /= to_local.stretch_bound();
   }
-  return std::max(free, rho - norm(c));
+  const double dc = norm(c);
+  return std::max(free, rho - dc - kScaleMargin * (rho + dc));
 }
 
 Vec3 SolidPrimitive::parent_normal(const Vec3& p_local, int part) const {

@@ -107,8 +107,12 @@ class SolidPrimitive : public Solid, public PrimitiveData {
   Bounds3 bounds() const final;
   /// The larger of inner_radius() and what the inscribed ball (local_inscribed_ball) leaves free
   /// around the origin: a ball inside the solid holds none of its surface, nor does any ball
-  /// around the origin inside it (the camera inside a background sphere).
+  /// around the origin inside it (the camera inside a background sphere). That radius, ρ − |c| for
+  /// a ball of radius ρ about c, is shrunk by kScaleMargin·(ρ + |c|): the rounding of the
+  /// difference and of the intersection test in the solid's own length scale, which may be far
+  /// larger than the radius (render/segment_cull.h covers the radius' own scale).
   double surface_free_radius() const final;
+  static constexpr double kScaleMargin = 1e-12;
   /// A ball inside the solid in the local frame (centre, radius); radius 0 when none is known.
   virtual void local_inscribed_ball(Vec3& center, double& radius) const {
     center = Vec3{0, 0, 0};
