@@ -1,6 +1,7 @@
 #include "render/compound.h"
 
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "render/local_object.h"
@@ -122,6 +123,24 @@ double CompoundObject::outer_radius() const {
   double r = 0;
   for (const auto& c : children_) r = std::max(r, c->outer_radius());
   return r;
+}
+
+void CompoundObject::restrict_surface_free_radii(double* free, int n) const {
+  if (!transformed_) {
+    for (const SceneObject* c : bounded_) c->restrict_surface_free_radii(free, n);
+    for (const SceneObject* c : unbounded_) c->restrict_surface_free_radii(free, n);
+    return;
+  }
+  std::vector<double> local(n, std::numeric_limits<double>::infinity());
+  for (const SceneObject* c : bounded_) c->restrict_surface_free_radii(local.data(), n);
+  for (const SceneObject* c : unbounded_) c->restrict_surface_free_radii(local.data(), n);
+  const double shrink = to_local_.stretch_bound(), shift = norm(to_parent_.point(Vec3{0, 0, 0}));
+  const double box = bounds_.distance_from_origin();
+  for (int c = 0; c < n; ++c) {
+    if (!(local[c] < std::numeric_limits<double>::infinity())) continue;
+    const double rho = local[c] / shrink;
+    free[c] = std::min(free[c], std::max(box, rho - shift - SolidPrimitive::kScaleMargin * (rho + shift)));
+  }
 }
 
 // ---- registration (docs/geovis-catalogue.md §4) -------------------------------------------------

@@ -24,6 +24,11 @@ class CompoundObject final : public SceneObject {
   double inner_radius() const override;
   /// The largest of the children's (untransformed; else the bounds').
   double outer_radius() const override;
+  /// The children's, per chart; with a transform M, a child-frame ball of radius ρ around the
+  /// origin maps onto a region holding the ball of radius ρ/‖M⁻¹‖₂ around M(0) (Affine3::
+  /// stretch_bound), so ρ/‖M⁻¹‖₂ − |M(0)| around the origin (less the margin of SolidPrimitive::
+  /// surface_free_radius for the difference; or the bounds' distance, if larger).
+  void restrict_surface_free_radii(double* free, int n) const override;
   const std::vector<SceneObjectPtr>& children() const { return children_; }
 
  private:

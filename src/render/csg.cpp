@@ -102,6 +102,10 @@ Bounds3 CsgObject::bounds() const {
   return r;
 }
 
+double CsgObject::surface_free_radius() const {
+  return std::max(inner_radius(), std::min(first->surface_free_radius(), second->surface_free_radius()));
+}
+
 // ---- registration (docs/geovis-catalogue.md §4) -------------------------------------------------
 
 namespace {

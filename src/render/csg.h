@@ -24,6 +24,9 @@ class CsgObject final : public Solid {
   CsgObject(CsgOp op, std::shared_ptr<const Solid> a, std::shared_ptr<const Solid> b);
   void spans(const Vec3& a, const Vec3& d, SpanList& out) const override;
   Bounds3 bounds() const override;
+  /// The boundary of A ∪ B, A ∩ B and A − B lies in ∂A ∪ ∂B (every crossing of the span lists is
+  /// one of a primitive's): the smaller of the two solids' radii, or inner_radius() if larger.
+  double surface_free_radius() const override;
   CsgOp op;
   std::shared_ptr<const Solid> first, second;
 };

@@ -116,6 +116,19 @@ class SceneObject {
   /// bounding sphere in its frame, render/local_object.h). Default: the farthest corner of its
   /// bounds.
   virtual double outer_radius() const { return bounds().farthest_distance_from_origin(); }
+  /// Radius of the ball around the origin of the object's chart that holds none of its surface:
+  /// a segment inside it cannot hit the object (every hit is a crossing of the surface; a solid
+  /// seen from inside is hit where the segment leaves it). Exact in real arithmetic up to a
+  /// margin where it is a difference of large lengths; the tracer adds the margin for the rounding
+  /// of the chord's ends and of the tests (render/segment_cull.h). Default: inner_radius() (no
+  /// point of the object at all is closer).
+  virtual double surface_free_radius() const { return inner_radius(); }
+  /// Lowers free[c] to the surface-free radius of every part of the object in chart c < n (the
+  /// scene's per-chart empty ball, Tracer): a leaf tests only segments of its own chart, so it
+  /// restricts free[chart] alone; groups (render/compound.h) combine their children.
+  virtual void restrict_surface_free_radii(double* free, int n) const {
+    if (chart >= 0 && chart < n) free[chart] = std::min(free[chart], surface_free_radius());
+  }
   /// Chart in which the object lives (paper §2.3; e.g. Morris-Thorne 0: l>0, 1: l<=0).
   int chart = 0;
   std::string id;

@@ -48,7 +48,8 @@ struct RenderJob {
   int supersample = 1;  ///< n x n samples per pixel
   /// Trace every ray alone through the geodesic integrator, without the shortcuts that must not
   /// change the picture: no SIMD packets, no straight lines in flat inertial coordinates, no
-  /// escape or capture stops (Tracer). The reference the benchmark compares the fast path with
+  /// escape or capture stops, every step tested against the scene (Tracer, render/segment_cull.h).
+  /// The reference the benchmark compares the fast path with
   /// (bench/scenes/bench_geovis_scenes.cpp).
   bool reference_tracing = false;
 };

@@ -72,6 +72,16 @@ Bounds3 Affine3::bounds(const Bounds3& b) const {
   return r;
 }
 
+double Affine3::stretch_bound() const {
+  double row_max = 0;
+  for (int i = 0; i < 3; ++i) {
+    double row = 0;
+    for (int j = 0; j < 3; ++j) row += std::fabs(m[0][i] * m[0][j] + m[1][i] * m[1][j] + m[2][i] * m[2][j]);
+    row_max = std::max(row_max, row);
+  }
+  return std::sqrt(row_max);
+}
+
 void PrimitiveData::set_transform(const Transform& t) {
   to_parent = Affine3::from(t);
   to_local = to_parent.inverse();
@@ -130,6 +140,20 @@ void SolidPrimitive::spans(const Vec3& a, const Vec3& d, SpanList& out) const {
 
 Bounds3 SolidPrimitive::bounds() const { return transformed ? to_parent.bounds(local_bounds()) : local_bounds(); }
 
+double SolidPrimitive::surface_free_radius() const {
+  Vec3 c;
+  double rho;
+  local_inscribed_ball(c, rho);
+  double free = inner_radius();
+  if (!(rho > 0)) return free;
+  if (transformed) {
+    c = to_parent.point(c);
+    rho /= to_local.stretch_bound();
+  }
+  const double dc = norm(c);
+  return std::max(free, rho - dc - kScaleMargin * (rho + dc));
+}
+
 Vec3 SolidPrimitive::parent_normal(const Vec3& p_local, int part) const {
   const Vec3 n = local_normal(p_local, part);
   return transformed ? normalize(to_local.transposed_dir(n)) : n;
@@ -144,6 +168,11 @@ void Ellipsoid::local_spans(const Vec3& o, const Vec3& d, SpanList& out) const {
   double t0, t1;
   if (!solve_quadratic(dot(dq, dq), 2 * dot(q, dq), dot(q, q) - 1, t0, t1)) return;
   out.push({make_crossing(t0, this, o, d, 0), make_crossing(t1, this, o, d, 0)});
+}
+
+void Ellipsoid::local_inscribed_ball(Vec3& c, double& r) const {
+  c = center;
+  r = std::min({axlen.x, axlen.y, axlen.z});
 }
 
 Bounds3 Ellipsoid::local_bounds() const { return {center - axlen, center + axlen}; }
@@ -203,6 +232,11 @@ void Box::local_spans(const Vec3& o, const Vec3& d, SpanList& out) const {
   }
   if (tin > tout || !std::isfinite(tin) || !std::isfinite(tout)) return;
   out.push({make_crossing(tin, this, o, d, fin), make_crossing(tout, this, o, d, fout)});
+}
+
+void Box::local_inscribed_ball(Vec3& c, double& r) const {
+  c = 0.5 * (lo + hi);
+  r = 0.5 * std::min({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
 }
 
 Vec3 Box::local_normal(const Vec3&, int part) const {
@@ -328,6 +362,11 @@ void Cylinder::local_spans(const Vec3& o, const Vec3& d, SpanList& out) const {
   int pin, pout;
   if (!closed_cylinder_span(frame, r1, r2, o, d, tin, tout, pin, pout)) return;
   out.push({make_crossing(tin, this, o, d, pin), make_crossing(tout, this, o, d, pout)});
+}
+
+void Cylinder::local_inscribed_ball(Vec3& c, double& r) const {
+  c = frame.base + (0.5 * frame.height) * frame.ez;
+  r = std::min({r1, r2, 0.5 * frame.height});
 }
 
 Bounds3 Cylinder::local_bounds() const { return cylinder_bounds(frame, r1, r2); }

@@ -40,6 +40,13 @@ struct Affine3 {
             m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z};
   }
   Bounds3 bounds(const Bounds3& b) const;  ///< bounds of the 8 transformed corners
+  /// An upper bound of the spectral norm ‖A‖₂ of the linear part (the largest factor by which the
+  /// map stretches a length): √‖AᵀA‖_∞, as ‖A‖₂² = ρ(AᵀA) ≤ ‖AᵀA‖_∞ (every induced norm bounds
+  /// the spectral radius; Horn & Johnson, Matrix Analysis, Thm. 5.6.9). Equal to it for rotations
+  /// and uniform scalings. With the inverse map it bounds how little the map shrinks a ball: the
+  /// image of a ball of radius ρ contains the ball of radius ρ / inverse().stretch_bound() around
+  /// the image of its centre.
+  double stretch_bound() const;
 };
 
 /// What every leaf primitive carries: shader, GeoViS objID, object type and its transform.
@@ -98,6 +105,19 @@ class SolidPrimitive : public Solid, public PrimitiveData {
  public:
   void spans(const Vec3& a, const Vec3& d, SpanList& out) const final;
   Bounds3 bounds() const final;
+  /// The larger of inner_radius() and what the inscribed ball (local_inscribed_ball) leaves free
+  /// around the origin: a ball inside the solid holds none of its surface, nor does any ball
+  /// around the origin inside it (the camera inside a background sphere). That radius, ρ − |c| for
+  /// a ball of radius ρ about c, is shrunk by kScaleMargin·(ρ + |c|): the rounding of the
+  /// difference and of the intersection test in the solid's own length scale, which may be far
+  /// larger than the radius (render/segment_cull.h covers the radius' own scale).
+  double surface_free_radius() const final;
+  static constexpr double kScaleMargin = 1e-12;
+  /// A ball inside the solid in the local frame (centre, radius); radius 0 when none is known.
+  virtual void local_inscribed_ball(Vec3& center, double& radius) const {
+    center = Vec3{0, 0, 0};
+    radius = 0;
+  }
   /// Spans of the line o + t d in the local frame.
   virtual void local_spans(const Vec3& o, const Vec3& d, SpanList& out) const = 0;
   virtual Bounds3 local_bounds() const = 0;
@@ -118,6 +138,8 @@ class Ellipsoid final : public SolidPrimitive {
  public:
   Ellipsoid(const Vec3& center, const Vec3& axlen) : center(center), axlen(axlen) {}
   void local_spans(const Vec3& o, const Vec3& d, SpanList& out) const override;
+  /// Centre and smallest semi-axis: Σ (x_i/a_i)² ≤ |x|²/min a_i² ≤ 1 within it.
+  void local_inscribed_ball(Vec3& c, double& r) const override;
   Bounds3 local_bounds() const override;
   Vec3 local_normal(const Vec3& p, int part) const override;
   void uv(const Vec3& p, int part, double& u, double& v) const override;
@@ -137,6 +159,8 @@ class Box final : public SolidPrimitive {
  public:
   Box(const Vec3& c0, const Vec3& c1);
   void local_spans(const Vec3& o, const Vec3& d, SpanList& out) const override;
+  /// Centre and smallest half extent.
+  void local_inscribed_ball(Vec3& c, double& r) const override;
   Bounds3 local_bounds() const override { return {lo, hi}; }
   Vec3 local_normal(const Vec3& p, int part) const override;
   void uv(const Vec3& p, int part, double& u, double& v) const override;
@@ -170,6 +194,8 @@ class Cylinder final : public SolidPrimitive {
  public:
   Cylinder(const Vec3& base, const Vec3& top, double r1, double r2);
   void local_spans(const Vec3& o, const Vec3& d, SpanList& out) const override;
+  /// Middle of the axis, radius min(r1, r2, height/2). (A Ring has none: its hole.)
+  void local_inscribed_ball(Vec3& c, double& r) const override;
   Bounds3 local_bounds() const override;
   Vec3 local_normal(const Vec3& p, int part) const override;
   void uv(const Vec3& p, int part, double& u, double& v) const override;

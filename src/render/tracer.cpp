@@ -17,15 +17,18 @@ namespace geovis {
 struct RayState {
   const Metric* metric;
   const SceneObject* scene;
+  const SegmentCull* cull = nullptr;
   bool hit = false;
   Hit best;
   double frac = 0;  ///< refined hit position as fraction of the step
   double lambda0 = 0, lambda1 = 0;
   double y0[kMaxSystemDim], y1[kMaxSystemDim], dy0[kMaxSystemDim], dy1[kMaxSystemDim];
   int dim = 8;
-  // Pseudo-Cartesian end of the previous step = start of the next one (saves one transformation).
-  bool have_prev = false;
+  // The end of the previous step = the start of the next one (saves one transformation): its
+  // chart and radius always, its pseudo-Cartesian point where it was computed (have_prev_p).
+  bool have_prev = false, have_prev_p = false;
   Vec3 prev_p;
+  double prev_radius = 0;
   int prev_chart = 0;
 };
 
@@ -138,35 +141,72 @@ GeodesicResult integrate_ray(const Metric& m, bool straight, const SolverConfig&
   return m.integrate(cfg, system, y, 0.0, cb);
 }
 
+/// One end of a step's chord: its chart and distance |p| from the origin, and the
+/// pseudo-Cartesian point p itself where it is known (have_p).
+struct ChordEnd {
+  Vec3 p;
+  double radius = 0;
+  int chart = 0;
+  bool have_p = false;
+};
+
+/// The end at metric coordinates x (the integrator's pseudo-Cartesian point `given`, chart 0, where
+/// it has one): only its chart and radius where the metric gives them without transforming x
+/// (Metric::pseudo_cartesian_radius), else the transformed point.
+ChordEnd chord_end(const Metric& m, const Vec4& x, const double* given) {
+  ChordEnd e;
+  if (given) {
+    e.p = Vec3{given[0], given[1], given[2]};
+    e.have_p = true;
+  } else if (m.pseudo_cartesian_radius(x, e.radius, e.chart)) {
+    return e;
+  } else {
+    e.chart = m.to_pseudo_cartesian(x, e.p);
+    e.have_p = true;
+  }
+  e.radius = norm(e.p);
+  return e;
+}
+
 /// The hit search's test of one accepted step: its chord (pseudo-Cartesian segment, paper §2.3)
-/// against the scene; a chord hit is refined on the curved step (refine_hit) and stops the ray.
+/// against the scene, unless the chord lies in the scene's empty ball of its chart (SegmentCull);
+/// a chord hit is refined on the curved step (refine_hit) and stops the ray.
 StepAction test_step(RayState& rs, const StepView& st) {
   if (!rs.scene) return StepAction::Continue;
   const Metric& mm = *rs.metric;
   Segment seg;
   seg.x0 = vec4_at(st.y0);
   seg.x1 = vec4_at(st.y1);
-  // The integrator's pseudo-Cartesian ends where it has them (StepView::p0/p1: chart 0).
+  ChordEnd e0;
   if (rs.have_prev) {
-    seg.p0 = rs.prev_p;
-    seg.chart0 = rs.prev_chart;
-  } else if (st.p0) {
-    seg.p0 = Vec3{st.p0[0], st.p0[1], st.p0[2]};
-    seg.chart0 = 0;
+    e0.chart = rs.prev_chart;
+    e0.radius = rs.prev_radius;
+    e0.have_p = rs.have_prev_p;
+    e0.p = rs.prev_p;
   } else {
-    seg.chart0 = mm.to_pseudo_cartesian(seg.x0, seg.p0);
+    e0 = chord_end(mm, seg.x0, st.p0);
   }
-  if (st.p1) {
-    seg.p1 = Vec3{st.p1[0], st.p1[1], st.p1[2]};
-    seg.chart1 = 0;
-  } else {
-    seg.chart1 = mm.to_pseudo_cartesian(seg.x1, seg.p1);
+  ChordEnd e1 = chord_end(mm, seg.x1, st.p1);
+  rs.have_prev = true;
+  rs.prev_chart = e1.chart;
+  rs.prev_radius = e1.radius;
+  rs.have_prev_p = e1.have_p;
+  rs.prev_p = e1.p;
+  if (rs.cull && rs.cull->excludes(e0.chart, e0.radius, e1.chart, e1.radius)) return StepAction::Continue;
+  // The chord is tested: both pseudo-Cartesian ends (the charts from the radius agree with
+  // to_pseudo_cartesian's, Metric::pseudo_cartesian_radius).
+  if (!e0.have_p) e0.chart = mm.to_pseudo_cartesian(seg.x0, e0.p);
+  if (!e1.have_p) {
+    e1.chart = mm.to_pseudo_cartesian(seg.x1, e1.p);
+    rs.have_prev_p = true;
+    rs.prev_p = e1.p;
   }
+  seg.p0 = e0.p;
+  seg.p1 = e1.p;
+  seg.chart0 = e0.chart;
+  seg.chart1 = e1.chart;
   seg.step = &st;
   seg.metric = &mm;
-  rs.prev_p = seg.p1;
-  rs.prev_chart = seg.chart1;
-  rs.have_prev = true;
   Hit h;
   if (!rs.scene->intersect(seg, h)) return StepAction::Continue;
   rs.best = h;
@@ -346,6 +386,7 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   // Capture (geodesic.h): nothing to hit below the scene's innermost radius (0 when an object may
   // reach the origin or its bounds are unknown: never); nothing at all without a scene.
   cfg_.capture_radius = job.scene ? job.scene->inner_radius() : std::numeric_limits<double>::infinity();
+  if (job.scene) cull_ = SegmentCull(*job.scene);
   point_lights_ = job.metric->info().inertial_cartesian && job.lights.shadows && !job.lights.lights.empty();
   // Flat inertial coordinates: the rays are straight lines, no integrator (spacetime/straight_ray.h).
   // Here and not in the metric's integrate(): only the renderer's light rays are one step each —
@@ -363,6 +404,7 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
     straight_ = packets_ = jacobi_hits_only_ = false;
     cfg_.escape_radius = std::numeric_limits<double>::infinity();  // SolverConfig: no escape test
     cfg_.capture_radius = 0.0;                                     // no capture test
+    cull_ = SegmentCull{};                                         // every step tested
   }
 }
 
@@ -394,6 +436,7 @@ TraceResult Tracer::trace_system(GeodesicSystem system, const Vec3& d_in, TraceS
   RayState rs;
   rs.metric = &m;
   rs.scene = job_.scene.get();
+  rs.cull = &cull_;
   const GeodesicResult gr = search_hit(m, straight_, cfg_, system, y, rs, observe_step);
   return end_ray(system, rs, k0, y, y_start, gr, stats);
 }
@@ -461,6 +504,7 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
       r.rs = RayState{};
       r.rs.metric = &m;
       r.rs.scene = job_.scene.get();
+      r.rs.cull = &cull_;
       return true;
     }
     return false;

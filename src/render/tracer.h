@@ -13,6 +13,7 @@
 
 #include "render/camera.h"
 #include "render/render_job.h"
+#include "render/segment_cull.h"
 
 namespace geovis {
 
@@ -97,6 +98,8 @@ class Tracer {
   /// The capture radius of the rays: the scene's innermost radius (SolverConfig::capture_radius).
   double capture_radius() const { return cfg_.capture_radius; }
   static constexpr int kMaxRefineLevels = 16;
+  /// The steps that are not tested against the scene (render/segment_cull.h).
+  const SegmentCull& segment_cull() const { return cull_; }
 
  private:
   void fill_data(const TraceResult& r, PixelData& d) const;
@@ -116,6 +119,9 @@ class Tracer {
   /// RGBjac: every ray is first traced as a geodesic and only a ray that hits is traced again with
   /// its Jacobi fields (trace_direction): the lensing data exist only at hits (fill_data).
   bool jacobi_hits_only_;
+  /// The scene's empty balls: steps inside them are not tested (render/segment_cull.h); none for
+  /// the reference path.
+  SegmentCull cull_;
 };
 
 }  // namespace geovis

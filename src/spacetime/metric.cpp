@@ -256,6 +256,15 @@ int Metric::to_pseudo_cartesian(const Vec4& x, Vec3& p) const {
   }
 }
 
+void Metric::default_pseudo_cartesian_radius(const Vec4& x, double& radius, int& chart) const {
+  chart = 0;
+  switch (info_.coord_type) {
+    case CoordType::Spherical: radius = std::fabs(x[1]); return;              // |r n(θ, φ)|
+    case CoordType::Cylindrical: radius = std::hypot(x[1], x[3]); return;  // |(r cos φ, r sin φ, z)|
+    default: radius = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]); return;
+  }
+}
+
 bool Metric::pseudo_cartesian_jacobian(const Vec4& x, double J[3][3]) const {
   switch (info_.coord_type) {
     case CoordType::Spherical: {

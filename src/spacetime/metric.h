@@ -145,12 +145,22 @@ class Metric {
   /// Pseudo-Cartesian coordinates (paper §2.3) of the spatial point of x; returns the chart index
   /// (e.g. Morris-Thorne: 0 for l > 0, 1 for l <= 0). Default: by coordinate type.
   virtual int to_pseudo_cartesian(const Vec4& x, Vec3& p) const;
+  /// The distance |p| of x's pseudo-Cartesian point from the origin and its chart, where they
+  /// follow from the coordinates without the trigonometry of to_pseudo_cartesian (spherical
+  /// coordinates: |p| = |r|, up to the rounding of p). The renderer asks this of every step to
+  /// tell whether it can reach the scene at all (render/tracer.cpp, test_step). False when the
+  /// metric has no such shortcut: the caller then transforms x.
+  virtual bool pseudo_cartesian_radius(const Vec4& /*x*/, double& /*radius*/, int& /*chart*/) const {
+    return false;
+  }
   /// Inverse of to_pseudo_cartesian for the given chart (time component t kept).
   virtual Vec4 from_pseudo_cartesian(double t, const Vec3& p, int chart = 0) const;
   /// Jacobian J[i][j] = ∂p^i/∂x^(j+1) of to_pseudo_cartesian at x (maps a tangent vector's
   /// spatial components to pseudo-Cartesian ones); false where the map has no closed form here
   /// (custom coordinates). Default: by coordinate type, consistent with to_pseudo_cartesian.
   virtual bool pseudo_cartesian_jacobian(const Vec4& x, double J[3][3]) const;
+  /// pseudo_cartesian_radius of the default to_pseudo_cartesian (by coordinate type; chart 0).
+  void default_pseudo_cartesian_radius(const Vec4& x, double& radius, int& chart) const;
 
   // ---- hot path (dispatch once per geodesic) ----
   /// Integrates system `sys` from y (dim = system_dim(sys), updated in place) starting at

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <memory>
+#include <type_traits>
 
 #include "core/error.h"
 #include "spacetime/capture.h"
@@ -53,6 +54,16 @@ class MetricCRTP : public Metric {
   };
 
   void christoffel(const Vec4& x, Christoffel& G) const override { christoffel_inline(x, G); }
+  /// The default map's radius where M (and every class between it and Metric) keeps Metric's
+  /// to_pseudo_cartesian; a metric with its own map gives its own radius, else none.
+  bool pseudo_cartesian_radius(const Vec4& x, double& radius, int& chart) const override {
+    if constexpr (std::is_same_v<decltype(&M::to_pseudo_cartesian), decltype(&Metric::to_pseudo_cartesian)>) {
+      default_pseudo_cartesian_radius(x, radius, chart);
+      return true;
+    } else {
+      return false;
+    }
+  }
   bool has_closed_form_christoffel() const override { return kHasClosedChristoffel; }
 
   // ---- non-virtual, inlinable versions used inside the integrators ----

@@ -12,7 +12,7 @@ namespace {
 
 const Color kRed{1, 0, 0}, kBlue{0, 0, 1};
 
-void expect_color(const Color& a, const Color& b, double tol = 1e-12) {
+void expect_texture_color(const Color& a, const Color& b, double tol = 1e-12) {
   EXPECT_NEAR(a.r, b.r, tol);
   EXPECT_NEAR(a.g, b.g, tol);
   EXPECT_NEAR(a.b, b.b, tol);
@@ -53,46 +53,46 @@ TEST(TextureRegistry, HoldsEveryGeoViSTextureWithItsDefaults) {
 }
 
 TEST_F(ObjTextures, UniTexColorAndGray) {
-  expect_color(make("UniTex", {{"color", std::vector<double>{0.8, 0.16, 0.16}}}, false)->sample(0.3, 0.7),
+  expect_texture_color(make("UniTex", {{"color", std::vector<double>{0.8, 0.16, 0.16}}}, false)->sample(0.3, 0.7),
                {0.8, 0.16, 0.16});
-  expect_color(make("UniTex", {{"colorgray", 0.25}}, false)->sample(0, 0), {0.25, 0.25, 0.25});
+  expect_texture_color(make("UniTex", {{"colorgray", 0.25}}, false)->sample(0, 0), {0.25, 0.25, 0.25});
 }
 
 TEST_F(ObjTextures, CheckerGeoViSRuleWithCRemainder) {
   auto t = make("CheckerT2D", {{"transform", scale2(10, 10)}});
-  expect_color(t->sample(0.05, 0.05), kRed);   // cells (0, 0)
-  expect_color(t->sample(0.15, 0.05), kBlue);  // (1, 0)
-  expect_color(t->sample(0.15, 0.15), kRed);   // (1, 1)
+  expect_texture_color(t->sample(0.05, 0.05), kRed);   // cells (0, 0)
+  expect_texture_color(t->sample(0.15, 0.05), kBlue);  // (1, 0)
+  expect_texture_color(t->sample(0.15, 0.15), kRed);   // (1, 1)
   // Negative cells: floor −1 % 2 = −1 (C) differs from 1 % 2 = 1, so (−1, 1) is tex1 although
   // −1 + 1 is even; (−1, −1) is tex0.
   EXPECT_FALSE(CheckerTexture::selects_first(-0.5, 1.5));
   EXPECT_TRUE(CheckerTexture::selects_first(-0.5, -0.5));
   EXPECT_FALSE(CheckerTexture::selects_first(-0.5, 0.5));
-  expect_color(t->sample(-0.05, -0.05), kRed);
+  expect_texture_color(t->sample(-0.05, -0.05), kRed);
 }
 
 TEST_F(ObjTextures, ChequeredBorder) {
   auto t = make("ChequeredT2D", {{"width", 0.25}});
-  expect_color(t->sample(0.5, 0.5), kRed);   // inside the square
-  expect_color(t->sample(0.1, 0.5), kBlue);  // in the border
-  expect_color(t->sample(0.5, 0.9), kBlue);
-  expect_color(t->sample(-1.5, 2.5), kRed);  // |u| and |v| fractional parts 0.5
+  expect_texture_color(t->sample(0.5, 0.5), kRed);   // inside the square
+  expect_texture_color(t->sample(0.1, 0.5), kBlue);  // in the border
+  expect_texture_color(t->sample(0.5, 0.9), kBlue);
+  expect_texture_color(t->sample(-1.5, 2.5), kRed);  // |u| and |v| fractional parts 0.5
 }
 
 TEST_F(ObjTextures, ChequeredTimeAlternates) {
   auto t = make("ChequeredTimeT2D", {{"deltat", 2.0}});
-  expect_color(t->sample(0.3, 0.3, 0.5), kBlue);  // first half of the period: tex1
-  expect_color(t->sample(0.3, 0.3, 1.5), kRed);   // second half: tex0
-  expect_color(t->sample(0.3, 0.3, 2.5), kBlue);
+  expect_texture_color(t->sample(0.3, 0.3, 0.5), kBlue);  // first half of the period: tex1
+  expect_texture_color(t->sample(0.3, 0.3, 1.5), kRed);   // second half: tex0
+  expect_texture_color(t->sample(0.3, 0.3, 2.5), kBlue);
 }
 
 TEST_F(ObjTextures, DieFaces) {
   auto t = make("DieT2D", {});
   // Face +x (part 1) shows one eye at the centre; face −x (part 0) six.
-  expect_color(t->sample_part(0.5, 0.5, 0, 1), kRed);
-  expect_color(t->sample_part(0.25, 0.25, 0, 1), kBlue);
-  expect_color(t->sample_part(0.25, 0.5, 0, 0), kRed);
-  expect_color(t->sample_part(0.5, 0.5, 0, 0), kBlue);
+  expect_texture_color(t->sample_part(0.5, 0.5, 0, 1), kRed);
+  expect_texture_color(t->sample_part(0.25, 0.25, 0, 1), kBlue);
+  expect_texture_color(t->sample_part(0.25, 0.5, 0, 0), kRed);
+  expect_texture_color(t->sample_part(0.5, 0.5, 0, 0), kBlue);
   EXPECT_EQ(DieTexture::eyes_on_face(0) + DieTexture::eyes_on_face(1), 7);
   EXPECT_EQ(DieTexture::eyes_on_face(2) + DieTexture::eyes_on_face(3), 7);
   EXPECT_EQ(DieTexture::eyes_on_face(4) + DieTexture::eyes_on_face(5), 7);
@@ -105,8 +105,8 @@ TEST_F(ObjTextures, ColorGradients) {
                    {"start", std::vector<double>{0, 0.5}},
                    {"end", std::vector<double>{1, 0.5}}},
                   false);
-  expect_color(lin->sample(0.25, 0.9), {0.75, 0, 0.25});
-  expect_color(lin->sample(-1, 0), kRed);  // clamped
+  expect_texture_color(lin->sample(0.25, 0.9), {0.75, 0, 0.25});
+  expect_texture_color(lin->sample(-1, 0), kRed);  // clamped
   auto rad = make("ColorGradTex",
                   {{"color1", std::vector<double>{1, 0, 0}},
                    {"color2", std::vector<double>{0, 0, 1}},
@@ -114,11 +114,11 @@ TEST_F(ObjTextures, ColorGradients) {
                    {"end", std::vector<double>{1, 0.5}},
                    {"gradtype", "radial"}},
                   false);
-  expect_color(rad->sample(0.5, 0.75), {0.5, 0, 0.5});  // distance 0.25 of 0.5
-  expect_color(hsv_to_rgb(120, 1, 1), {0, 1, 0});
-  expect_color(hsv_to_rgb(240, 1, 0.5), {0, 0, 0.5});
+  expect_texture_color(rad->sample(0.5, 0.75), {0.5, 0, 0.5});  // distance 0.25 of 0.5
+  expect_texture_color(hsv_to_rgb(120, 1, 1), {0, 1, 0});
+  expect_texture_color(hsv_to_rgb(240, 1, 0.5), {0, 0, 0.5});
   auto tc = make("ColorGradTex", {{"gradtype", "texCoords"}}, false);
-  expect_color(tc->sample(0.2, 0.7), {0.2, 0.7, 0});
+  expect_texture_color(tc->sample(0.2, 0.7), {0.2, 0.7, 0});
 }
 
 TEST_F(ObjTextures, ImageBilinearPeriodic) {
@@ -138,18 +138,18 @@ TEST_F(ObjTextures, ImageBilinearPeriodic) {
   auto t = make("Image", {{"file", "tex2x2.png"}, {"sampling", "bilinear"}}, false);
   const double tol = 1.0 / 65535;
   // Pixel (i, j) is centred at (u, v) = (i/W, j/H), row 0 on top.
-  expect_color(t->sample(0.0, 0.0), {1, 0, 0}, tol);
-  expect_color(t->sample(0.5, 0.0), {0, 1, 0}, tol);
-  expect_color(t->sample(0.0, 0.5), {0, 0, 1}, tol);
-  expect_color(t->sample(0.25, 0.0), {0.5, 0.5, 0}, tol);       // halfway between two pixels
-  expect_color(t->sample(0.75, 0.0), {0.5, 0.5, 0}, tol);       // wraps back to pixel 0
-  expect_color(t->sample(1.0, 1.0), t->sample(0.0, 0.0), tol);  // periodic
-  expect_color(t->sample(0.25, 0.25), {0.5, 0.5, 0.5}, tol);    // mean of all four
+  expect_texture_color(t->sample(0.0, 0.0), {1, 0, 0}, tol);
+  expect_texture_color(t->sample(0.5, 0.0), {0, 1, 0}, tol);
+  expect_texture_color(t->sample(0.0, 0.5), {0, 0, 1}, tol);
+  expect_texture_color(t->sample(0.25, 0.0), {0.5, 0.5, 0}, tol);       // halfway between two pixels
+  expect_texture_color(t->sample(0.75, 0.0), {0.5, 0.5, 0}, tol);       // wraps back to pixel 0
+  expect_texture_color(t->sample(1.0, 1.0), t->sample(0.0, 0.0), tol);  // periodic
+  expect_texture_color(t->sample(0.25, 0.25), {0.5, 0.5, 0.5}, tol);    // mean of all four
   // scale-obj #(-1 -1) as in the GeoViS background spheres: (u, v) -> (−u, −v), wrapped.
   auto flipped =
       make("Image", {{"file", "tex2x2.png"}, {"transform", scale2(-1, -1)}, {"sampling", "bilinear"}}, false);
-  expect_color(flipped->sample(0.5, 0.0), t->sample(0.5, 0.0), tol);
-  expect_color(flipped->sample(0.25, 0.0), t->sample(0.75, 0.0), tol);
+  expect_texture_color(flipped->sample(0.5, 0.0), t->sample(0.5, 0.0), tol);
+  expect_texture_color(flipped->sample(0.25, 0.0), t->sample(0.75, 0.0), tol);
   // Same path -> same decoded image.
   auto again = make("Image", {{"file", "tex2x2.png"}}, false);
   EXPECT_EQ(std::dynamic_pointer_cast<ImageTexture>(again)->image, std::dynamic_pointer_cast<ImageTexture>(t)->image);

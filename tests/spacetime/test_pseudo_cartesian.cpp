@@ -33,6 +33,42 @@ TEST_P(PseudoCartesian, JacobianIsTheDerivativeOfTheMap) {
   }
 }
 
+TEST_P(PseudoCartesian, RadiusAndChartAreThoseOfTheMap) {
+  // Metric::pseudo_cartesian_radius (the renderer's test of a step against the scene's empty
+  // ball, render/segment_cull.h) stands for |p| and the chart of to_pseudo_cartesian: equal up to
+  // the rounding of p (a few ulps; SegmentCull::kMargin allows 1e-6), at the sample position and
+  // at others with the radial coordinate negated (the second chart of the wormholes) and the
+  // other coordinates moved.
+  const auto m = make_metric(GetParam());
+  const Vec4 s = m->info().sample_pos;
+  int checked = 0;
+  for (const Vec4& x : {s, Vec4{{s[0], -s[1], s[2], s[3]}}, Vec4{{s[0], 3 * s[1], s[2] + 0.3, s[3] + 1.7}},
+                        Vec4{{s[0], 0.5 * s[1], s[2] - 0.2, s[3] + 50.0}}}) {
+    double radius;
+    int chart;
+    if (!m->pseudo_cartesian_radius(x, radius, chart)) GTEST_SKIP() << m->name() << " has no shortcut";
+    Vec3 p;
+    EXPECT_EQ(chart, m->to_pseudo_cartesian(x, p)) << m->name();
+    EXPECT_NEAR(radius, norm(p), 1e-14 * norm(p)) << m->name();
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4);
+}
+
+TEST(PseudoCartesianRadius, GivenWhereTheMapIsKnownAndOnlyThere) {
+  double radius;
+  int chart;
+  // Spherical coordinates with the default map: |r|; Morris–Thorne: |l|, chart 1 for l <= 0.
+  EXPECT_TRUE(make_metric("Schwarzschild")->pseudo_cartesian_radius(Vec4{{0, 7, 1, 2}}, radius, chart));
+  EXPECT_EQ(radius, 7.0);
+  EXPECT_EQ(chart, 0);
+  EXPECT_TRUE(make_metric("MorrisThorne")->pseudo_cartesian_radius(Vec4{{0, -4, 1, 2}}, radius, chart));
+  EXPECT_EQ(radius, 4.0);
+  EXPECT_EQ(chart, 1);
+  // A metric with its own map and no radius of its own: none.
+  EXPECT_FALSE(make_metric("Kruskal")->pseudo_cartesian_radius(Vec4{{0, 0.5, 0.1, 1}}, radius, chart));
+}
+
 std::string name_of(const ::testing::TestParamInfo<std::string>& info) {
   std::string n = info.param;
   for (char& c : n)

@@ -117,6 +117,13 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
     return l > 0.0 ? 0 : 1;
   }
 
+  /// |p| = |l| (n(θ, φ) is a unit vector), the chart as to_pseudo_cartesian's.
+  bool pseudo_cartesian_radius(const Vec4& x, double& radius, int& chart) const override {
+    radius = std::fabs(x[1]);
+    chart = x[1] > 0.0 ? 0 : 1;
+    return true;
+  }
+
   /// Inverse of to_pseudo_cartesian: chart 0 gives l = +|p|, chart 1 gives l = −|p| with the
   /// angles of −p (so that l·n(θ,φ) = p again).
   Vec4 from_pseudo_cartesian(double t, const Vec3& p, int chart) const override {
