@@ -18,6 +18,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <type_traits>
 
@@ -44,6 +45,22 @@ inline void packet_rhs(const MetricKernel& m, const double* y, double* dy, unsig
 struct MinoLaneCoeffs {
   enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, POLE, AXIS, kRows };
   alignas(64) double v[kRows][kPacketLanes] = {};
+};
+
+/// The error tolerance of a packet's lanes (ErrorScale): eps_abs, eps_rel and, for a system with
+/// tolerance scales of its own, the 1/D_i of every lane (N rows of kPacketLanes, SoA; else null).
+struct LaneTolerance {
+  double eps_abs, eps_rel;
+  const double* inv;
+};
+
+/// What the step control needs of an attempt besides y1, for every lane: the scaled error norm
+/// (ErrorScale::norm), its root err^(1/q̂) for the step controller (StepController::next_with_root;
+/// meaningful only where err > 0 is finite) and whether y1 is finite (bit l: lane l).
+struct AttemptError {
+  alignas(64) double err[kPacketLanes];
+  alignas(64) double root[kPacketLanes];
+  unsigned finite;
 };
 
 /// Calls f.template operator()<Tab>() with the tableau of solver `kind` (one of those
@@ -121,13 +138,103 @@ HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* 
   if constexpr (Tab::kFsal) std::memcpy(dy1, k[S - 1], sizeof k[S - 1]);
 }
 
+/// The error norm of tableau Tab's estimate e (rk_attempt_lanes) on every lane: ErrorScale::norm,
+/// max_i |e_i|/D_i and NaN where an e_i is NaN, with the same operations per lane as the scalar
+/// stepper (std::max(m, v) as the select m < v ? v : m, so a NaN quotient is skipped as there).
+/// One function for the packets of every tableau; a tableau whose estimator is not max_i |e_i|/D_i
+/// specialises this template.
+template <class Tab>
+struct LaneErrorNorm {
+  template <int N>
+  static HWY_INLINE void apply(const LaneTolerance& tol, const double* y, const double* e, double* err) {
+    constexpr int W = kPacketLanes;
+    // The maximum over the components of term(i, |e_i|) on lanes l..l+lanes−1.
+    auto max_over = [&](size_t l, SimdMask& nan, auto term) {
+      SimdD m(0.0);
+      for (int i = 0; i < N; ++i) {
+        const SimdD a = fabs(SimdD::load(e + i * W + l));
+        nan = nan || a != a;
+        const SimdD v = term(i, a);
+        m = select(m < v, v, m);
+      }
+      return m;
+    };
+    for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+      SimdMask nan{hn::FirstN(SimdTag(), 0)};
+      SimdD m;
+      if (tol.inv) {
+        m = max_over(l, nan, [&](int i, SimdD a) { return a * SimdD::load(tol.inv + i * W + l); });
+      } else if (tol.eps_rel == 0.0) {
+        m = max_over(l, nan, [](int, SimdD a) { return a; }) / SimdD(tol.eps_abs);
+      } else {
+        m = max_over(l, nan, [&](int i, SimdD a) {
+          return a / (SimdD(tol.eps_abs) + SimdD(tol.eps_rel) * fabs(SimdD::load(y + i * W + l)));
+        });
+      }
+      select(nan, SimdD(std::numeric_limits<double>::quiet_NaN()), m).store(err + l);
+    }
+  }
+};
+
+/// root_q<q>(x) (integrators.h) on every lane where x > 0 is finite, the same operations per lane
+/// (the bit-pattern seed lane by lane: 64-bit integer division has no SIMD instruction).
+template <int q>
+HWY_INLINE void root_q_lanes(const double* x, double* root) {
+  constexpr int W = kPacketLanes;
+  if constexpr (q == 5 || q == 7) {
+    HWY_ALIGN double seed[W];
+    for (int l = 0; l < W; ++l) seed[l] = x[l] > 0.0 && std::isfinite(x[l]) ? root_q_seed<q>(x[l]) : 1.0;
+    for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+      const SimdD xv = SimdD::load(x + l);
+      SimdD y = SimdD::load(seed + l);
+      for (int it = 0; it < 4; ++it) {
+        const SimdD y2 = y * y;
+        if constexpr (q == 5) {
+          y = y * (SimdD(6.0) - xv * (y2 * y2 * y)) * SimdD(0.2);
+        } else {
+          const SimdD y3 = y2 * y;
+          y = y * (SimdD(8.0) - xv * (y3 * y3 * y)) * SimdD(1.0 / 7.0);
+        }
+      }
+      (SimdD(1.0) / y).store(root + l);
+    }
+  } else if constexpr (q == 1 || q == 2 || q == 4 || q == 8) {
+    for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+      SimdD r = SimdD::load(x + l);
+      for (int s = 1; s < q; s *= 2) r = sqrt(r);
+      r.store(root + l);
+    }
+  } else {
+    for (int l = 0; l < W; ++l) root[l] = x[l] > 0.0 && std::isfinite(x[l]) ? root_q<q>(x[l]) : 0.0;
+  }
+}
+
+/// The attempt's AttemptError: the error norm of e, its root and the finiteness of y1 per lane.
+template <class Tab, int N>
+HWY_INLINE void attempt_error_lanes(const LaneTolerance& tol, const double* y, const double* y1, const double* e,
+                                    AttemptError& out) {
+  constexpr int W = kPacketLanes;
+  LaneErrorNorm<Tab>::template apply<N>(tol, y, e, out.err);
+  root_q_lanes<Tab::kErrExp>(out.err, out.root);
+  HWY_ALIGN double finite[W];
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    SimdMask all{hn::IsFinite(SimdD::load(y1 + l).v)};
+    for (int i = 1; i < N; ++i) all = all && SimdMask{hn::IsFinite(SimdD::load(y1 + i * W + l).v)};
+    select(all, SimdD(1.0), SimdD(0.0)).store(finite + l);
+  }
+  out.finite = 0;
+  for (int l = 0; l < W; ++l) out.finite |= (finite[l] != 0.0 ? 1u : 0u) << l;
+}
+
 /// The attempt of solver `kind` on the geodesic system in the metric's coordinates (lanes: those
-/// whose right-hand side is needed, for metrics evaluated lane by lane).
-void rk_attempt(SolverKind kind, const MetricKernel& m, unsigned lanes, const double* y, const double* dy,
-                const double* h, double* y1, double* e, double* dy1) {
+/// whose right-hand side is needed, for metrics evaluated lane by lane), with its AttemptError.
+void rk_attempt(SolverKind kind, const MetricKernel& m, unsigned lanes, const LaneTolerance& tol, const double* y,
+                const double* dy, const double* h, double* y1, double* dy1, AttemptError& err) {
   with_packet_tableau(kind, [&]<class Tab>() {
+    HWY_ALIGN double e[kDim * kPacketLanes];
     rk_attempt_lanes<Tab, kDim, kDim>([&](const double* yy, double* dyy) { packet_rhs(m, yy, dyy, lanes); }, y, dy, h,
                                       y1, e, dy1);
+    attempt_error_lanes<Tab, kDim>(tol, y, y1, e, err);
   });
 }
 
@@ -152,12 +259,15 @@ HWY_INLINE void mino_rhs_lanes(const MinoLaneCoeffs& c, const double* y, double*
 void mino_rhs(const MinoLaneCoeffs& c, const double* y, double* dy) { mino_rhs_lanes(c, y, dy); }
 
 /// The attempt of solver `kind` on the Mino-time system (t, φ, λ are quadratures:
-/// KerrMinoRHS::kCoupled).
-void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const double* y, const double* dy, const double* h,
-                  double* y1, double* e, double* dy1) {
+/// KerrMinoRHS::kCoupled), with its AttemptError.
+void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance& tol, const double* y,
+                  const double* dy, const double* h, double* y1, double* dy1, AttemptError& err) {
   with_packet_tableau(kind, [&]<class Tab>() {
-    rk_attempt_lanes<Tab, KerrMinoRHS::N, KerrMinoRHS::kCoupled>(
-        [&](const double* yy, double* dyy) { mino_rhs_lanes(c, yy, dyy); }, y, dy, h, y1, e, dy1);
+    constexpr int N = KerrMinoRHS::N;
+    HWY_ALIGN double e[N * kPacketLanes];
+    rk_attempt_lanes<Tab, N, KerrMinoRHS::kCoupled>([&](const double* yy, double* dyy) { mino_rhs_lanes(c, yy, dyy); },
+                                                    y, dy, h, y1, e, dy1);
+    attempt_error_lanes<Tab, N>(tol, y, y1, e, err);
   });
 }
 
@@ -181,10 +291,10 @@ struct Lane {
   double lambda = 0, h = 0, hstep = 0, h_cross = 0, err = 0;
   double hmax = 0, hmin = 0, affine0 = 0, remaining = 0;
   int affine_retries = 0;
+  double root = 0;  ///< root_q(err) of the last attempt (AttemptError)
   bool after_reject = false, clipped = false;
   StepController<Tab::kErrExp> control;  ///< ExplicitRK::control
   GeodesicResult res;
-  double inv_tol[N] = {};  ///< ErrorScale::inv of systems with their own tolerance scales
 };
 
 /// Integrates the rays of `rays` on the lanes of packet system PS, each lane exactly as
@@ -196,8 +306,9 @@ struct Lane {
 ///   system(l)                           the scalar system of lane l (integrators.h concept);
 ///   start(l, y_start, y)                the ray's state from its start (8 components: x, k);
 ///                                       false when it handled the ray itself (done already called);
-///   rhs(y, dy, lanes), attempt(kind, lanes, y, dy, h, y1, e, dy1)   SoA right-hand side and the
-///                                       attempt of solver `kind` (rk_attempt_lanes);
+///   rhs(y, dy, lanes), attempt(kind, lanes, tol, y, dy, h, y1, dy1, err)   SoA right-hand side
+///                                       and the attempt of solver `kind` (rk_attempt_lanes) with
+///                                       its error norm, root and finiteness (AttemptError);
 ///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies.
 template <class Tab, class PS>
@@ -226,8 +337,12 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   const double lambda_res = kOwnAffine && std::isfinite(cfg.lambda_max) ? 1e-12 * cfg.lambda_max : 0.0;
   constexpr double kBoundaryRes = 1.0 / 1024;
 
-  HWY_ALIGN double y[N * W] = {}, dy[N * W] = {}, y1[N * W] = {}, dy1[N * W] = {}, e[N * W] = {}, hv[W] = {};
+  HWY_ALIGN double y[N * W] = {}, dy[N * W] = {}, y1[N * W] = {}, dy1[N * W] = {}, hv[W] = {};
   HWY_ALIGN double f1[Tab::kFsal ? N * W : 1];  // f(y1) of the lanes whose last stage is not it
+  // ErrorScale::inv of every lane (SoA) for systems with their own tolerance scales.
+  HWY_ALIGN double inv_tol[kScaledTol ? N * W : 1] = {};
+  const LaneTolerance tol{cfg.eps_abs, cfg.eps_rel, kScaledTol ? inv_tol : nullptr};
+  AttemptError attempt_err;
   Lane<Tab, N> lane[W];
   bool exhausted = false;
   unsigned need_dy = 0;  // lanes whose dy = f(y) is still to be evaluated (fresh rays)
@@ -242,13 +357,14 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step.
   auto set_tolerance = [&](int l, const double* yl) {
     if constexpr (kScaledTol) {
-      double* inv = lane[l].inv_tol;
+      double inv[N];
       ps.system(l).tolerance_inv_scale(yl, inv);
       if (cfg.eps_rel == 0.0) {
         for (int i = 0; i < N; ++i) inv[i] *= inv_eps_abs;
       } else {
         for (int i = 0; i < N; ++i) inv[i] = 1.0 / (cfg.eps_abs / inv[i] + cfg.eps_rel * std::fabs(yl[i]));
       }
+      put(inv_tol, l, inv);
     }
   };
   // integrate_with's finish(): the result with the state where the ray stopped.
@@ -343,22 +459,18 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     } while (need_dy);
     if (!ready) return;
 
-    ps.attempt(cfg.kind, ready, y, dy, hv, y1, e, dy1);
+    ps.attempt(cfg.kind, ready, tol, y, dy, hv, y1, dy1, attempt_err);
     unsigned accepted = 0, need_dy1 = 0;
     for (int l = 0; l < W; ++l) {
       if (!(ready >> l & 1u)) continue;
       Lane<Tab, N>& ln = lane[l];
       auto& sys = ps.system(l);
       ln.res.rhs_evals += Tab::S - 1;
-      double yl[N], yl1[N], el[N];
-      get(y, l, yl);
+      double yl1[N];
       get(y1, l, yl1);
-      get(e, l, el);
-      ErrorScale tol{cfg.eps_abs, cfg.eps_rel};
-      if constexpr (kScaledTol) tol.inv = ln.inv_tol;
-      ln.err = tol.norm<N>(el, yl);
-      bool finite = true;
-      for (int i = 0; i < N; ++i) finite = finite && std::isfinite(yl1[i]);
+      ln.err = attempt_err.err[l];
+      ln.root = attempt_err.root[l];
+      const bool finite = attempt_err.finite >> l & 1u;
       const bool in_domain = finite && sys.valid(yl1);
       if (!in_domain || (adaptive && !(ln.err <= 1.0))) {
         ready &= ~(1u << l);
@@ -376,7 +488,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
             continue;
           }
         }
-        ln.h = in_domain ? ln.control.next(ln.hstep, ln.err, false, ln.after_reject) : 0.5 * ln.hstep;
+        ln.h = in_domain ? ln.control.next_with_root(ln.hstep, ln.err, ln.root, false, ln.after_reject)
+                         : 0.5 * ln.hstep;
         ln.after_reject = true;
         if (ln.h < ln.hmin || ln.h <= 4 * DBL_EPSILON * std::fabs(ln.lambda)) {
           finish(l, !finite ? StopReason::NotFinite : (!in_domain ? StopReason::Invalid : StopReason::StepUnderflow));
@@ -386,6 +499,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       if constexpr (kOwnAffine) {
         // λ_max overshot, or a step longer than step_max in λ: retried shorter (integrate_with).
+        double yl[N];
+        get(y, l, yl);
         const double dl = std::fabs(sys.affine(yl1) - sys.affine(yl));
         if (ln.affine_retries < 50) {
           if (std::isfinite(cfg.lambda_max) && dl > ln.remaining * (1.0 + 1e-12)) {
@@ -470,7 +585,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         continue;
       }
       if (adaptive)
-        ln.h = std::min(ln.hmax, std::max(ln.control.next(ln.hstep, ln.err, true, ln.after_reject), ln.hmin));
+        ln.h = std::min(ln.hmax,
+                        std::max(ln.control.next_with_root(ln.hstep, ln.err, ln.root, true, ln.after_reject), ln.hmin));
       if (!adaptive && kOwnAffine) ln.h = std::fabs(cfg.step_size) * per_affine(sys, yl1);
       if (!ln.after_reject) ln.h_cross = 0.0;
       ln.after_reject = false;
@@ -493,10 +609,10 @@ struct CoordinatePacket {
     return true;
   }
   void rhs(const double* y, double* dy, unsigned lanes) const { packet_rhs(metric, y, dy, lanes); }
-  void attempt(SolverKind kind, unsigned lanes, const double* y, const double* dy, const double* h, double* y1,
-               double* e, double* dy1) const {
+  void attempt(SolverKind kind, unsigned lanes, const LaneTolerance& tol, const double* y, const double* dy,
+               const double* h, double* y1, double* dy1, AttemptError& err) const {
     // Looked up per call: before the first dispatch the table entry is Highway's target chooser.
-    HWY_DYNAMIC_DISPATCH(rk_attempt)(kind, metric, lanes, y, dy, h, y1, e, dy1);
+    HWY_DYNAMIC_DISPATCH(rk_attempt)(kind, metric, lanes, tol, y, dy, h, y1, dy1, err);
   }
   StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
   void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
@@ -534,9 +650,9 @@ struct MinoPacket {
     return true;
   }
   void rhs(const double* y, double* dy, unsigned) const { HWY_DYNAMIC_DISPATCH(mino_rhs)(coeffs, y, dy); }
-  void attempt(SolverKind kind, unsigned, const double* y, const double* dy, const double* h, double* y1, double* e,
-               double* dy1) const {
-    HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, y, dy, h, y1, e, dy1);
+  void attempt(SolverKind kind, unsigned, const LaneTolerance& tol, const double* y, const double* dy, const double* h,
+               double* y1, double* dy1, AttemptError& err) const {
+    HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
   }
   StepAction step(int l, const StepView& s) {
     if (!rays.on_step) return ray[l]->step(s, {});
