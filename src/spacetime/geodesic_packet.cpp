@@ -41,9 +41,10 @@ inline void packet_rhs(const MetricKernel& m, const double* y, double* dy, unsig
 }
 
 /// The constants of the rays in a packet's lanes (KerrMinoCoeffs, one row per coefficient; the
-/// pole ζ is measured from; axis: all bits set where L = 0), for the SIMD right-hand side.
+/// pole ζ is measured from; axis: all bits set where L = 0; the floor of sin²θ in the tolerance
+/// scales), for the SIMD right-hand side and tolerance scales.
 struct MinoLaneCoeffs {
-  enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, POLE, AXIS, kRows };
+  enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, POLE, AXIS, SIN2_FLOOR, kRows };
   alignas(64) double v[kRows][kPacketLanes] = {};
 };
 
@@ -271,6 +272,27 @@ void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance&
   });
 }
 
+/// integrate_with's set_tolerance (integrators.h) for the Mino-time system on every lane: the 1/D_i
+/// of ErrorScale from the system's scales (kerr_mino_tolerance_inv_scale) at state y, SoA.
+void mino_tolerance(const MinoLaneCoeffs& c, double eps_abs, double eps_rel, const double* y, double* inv) {
+  using R = MinoLaneCoeffs;
+  constexpr int N = KerrMinoRHS::N, W = kPacketLanes;
+  const double inv_eps_abs = 1.0 / eps_abs;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
+    SimdD ys[N], is[N];
+    for (int i = 0; i < N; ++i) ys[i] = SimdD::load(y + i * W + l);
+    HWY_NAMESPACE::kerr_mino_tolerance_inv_scale(at(R::A2), at(R::SIN2_FLOOR), at(R::POLE), ys, is);
+    for (int i = 0; i < N; ++i) {
+      if (eps_rel == 0.0)
+        is[i] = is[i] * SimdD(inv_eps_abs);
+      else
+        is[i] = SimdD(1.0) / (SimdD(eps_abs) / is[i] + SimdD(eps_rel) * fabs(ys[i]));
+      is[i].store(inv + i * W + l);
+    }
+  }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -281,6 +303,7 @@ namespace geovis {
 HWY_EXPORT(rk_attempt);
 HWY_EXPORT(mino_rhs);
 HWY_EXPORT(mino_attempt);
+HWY_EXPORT(mino_tolerance);
 
 namespace {
 
@@ -309,6 +332,8 @@ struct Lane {
 ///   rhs(y, dy, lanes), attempt(kind, lanes, tol, y, dy, h, y1, dy1, err)   SoA right-hand side
 ///                                       and the attempt of solver `kind` (rk_attempt_lanes) with
 ///                                       its error norm, root and finiteness (AttemptError);
+///   tolerance_inv(eps_abs, eps_rel, y, inv)   for a system with tolerance scales of its own: the
+///                                       1/D_i of set_tolerance at state y on every lane (SoA);
 ///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies.
 template <class Tab, class PS>
@@ -333,7 +358,6 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   const double dir = cfg.direction >= 0 ? 1.0 : -1.0;
   const bool adaptive = cfg.step_ctrl;
   const double hmax_affine = std::max(cfg.step_max, cfg.step_min);
-  const double inv_eps_abs = 1.0 / cfg.eps_abs;
   const double lambda_res = kOwnAffine && std::isfinite(cfg.lambda_max) ? 1e-12 * cfg.lambda_max : 0.0;
   constexpr double kBoundaryRes = 1.0 / 1024;
 
@@ -354,18 +378,12 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   auto put = [](double* soa, int l, const double* in) {
     for (int i = 0; i < N; ++i) soa[i * W + l] = in[i];
   };
-  // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step.
-  auto set_tolerance = [&](int l, const double* yl) {
-    if constexpr (kScaledTol) {
-      double inv[N];
-      ps.system(l).tolerance_inv_scale(yl, inv);
-      if (cfg.eps_rel == 0.0) {
-        for (int i = 0; i < N; ++i) inv[i] *= inv_eps_abs;
-      } else {
-        for (int i = 0; i < N; ++i) inv[i] = 1.0 / (cfg.eps_abs / inv[i] + cfg.eps_rel * std::fabs(yl[i]));
-      }
-      put(inv_tol, l, inv);
-    }
+  // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step, for the lanes in
+  // need_tol at once before the next attempt (PS::tolerance_inv, all lanes: a lane whose state
+  // did not change gets the same values again).
+  unsigned need_tol = 0;
+  auto set_tolerance = [&](int l) {
+    if constexpr (kScaledTol) need_tol |= 1u << l;
   };
   // integrate_with's finish(): the result with the state where the ray stopped.
   auto finish = [&](int l, StopReason r) {
@@ -396,7 +414,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       ln = Lane<Tab, N>{};
       ln.live = true;
       const Sys& sys = ps.system(l);
-      set_tolerance(l, yl);
+      set_tolerance(l);
       const double ppa = per_affine(sys, yl);
       ln.hmax = hmax_affine * ppa;
       ln.hmin = cfg.step_min * ppa;
@@ -459,6 +477,10 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     } while (need_dy);
     if (!ready) return;
 
+    if constexpr (kScaledTol) {
+      if (need_tol) ps.tolerance_inv(cfg.eps_abs, cfg.eps_rel, y, inv_tol);
+      need_tol = 0;
+    }
     ps.attempt(cfg.kind, ready, tol, y, dy, hv, y1, dy1, attempt_err);
     unsigned accepted = 0, need_dy1 = 0;
     for (int l = 0; l < W; ++l) {
@@ -567,7 +589,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       put(y, l, yl1);
       put(dy, l, dyl1);
       ln.lambda = lambda1;
-      set_tolerance(l, yl1);
+      set_tolerance(l);
       StopReason stop = StopReason::None;
       if (act == StepAction::Stop)
         stop = StopReason::Callback;
@@ -645,11 +667,15 @@ struct MinoPacket {
     using R = MinoLaneCoeffs;
     const KerrMinoConstants& c = r.c;
     const double row[R::kRows] = {
-        c.M, c.a, c.a2, c.E, c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0};
+        c.M, c.a, c.a2, c.E, c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0,
+        c.sin2_floor};
     for (int i = 0; i < R::kRows; ++i) coeffs.v[i][l] = row[i];
     return true;
   }
   void rhs(const double* y, double* dy, unsigned) const { HWY_DYNAMIC_DISPATCH(mino_rhs)(coeffs, y, dy); }
+  void tolerance_inv(double eps_abs, double eps_rel, const double* y, double* inv) const {
+    HWY_DYNAMIC_DISPATCH(mino_tolerance)(coeffs, eps_abs, eps_rel, y, inv);
+  }
   void attempt(SolverKind kind, unsigned, const LaneTolerance& tol, const double* y, const double* dy, const double* h,
                double* y1, double* dy1, AttemptError& err) const {
     HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
