@@ -1,6 +1,7 @@
-// The packet integrator (geodesic_packet.h). The Runge–Kutta attempt (rk_attempt) and the Mino-time
-// right-hand side are compiled once per SIMD instruction set by Highway's foreach_target (this
-// file includes itself per target); the per-lane step control and stop logic is compiled once
+// The packet integrator (geodesic_packet.h). The Runge–Kutta attempt with its error norm and
+// controller root (rk_attempt, mino_attempt), the Mino-time right-hand side and tolerance scales
+// are compiled once per SIMD instruction set by Highway's foreach_target (this file includes
+// itself per target); the per-lane step control and stop logic is compiled once
 // (the HWY_ONCE part), as one driver over the system (integrate_lanes): the geodesic system in
 // the metric's coordinates (CoordinatePacket) or Carter's separated equations in Mino time
 // (MinoPacket, kerr_mino.h).
@@ -261,8 +262,8 @@ void mino_rhs(const MinoLaneCoeffs& c, const double* y, double* dy) { mino_rhs_l
 
 /// The attempt of solver `kind` on the Mino-time system (t, φ, λ are quadratures:
 /// KerrMinoRHS::kCoupled), with its AttemptError.
-void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance& tol, const double* y,
-                  const double* dy, const double* h, double* y1, double* dy1, AttemptError& err) {
+void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance& tol, const double* y, const double* dy,
+                  const double* h, double* y1, double* dy1, AttemptError& err) {
   with_packet_tableau(kind, [&]<class Tab>() {
     constexpr int N = KerrMinoRHS::N;
     HWY_ALIGN double e[N * kPacketLanes];
@@ -510,8 +511,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
             continue;
           }
         }
-        ln.h = in_domain ? ln.control.next_with_root(ln.hstep, ln.err, ln.root, false, ln.after_reject)
-                         : 0.5 * ln.hstep;
+        ln.h =
+            in_domain ? ln.control.next_with_root(ln.hstep, ln.err, ln.root, false, ln.after_reject) : 0.5 * ln.hstep;
         ln.after_reject = true;
         if (ln.h < ln.hmin || ln.h <= 4 * DBL_EPSILON * std::fabs(ln.lambda)) {
           finish(l, !finite ? StopReason::NotFinite : (!in_domain ? StopReason::Invalid : StopReason::StepUnderflow));
@@ -667,8 +668,7 @@ struct MinoPacket {
     using R = MinoLaneCoeffs;
     const KerrMinoConstants& c = r.c;
     const double row[R::kRows] = {
-        c.M, c.a, c.a2, c.E, c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0,
-        c.sin2_floor};
+        c.M, c.a, c.a2, c.E, c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0, c.sin2_floor};
     for (int i = 0; i < R::kRows; ++i) coeffs.v[i][l] = row[i];
     return true;
   }

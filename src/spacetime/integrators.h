@@ -103,7 +103,8 @@ struct TransportRHS {
 /// A system whose variables are not the coordinates (Mino state, kerr_mino.h) gives per-component
 /// scales s_i (as 1/s_i) so that the tolerance keeps its meaning in coordinates, D_i =
 /// eps_abs·s_i + eps_rel·|y0_i|; the driver then sets `inv` to the N values 1/D_i at the start
-/// of the step.
+/// of the step. The packet integrator runs the same norm on SIMD lanes (geodesic_packet.cpp
+/// LaneErrorNorm): any change here goes there too.
 struct ErrorScale {
   double eps_abs = 0, eps_rel = 0;
   const double* inv = nullptr;  ///< per-component 1/D_i, or null: D_i = eps_abs + eps_rel·|y0_i|
@@ -267,8 +268,7 @@ struct StepController {
   // Always inlined: the per-metric integrator (metric_crtp.h) is its only caller in a metric file,
   // but in a unity unit of several metrics (CMakeLists.txt) GCC stopped inlining it.
   GEOVIS_HOT_INLINE double next(double h, double err, bool accepted, bool after_reject) {
-    return next_with_root(h, err, err > 0.0 && std::isfinite(err) ? root_q<kErrExp>(err) : 0.0, accepted,
-                          after_reject);
+    return next_with_root(h, err, err > 0.0 && std::isfinite(err) ? root_q<kErrExp>(err) : 0.0, accepted, after_reject);
   }
   /// next() with root = root_q<kErrExp>(err) given (used only where err > 0 is finite): the packet
   /// integrator takes the roots of all its lanes at once (geodesic_packet.cpp).

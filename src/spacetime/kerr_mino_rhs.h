@@ -44,10 +44,10 @@ GEOVIS_HOT_INLINE void kerr_mino_tolerance_inv_scale(const T& a2, const T& sin2_
   using std::sqrt;
   enum { W = 0, Z = 1, DW = 2, DZ = 3, TT = 4, PHI = 5, LAM = 6 };
   const T w2 = y[W] * y[W], z = pole + y[Z], z2 = z * z;
-  const T w2sigma = 1.0 + a2 * z2 * w2;          // w² Σ
-  const T s2 = -y[Z] * (2.0 * pole + y[Z]);      // sin²θ (PolarOffset::sin2)
+  const T w2sigma = 1.0 + a2 * z2 * w2;                        // w² Σ
+  const T s2 = -y[Z] * (2.0 * pole + y[Z]);                    // sin²θ (PolarOffset::sin2)
   const T st = sqrt(select(s2 < sin2_floor, sin2_floor, s2));  // std::max(s2, floor)
-  const T q = 1.0 / (w2 * st * w2sigma);         // one division for all four
+  const T q = 1.0 / (w2 * st * w2sigma);                       // one division for all four
   is[TT] = is[PHI] = is[LAM] = T(1.0);
   is[W] = q * st * w2sigma;
   is[Z] = q * w2 * w2sigma;
