@@ -117,6 +117,13 @@ double CompoundObject::inner_radius() const {
   return r;
 }
 
+double CompoundObject::outer_radius() const {
+  if (transformed_) return bounds_.farthest_distance_from_origin();
+  double r = 0;
+  for (const auto& c : children_) r = std::max(r, c->outer_radius());
+  return r;
+}
+
 // ---- registration (docs/geovis-catalogue.md §4) -------------------------------------------------
 
 namespace {

@@ -22,6 +22,8 @@ class CompoundObject final : public SceneObject {
   Bounds3 bounds() const override;
   /// The smallest of the children's (untransformed; else the bounds').
   double inner_radius() const override;
+  /// The largest of the children's (untransformed; else the bounds').
+  double outer_radius() const override;
   const std::vector<SceneObjectPtr>& children() const { return children_; }
 
  private:

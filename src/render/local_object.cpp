@@ -34,6 +34,20 @@ double segment_point_dist2(const Vec3& p0, const Vec3& p1, const Vec3& c) {
   const Vec3 q = p0 + t * d - c;
   return dot(q, q);
 }
+
+/// Whether segment p0 -> p1 stays farther than √r2 from the origin (run on every step of every
+/// ray: no division). The closest point is p0 + t d, t = −p0·d/d·d clamped to [0, 1]; inside,
+/// |p0 + t d|² = |p0|² − (p0·d)²/d·d, compared after multiplying by d·d > 0. a c − b² cancels for
+/// a segment pointing at the origin: its rounding error is below 8ε a c (b² <= a c), so only a
+/// difference above 1e-12 a c counts.
+bool passes_outside_ball(const Vec3& p0, const Vec3& p1, double r2) {
+  const Vec3 d = p1 - p0;
+  const double a = dot(p0, p0), b = dot(p0, d), c = dot(d, d);
+  if (b >= 0) return a > r2;             // closest at p0 (or a degenerate segment)
+  if (b <= -c) return dot(p1, p1) > r2;  // closest at p1
+  return a * c - b * b > r2 * c + 1e-12 * a * c;
+}
+
 }  // namespace
 
 // ---- LocalFrame ---------------------------------------------------------------------------------
@@ -55,14 +69,20 @@ LocalFrame::LocalFrame(std::shared_ptr<const Metric> metric, MotionPtr motion)
   if (sampled && &sampled->metric() == metric_.get()) sampled_ = sampled;
 }
 
-void LocalFrame::event(double tau, Vec4& x, Vec4& e0, Mat4& g) const {
-  if (sampled_) return sampled_->event_at_proper_time(tau, x, e0, g);
-  motion_->event_at_proper_time(tau, x, e0);
-  metric_->metric_tensor(x, g);
+void LocalFrame::event(double tau, WorldlineEvent& ev) const {
+  if (sampled_) return sampled_->event_at(tau, ev);
+  ev.tau = tau;
+  motion_->event_at_proper_time(tau, ev.x, ev.e0);
+  metric_->metric_tensor(ev.x, ev.g);
 }
 
 LocalFrame::State LocalFrame::state(double tau) const {
   if (!motion_) return fixed_;
+  if (sampled_) {
+    WorldlineEvent ev;
+    sampled_->event_at(tau, ev);
+    return state(ev);
+  }
   const MotionSample ms = motion_->at_proper_time(tau);
   State s;
   s.tau = tau;
@@ -72,11 +92,23 @@ LocalFrame::State LocalFrame::state(double tau) const {
   return s;
 }
 
+LocalFrame::State LocalFrame::state(const WorldlineEvent& ev) const {
+  if (!sampled_) return state(ev.tau);
+  State s;
+  s.tau = ev.tau;
+  s.x = ev.x;
+  s.e = sampled_->frame_at(ev);
+  s.g = ev.g;
+  return s;
+}
+
 Vec4 LocalFrame::delta(const Vec4& x, const Vec4& y) const {
   Vec4 d = x - y;
   if (periodic_index_ >= 0) {
     double& a = d[periodic_index_];
-    a = std::remainder(a, 2 * kPi);  // to [−π, π]
+    // To [−π, π]. remainder(a, 2π) is a itself for |a| <= π (the quotient rounds to 0, a tie to
+    // even 0; IEEE 754 §5.3.1), the common case of nearby events: the library call only beyond.
+    if (!(std::fabs(a) <= kPi)) a = std::remainder(a, 2 * kPi);
   }
   return d;
 }
@@ -88,7 +120,7 @@ Vec4 LocalFrame::to_local(const State& s, const Vec4& x) const {
   return X;
 }
 
-bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau) const {
+bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev) const {
   if (!motion_) return true;
   const bool bounded = !motion_->unbounded();
   const double inf = std::numeric_limits<double>::infinity();
@@ -96,29 +128,28 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau) const {
   tau = std::clamp(tau, lo, hi);
   for (int it = 0; it < 20; ++it) {
     // Only the event and e_(0) are needed, not the whole frame.
-    Vec4 x_obj, e0;
-    Mat4 g;
-    event(tau, x_obj, e0, g);
+    event(tau, ev);
     // f(τ) = g(e0, x − x_obj(τ)); df/dτ = −g(u, u) + g(∇_u e0, Δx) = 1 for geodesic or uniform
     // motion (and 1 + O(a·Δx) otherwise), so the Newton step is τ − f.
-    const double f = dot(g, e0, delta(x, x_obj));
+    const double f = dot(ev.g, ev.e0, delta(x, ev.x));
     double next = tau - f;
     if (next < lo || next > hi) {
       // Outside the worldline: one retry from the boundary, then give up.
       if ((next < lo && tau == lo) || (next > hi && tau == hi)) return false;
       next = std::clamp(next, lo, hi);
     }
-    const bool done = std::fabs(next - tau) <= 1e-12 * (1.0 + std::fabs(tau));
+    // Converged: τ is within the tolerance of the root, and ev is its event (the caller's frame
+    // is built from it without evaluating the worldline again).
+    if (std::fabs(next - tau) <= 1e-12 * (1.0 + std::fabs(tau))) return true;
     tau = next;
-    if (done) return true;
   }
   return true;
 }
 
-bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, double tau, double radius) const {
-  Vec4 x_obj, e0;
-  Mat4 g;
-  event(tau, x_obj, e0, g);
+bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineEvent& ev, double radius) const {
+  const Vec4& x_obj = ev.x;
+  const Vec4& e0 = ev.e0;
+  const Mat4& g = ev.g;
   // to_local is linear in Δx: the mapped segment is Δx(s) = a + s b, s ∈ [0, 1], and its
   // distance² the quadratic A + 2Bs + Cs² in the spatial form Q(v, w) = g(v, w) + g(e0, v) g(e0, w).
   const Vec4 a = delta(xa, x_obj), b = delta(xb, x_obj) - a;
@@ -159,10 +190,7 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
   bool finite = !cb.empty();
   for (int i = 0; i < 3 && finite; ++i) finite = std::isfinite(cb.lo[i]) && std::isfinite(cb.hi[i]);
   if (!finite) throw Error("local object: the object inside a local frame must be bounded");
-  for (int k = 0; k < 8; ++k) {
-    const Vec3 c{(k & 1) ? cb.hi.x : cb.lo.x, (k & 2) ? cb.hi.y : cb.lo.y, (k & 4) ? cb.hi.z : cb.lo.z};
-    radius_local_ = std::max(radius_local_, norm(c));
-  }
+  radius_local_ = std::min(child_->outer_radius(), cb.farthest_distance_from_origin());
   const Metric& m = frame_.metric();
   if (!frame_.moving()) {
     const LocalFrame::State s = frame_.state(0);
@@ -239,6 +267,17 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
     tube_.push_back(tb);
     bounds_.expand(tb.box);
   }
+  // The shell about the pseudo-Cartesian origin that holds every box (an orbit's tube is a ring
+  // about it), widened for rounding: a segment outside the outer ball or inside the inner one
+  // passes no box. Most segments of a ray are rejected by it before the time look-up.
+  double r_in = std::numeric_limits<double>::infinity(), r_out2 = 0;
+  for (const TubeBox& b : tube_) {
+    r_in = std::min(r_in, b.box.distance_from_origin());
+    const double far = b.box.farthest_distance_from_origin();
+    r_out2 = std::max(r_out2, far * far);
+  }
+  tube_inner2_ = r_in * r_in * (1 - 1e-9);
+  tube_outer2_ = r_out2 * (1 + 1e-9);
   // An event of the body (local time 0, |X| <= R) lies at coordinate time t_obj + X^i e_(i)^0:
   // the worldline piece to look at is the segment's time range widened by max |X^i e_(i)^0|.
   tube_margin_t_ = dt_max;
@@ -262,14 +301,18 @@ double LocalObject::time_extent(const LocalFrame::State& s) const {
 }
 
 double LocalObject::pseudo_cartesian_radius(const LocalFrame::State& s) const {
-  // ‖J E‖_F bounds the stretch of a local displacement X (|X| <= R) into pseudo-Cartesian
-  // coordinates, J = ∂(pseudo-Cartesian)/∂(coordinates), E = (e_(1), e_(2), e_(3)); finite
-  // differences, widened by 25% for the variation of J across the object.
+  // The operator norm ‖J E‖ bounds the stretch of a local displacement X (|X| <= R) into
+  // pseudo-Cartesian coordinates, J = ∂(pseudo-Cartesian)/∂(coordinates), E = (e_(1), e_(2), e_(3));
+  // J E by finite differences, widened by 25% for the variation of J across the object. ‖J E‖² is
+  // the largest eigenvalue of the Gram matrix G = (J E)ᵀ(J E), at most its largest absolute row sum
+  // (Gershgorin; equal to it when the columns are orthogonal, as for an orthonormal frame in a
+  // diagonal metric, where the Frobenius norm would overestimate up to √3 times).
   const Metric& m = frame_.metric();
-  double sum = 0;
+  Vec3 je[3];
   for (int i = 1; i < 4; ++i) {
     const Vec4& e = s.e[i];
     const double en = std::sqrt(e[1] * e[1] + e[2] * e[2] + e[3] * e[3]);
+    je[i - 1] = Vec3{0, 0, 0};
     if (en == 0) continue;
     const double h = 1e-6 * (1.0 + std::sqrt(s.x[1] * s.x[1] + s.x[2] * s.x[2] + s.x[3] * s.x[3])) / en;
     Vec4 xa = s.x, xb = s.x;
@@ -280,10 +323,15 @@ double LocalObject::pseudo_cartesian_radius(const LocalFrame::State& s) const {
     Vec3 pa, pb;
     m.to_pseudo_cartesian(xa, pa);
     m.to_pseudo_cartesian(xb, pb);
-    const Vec3 je = (pa - pb) / (2 * h);
-    sum += dot(je, je);
+    je[i - 1] = (pa - pb) / (2 * h);
   }
-  return 1.25 * radius_local_ * std::sqrt(sum);
+  double gram_bound = 0;
+  for (int i = 0; i < 3; ++i) {
+    double row = 0;
+    for (int j = 0; j < 3; ++j) row += std::fabs(dot(je[i], je[j]));
+    gram_bound = std::max(gram_bound, row);
+  }
+  return 1.25 * radius_local_ * std::sqrt(gram_bound);
 }
 
 bool LocalObject::world_tube_test(const Segment& seg, double& s0, double& s1) const {
@@ -323,6 +371,9 @@ bool LocalObject::world_tube_test(const Segment& seg, double& s0, double& s1) co
     const Vec3 d = seg.p1 - seg.p0;
     return segment_box(seg.p0, Vec3{1.0 / d.x, 1.0 / d.y, 1.0 / d.z}, box, s0, s1);
   }
+  if (passes_outside_ball(seg.p0, seg.p1, tube_outer2_) ||
+      (dot(seg.p0, seg.p0) < tube_inner2_ && dot(seg.p1, seg.p1) < tube_inner2_))
+    return false;
   const double ta = std::min(seg.x0[0], seg.x1[0]) - tube_margin_t_;
   const double tb = std::max(seg.x0[0], seg.x1[0]) + tube_margin_t_;
   const Vec3 d = seg.p1 - seg.p0;
@@ -487,16 +538,20 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
   const Vec4 dseg = frame_.delta(seg.x1, seg.x0);
   Vec4 x_ref = seg.x0 + 0.5 * dseg;
   double tau = 0;
+  WorldlineEvent ev;  // the last worldline event evaluated (a sampled motion's interval hint)
   if (rigid_motion_) {
     tau = rigid_motion_->to_object_frame(x_ref)[0];  // exact: the object time is τ
   } else if (frame_.moving() && frame_.motion()->unbounded()) {
     tau = frame_.motion()->at_coordinate_time(x_ref[0]).tau;
   } else if (frame_.moving()) {
-    // Initial guess: the sample whose coordinate time is closest to the event's.
+    // Initial guess: the first sample not earlier in coordinate time than the event (its node
+    // interval is where the search looks first).
     const auto& samples = frame_.motion()->samples();
     auto it = std::lower_bound(samples.begin(), samples.end(), x_ref[0],
                                [](const MotionSample& s, double t) { return s.x[0] < t; });
-    tau = (it == samples.end() ? samples.back() : *it).tau;
+    const size_t k = it == samples.end() ? samples.size() - 1 : static_cast<size_t>(it - samples.begin());
+    tau = samples[k].tau;
+    ev.interval = samples.size() > 1 ? std::min(k, samples.size() - 2) : 0;
   }
   Hit best;
   bool found = false;
@@ -532,14 +587,21 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
   }
   for (int iter = 0; iter < 12; ++iter) {
     double tau_new = tau;
-    if (!frame_.simultaneous_tau(x_ref, tau_new)) break;
+    if (!frame_.simultaneous_tau(x_ref, tau_new, ev)) break;
     if (found && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) break;
     tau = tau_new;
-    // A sampled motion's full frame (interpolated and orthonormalized) is costly: first rule out,
-    // from the event and e_(0) alone, a segment that passes outside the body's bounding sphere
-    // (the child test below would miss it).
-    if (!tube_.empty() && frame_.passes_outside(seg.x0, seg.x1, tau, radius_local_)) break;
-    const LocalFrame::State st = frame_.state(tau);
+    LocalFrame::State st;
+    if (!tube_.empty()) {
+      // A sampled motion's full frame (interpolated and orthonormalized) is costly: first rule
+      // out, from the event and e_(0) alone, a segment that passes outside the body's bounding
+      // sphere (the child test below would miss it); the frame is then completed from that event,
+      // the one the search ended at.
+      if (ev.tau != tau) frame_.event(tau, ev);
+      if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) break;
+      st = frame_.state(ev);
+    } else {
+      st = frame_.state(tau);
+    }
     const Vec4 X0 = frame_.to_local(st, seg.x0), X1 = frame_.to_local(st, seg.x1);
     Segment ls;
     ls.x0 = seg.x0;  // world coordinate times for Hit::time

@@ -19,6 +19,7 @@
 // hand's tip) is not missed. The hit's point/normal/ray_dir are in the local frame.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -27,11 +28,11 @@
 #include "render/object.h"
 #include "spacetime/metric.h"
 #include "spacetime/motion.h"
+#include "spacetime/motion_sampled.h"
 
 namespace geovis {
 
 class ConstVelocityMotion;
-class SampledMotion;
 
 /// A local frame: a static tetrad (fixed event and base vectors) or a moving tetrad (Motion).
 class LocalFrame {
@@ -50,15 +51,31 @@ class LocalFrame {
   const Motion* motion() const { return motion_.get(); }
   /// The frame at proper time τ (static frames ignore τ).
   State state(double tau) const;
+  /// The worldline event x_obj(τ), e_(0)(τ) and the metric tensor there (moving frames);
+  /// ev.interval on entry: where a sampled motion looks for τ first.
+  void event(double tau, WorldlineEvent& ev) const;
+  /// The frame at the event's proper time, completed from the event: state(ev.tau) bit for bit.
+  State state(const WorldlineEvent& ev) const;
   /// Proper time of the worldline event simultaneous with x in the local frame, i.e. the root of
   /// f(τ) = g(e_(0)(τ), x − x_obj(τ)) (Newton; f' = 1 + O(acceleration)). False when it lies
-  /// outside the motion's proper-time range. Static frames: true, τ unchanged.
-  bool simultaneous_tau(const Vec4& x, double& tau) const;
+  /// outside the motion's proper-time range. Static frames: true, τ unchanged. `ev`: the interval
+  /// hint in, the last event evaluated out (moving frames; on convergence the event at τ: the
+  /// search stops at the τ whose Newton step is below the tolerance, not after that step).
+  bool simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev) const;
+  bool simultaneous_tau(const Vec4& x, double& tau) const {
+    WorldlineEvent ev;
+    return simultaneous_tau(x, tau, ev);
+  }
   /// Whether the segment xa → xb, mapped into the frame of the moving tetrad at τ (to_local),
   /// passes farther than `radius` from the local origin, with a margin for rounding. Needs only
   /// x_obj(τ) and e_(0), not the whole frame: for an orthonormal tetrad the local spatial distance²
   /// of Δx = x − x_obj is Σ_i (X^i)² = g(Δx, Δx) + (X^0)², X^0 = −g(e_(0), Δx).
-  bool passes_outside(const Vec4& xa, const Vec4& xb, double tau, double radius) const;
+  bool passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineEvent& ev, double radius) const;
+  bool passes_outside(const Vec4& xa, const Vec4& xb, double tau, double radius) const {
+    WorldlineEvent ev;
+    event(tau, ev);
+    return passes_outside(xa, xb, ev, radius);
+  }
   /// Local coordinates X^a = η^{ab} g(e_(b), x − x_obj) of event x.
   Vec4 to_local(const State& s, const Vec4& x) const;
   /// x − y in coordinates, the periodic angle (φ of spherical/cylindrical charts) wrapped to
@@ -69,8 +86,6 @@ class LocalFrame {
   Vec4 body_velocity(const State& s, const Vec3& X, const Vec4& x_hit) const;
 
  private:
-  /// Worldline event x_obj(τ), e_(0)(τ) and the metric tensor at x_obj(τ).
-  void event(double tau, Vec4& x, Vec4& e0, Mat4& g) const;
   std::shared_ptr<const Metric> metric_;
   MotionPtr motion_;
   /// motion_ when it is a SampledMotion of metric_ (it computes the metric tensor at the event).
@@ -144,6 +159,8 @@ class LocalObject final : public SceneObject {
   // moving frame: boxes along the worldline, increasing in time
   std::vector<TubeBox> tube_;
   std::vector<TubeBox> chunks_;  ///< unions of kChunk consecutive tube_ boxes
+  /// Squared radii of the pseudo-Cartesian shell about the origin that holds every tube_ box.
+  double tube_inner2_ = 0, tube_outer2_ = std::numeric_limits<double>::infinity();
   double tube_margin_t_ = 0;
   /// Upper bound of the frame's rotation rate per unit coordinate time (rotating ConstVelocity
   /// motions; 0 otherwise).

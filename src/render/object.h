@@ -48,6 +48,12 @@ struct Bounds3 {
     }
     return std::sqrt(d2);
   }
+  /// Distance of the box's farthest point (a corner) from the origin (0 when empty).
+  double farthest_distance_from_origin() const {
+    if (empty()) return 0;
+    const Vec3 far{std::max(-lo.x, hi.x), std::max(-lo.y, hi.y), std::max(-lo.z, hi.z)};
+    return std::sqrt(dot(far, far));
+  }
   static Bounds3 infinite() {
     const double inf = std::numeric_limits<double>::infinity();
     return {Vec3{-inf, -inf, -inf}, Vec3{inf, inf, inf}};
@@ -106,6 +112,10 @@ class SceneObject {
   /// renderer's capture radius, geodesic.h SolverConfig::capture_radius). Default: the distance
   /// of its bounds, 0 when they contain the origin.
   virtual double inner_radius() const { return bounds().distance_from_origin(); }
+  /// Every point of the object lies within this distance of the origin (|p|; a local object's
+  /// bounding sphere in its frame, render/local_object.h). Default: the farthest corner of its
+  /// bounds.
+  virtual double outer_radius() const { return bounds().farthest_distance_from_origin(); }
   /// Chart in which the object lives (paper §2.3; e.g. Morris-Thorne 0: l>0, 1: l<=0).
   int chart = 0;
   std::string id;

@@ -148,6 +148,11 @@ void Ellipsoid::local_spans(const Vec3& o, const Vec3& d, SpanList& out) const {
 
 Bounds3 Ellipsoid::local_bounds() const { return {center - axlen, center + axlen}; }
 
+double Ellipsoid::outer_radius() const {
+  if (transformed) return bounds().farthest_distance_from_origin();
+  return norm(center) + std::max({std::fabs(axlen.x), std::fabs(axlen.y), std::fabs(axlen.z)});
+}
+
 Vec3 Ellipsoid::local_normal(const Vec3& p, int) const {
   // Gradient of Σ ((x_i − c_i)/a_i)².
   return normalize(Vec3{(p.x - center.x) / (axlen.x * axlen.x), (p.y - center.y) / (axlen.y * axlen.y),

@@ -122,6 +122,9 @@ class Ellipsoid final : public SolidPrimitive {
   Vec3 local_normal(const Vec3& p, int part) const override;
   void uv(const Vec3& p, int part, double& u, double& v) const override;
   void shading_frame(const Vec3& p, const Vec3& d, int part, Vec3& n, Vec3& dir) const override;
+  /// Untransformed: |c| + the largest semi-axis (a sphere's own radius, not its box's corner);
+  /// transformed: the bounds'.
+  double outer_radius() const override;
   Vec3 center, axlen;
 };
 /// The GeoViS uv of a point n on the unit sphere (catalogue §4).

@@ -353,7 +353,7 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   // the objects test such a step whole however long it is (render/local_object.h).
   straight_ = job.metric->info().inertial_cartesian;
   // Packets (spacetime/geodesic_packet.h): the geodesic system with an embedded Runge–Kutta pair
-  // of ExplicitRK (packet_solver: Cash–Karp, Fehlberg, Dormand–Prince 5(4)), in the metric's
+  // (packet_solver: Cash–Karp, Fehlberg, Dormand–Prince 5(4), DOP853), in the metric's
   // coordinates or through Carter's separated equations (Metric::integrate_packet chooses as
   // integrate does), also RGBjac's geodesic pass (jacobi_hits_only_); the Jacobi system and other
   // solvers stay scalar, and straight rays need no integrator at all.

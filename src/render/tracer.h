@@ -65,7 +65,7 @@ class Tracer {
   /// where packet_tracing() (spacetime/geodesic_packet.h), with the same results to the bit.
   void trace_pixels(std::span<const PixelSample> samples, Color* colors, TraceStats& stats) const;
   /// Light rays go in packets: the geodesic system with a solver packet_solver accepts (CashKarp45,
-  /// Fehlberg45, DormandPrince54), in coordinates or through Carter's separated equations (RGBjac:
+  /// Fehlberg45, DormandPrince54, DormandPrince853), in coordinates or through Carter's separated equations (RGBjac:
   /// its first, geodesic pass; the rays that hit are traced again one by one with their Jacobi
   /// fields).
   bool packet_tracing() const { return packets_; }

@@ -72,9 +72,18 @@ decltype(auto) with_packet_tableau(SolverKind kind, F&& f) {
   switch (kind) {
     case SolverKind::Fehlberg45: return f.template operator()<FehlbergTableau>();
     case SolverKind::DormandPrince54: return f.template operator()<DormandPrince54Tableau>();
+    case SolverKind::DormandPrince853: return f.template operator()<DOP853Tableau>();
     default: return f.template operator()<CashKarpTableau>();
   }
 }
+
+/// A tableau with DOP853's two embedded estimates (weights e5 and e3, DOP853Tableau) instead of
+/// ExplicitRK's one (e).
+template <class Tab>
+constexpr bool kCombinedEstimate = requires {
+  Tab::e5;
+  Tab::e3;
+};
 
 }  // namespace
 }  // namespace geovis
@@ -85,16 +94,18 @@ namespace geovis {
 namespace HWY_NAMESPACE {
 #include "spacetime/kerr_mino_rhs.h"
 
-/// ExplicitRK<Tab>::attempt (integrators.h) on all lanes at once for a system of N components
-/// whose right-hand side reads the first kCoupled (rk_detail::coupled_dim): from y, dy = f(y) and
-/// the signed steps h (per lane), the new state y1, the error estimate e and, for a
-/// first-same-as-last tableau (Tab::kFsal), f(y1) = the last stage in dy1 (SoA). The same
-/// operations in the same order as the scalar stepper's rk_detail::stage/weighted:
+/// ExplicitRK<Tab>::attempt (integrators.h; DOP853::attempt for DOP853's tableau) on all lanes
+/// at once for a system of N components whose right-hand side reads the first kCoupled
+/// (rk_detail::coupled_dim): from y, dy = f(y) and the signed steps h (per lane), the new state y1,
+/// the error estimate e (and DOP853's second one e3) and, for a first-same-as-last tableau
+/// (Tab::kFsal), f(y1) = the last stage in dy1 (SoA). The same operations in the same order as
+/// the scalar stepper's rk_detail::stage/weighted:
 ///   stage s: tmp_i = y_i + h·(((0 + a_s0 k_0i) + a_s1 k_1i) + …)   (non-zero a, i < kCoupled)
-///   y1_i = y_i + h·Σ_j b_j k_ji,   e_i = h·Σ_j e_j k_ji.
+///   y1_i = y_i + h·Σ_j b_j k_ji,   e_i = h·Σ_j e_j k_ji
+///   (DOP853: e_i = Σ_j e5_j k_ji, e3_i = Σ_j e3_j k_ji, without h).
 template <class Tab, int N, int kCoupled, class Rhs>
 HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* dy, const double* h, double* y1,
-                                 double* e, double* dy1) {
+                                 double* e, double* e3, double* dy1) {
   constexpr int S = Tab::S, W = kPacketLanes;
   const SimdTag d;
   const size_t L = hn::Lanes(d);
@@ -124,59 +135,79 @@ HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* 
   for (size_t l = 0; l < static_cast<size_t>(W); l += L) {
     const SimdD hv = SimdD::load(h + l);
     for (int i = 0; i < N; ++i) {
-      SimdD ab(0.0), ae(0.0);
+      SimdD ab(0.0), ae(0.0), ae3(0.0);
       [&]<int... j>(std::integer_sequence<int, j...>) {
         ([&] {
           const SimdD kj = SimdD::load(k[j] + i * W + l);
           if constexpr (Tab::b[j] != 0.0) ab = ab + SimdD(Tab::b[j]) * kj;
-          if constexpr (Tab::e[j] != 0.0) ae = ae + SimdD(Tab::e[j]) * kj;
+          if constexpr (kCombinedEstimate<Tab>) {
+            if constexpr (Tab::e5[j] != 0.0) ae = ae + SimdD(Tab::e5[j]) * kj;
+            if constexpr (Tab::e3[j] != 0.0) ae3 = ae3 + SimdD(Tab::e3[j]) * kj;
+          } else {
+            if constexpr (Tab::e[j] != 0.0) ae = ae + SimdD(Tab::e[j]) * kj;
+          }
         }(), ...);
       }(std::make_integer_sequence<int, S>{});
       // clang-format on
       (SimdD::load(y + i * W + l) + hv * ab).store(y1 + i * W + l);
-      (hv * ae).store(e + i * W + l);
+      if constexpr (kCombinedEstimate<Tab>) {
+        ae.store(e + i * W + l);
+        ae3.store(e3 + i * W + l);
+      } else {
+        (hv * ae).store(e + i * W + l);
+      }
     }
   }
   if constexpr (Tab::kFsal) std::memcpy(dy1, k[S - 1], sizeof k[S - 1]);
 }
 
-/// The error norm of tableau Tab's estimate e (rk_attempt_lanes) on every lane: ErrorScale::norm,
-/// max_i |e_i|/D_i and NaN where an e_i is NaN, with the same operations per lane as the scalar
-/// stepper (std::max(m, v) as the select m < v ? v : m, so a NaN quotient is skipped as there).
-/// One function for the packets of every tableau; a tableau whose estimator is not max_i |e_i|/D_i
-/// specialises this template.
-template <class Tab>
-struct LaneErrorNorm {
-  template <int N>
-  static HWY_INLINE void apply(const LaneTolerance& tol, const double* y, const double* e, double* err) {
-    constexpr int W = kPacketLanes;
-    // The maximum over the components of term(i, |e_i|) on lanes l..l+lanes−1.
-    auto max_over = [&](size_t l, SimdMask& nan, auto term) {
-      SimdD m(0.0);
-      for (int i = 0; i < N; ++i) {
-        const SimdD a = fabs(SimdD::load(e + i * W + l));
-        nan = nan || a != a;
-        const SimdD v = term(i, a);
-        m = select(m < v, v, m);
-      }
-      return m;
-    };
-    for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
-      SimdMask nan{hn::FirstN(SimdTag(), 0)};
-      SimdD m;
-      if (tol.inv) {
-        m = max_over(l, nan, [&](int i, SimdD a) { return a * SimdD::load(tol.inv + i * W + l); });
-      } else if (tol.eps_rel == 0.0) {
-        m = max_over(l, nan, [](int, SimdD a) { return a; }) / SimdD(tol.eps_abs);
-      } else {
-        m = max_over(l, nan, [&](int i, SimdD a) {
-          return a / (SimdD(tol.eps_abs) + SimdD(tol.eps_rel) * fabs(SimdD::load(y + i * W + l)));
-        });
-      }
-      select(nan, SimdD(std::numeric_limits<double>::quiet_NaN()), m).store(err + l);
+/// ErrorScale::norm of the estimate e on every lane: max_i |e_i|/D_i and NaN where an e_i is NaN,
+/// with the same operations per lane as the scalar stepper (std::max(m, v) as the select
+/// m < v ? v : m, so a NaN quotient is skipped as there).
+template <int N>
+HWY_INLINE void error_scale_norm_lanes(const LaneTolerance& tol, const double* y, const double* e, double* err) {
+  constexpr int W = kPacketLanes;
+  // The maximum over the components of term(i, |e_i|) on lanes l..l+lanes−1.
+  auto max_over = [&](size_t l, SimdMask& nan, auto term) {
+    SimdD m(0.0);
+    for (int i = 0; i < N; ++i) {
+      const SimdD a = fabs(SimdD::load(e + i * W + l));
+      nan = nan || a != a;
+      const SimdD v = term(i, a);
+      m = select(m < v, v, m);
     }
+    return m;
+  };
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    SimdMask nan{hn::FirstN(SimdTag(), 0)};
+    SimdD m;
+    if (tol.inv) {
+      m = max_over(l, nan, [&](int i, SimdD a) { return a * SimdD::load(tol.inv + i * W + l); });
+    } else if (tol.eps_rel == 0.0) {
+      m = max_over(l, nan, [](int, SimdD a) { return a; }) / SimdD(tol.eps_abs);
+    } else {
+      m = max_over(l, nan, [&](int i, SimdD a) {
+        return a / (SimdD(tol.eps_abs) + SimdD(tol.eps_rel) * fabs(SimdD::load(y + i * W + l)));
+      });
+    }
+    select(nan, SimdD(std::numeric_limits<double>::quiet_NaN()), m).store(err + l);
   }
-};
+}
+
+/// The scaled error of the steps h (per lane) from the attempt's estimate(s) at the start states
+/// y, on every lane: the stepper's own norm, ExplicitRK's ErrorScale::norm of e = h·Σ e_j k_j, or
+/// DOP853's combined norm of e = Σ e5_j k_j and e3 = Σ e3_j k_j (DOP853::combined_error, the
+/// scalar stepper's function, lane by lane).
+template <class Tab, int N>
+HWY_INLINE void step_error_norm_lanes(const LaneTolerance& tol, const double* y, const double* e, const double* e3,
+                                      const double* h, double* err) {
+  error_scale_norm_lanes<N>(tol, y, e, err);
+  if constexpr (kCombinedEstimate<Tab>) {
+    HWY_ALIGN double err3[kPacketLanes];
+    error_scale_norm_lanes<N>(tol, y, e3, err3);
+    for (int l = 0; l < kPacketLanes; ++l) err[l] = DOP853::combined_error(err[l], err3[l], h[l]);
+  }
+}
 
 /// root_q<q>(x) (integrators.h) on every lane where x > 0 is finite, the same operations per lane
 /// (the bit-pattern seed lane by lane: 64-bit integer division has no SIMD instruction).
@@ -211,12 +242,13 @@ HWY_INLINE void root_q_lanes(const double* x, double* root) {
   }
 }
 
-/// The attempt's AttemptError: the error norm of e, its root and the finiteness of y1 per lane.
+/// The attempt's AttemptError: the error norm of e (and e3), its root and the finiteness of y1
+/// per lane.
 template <class Tab, int N>
 HWY_INLINE void attempt_error_lanes(const LaneTolerance& tol, const double* y, const double* y1, const double* e,
-                                    AttemptError& out) {
+                                    const double* e3, const double* h, AttemptError& out) {
   constexpr int W = kPacketLanes;
-  LaneErrorNorm<Tab>::template apply<N>(tol, y, e, out.err);
+  step_error_norm_lanes<Tab, N>(tol, y, e, e3, h, out.err);
   root_q_lanes<Tab::kErrExp>(out.err, out.root);
   HWY_ALIGN double finite[W];
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
@@ -234,9 +266,10 @@ void rk_attempt(SolverKind kind, const MetricKernel& m, unsigned lanes, const La
                 const double* dy, const double* h, double* y1, double* dy1, AttemptError& err) {
   with_packet_tableau(kind, [&]<class Tab>() {
     HWY_ALIGN double e[kDim * kPacketLanes];
+    HWY_ALIGN double e3[kCombinedEstimate<Tab> ? kDim * kPacketLanes : 1];
     rk_attempt_lanes<Tab, kDim, kDim>([&](const double* yy, double* dyy) { packet_rhs(m, yy, dyy, lanes); }, y, dy, h,
-                                      y1, e, dy1);
-    attempt_error_lanes<Tab, kDim>(tol, y, y1, e, err);
+                                      y1, e, e3, dy1);
+    attempt_error_lanes<Tab, kDim>(tol, y, y1, e, e3, h, err);
   });
 }
 
@@ -267,9 +300,10 @@ void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance&
   with_packet_tableau(kind, [&]<class Tab>() {
     constexpr int N = KerrMinoRHS::N;
     HWY_ALIGN double e[N * kPacketLanes];
+    HWY_ALIGN double e3[kCombinedEstimate<Tab> ? N * kPacketLanes : 1];
     rk_attempt_lanes<Tab, N, KerrMinoRHS::kCoupled>([&](const double* yy, double* dyy) { mino_rhs_lanes(c, yy, dyy); },
-                                                    y, dy, h, y1, e, dy1);
-    attempt_error_lanes<Tab, N>(tol, y, y1, e, err);
+                                                    y, dy, h, y1, e, e3, dy1);
+    attempt_error_lanes<Tab, N>(tol, y, y1, e, e3, h, err);
   });
 }
 
@@ -322,9 +356,10 @@ struct Lane {
 };
 
 /// Integrates the rays of `rays` on the lanes of packet system PS, each lane exactly as
-/// integrate_with<ExplicitRK<Tab>> (integrators.h, Tab: the tableau of cfg.kind) integrates PS's
-/// scalar system of the lane from λ = 0: the same steps, checks and stops in the same order (the optional parts —
-/// own affine parameter, scaled tolerance, projection, re-basing — chosen by the same `requires`).
+/// integrate_with<ExplicitRK<Tab>> (integrators.h, Tab: the tableau of cfg.kind; DOP853 for its
+/// tableau, step_error_norm_lanes) integrates PS's scalar system of the lane from λ = 0: the same
+/// steps, checks and stops in the same order (the optional parts — own affine parameter, scaled
+/// tolerance, projection, re-basing — chosen by the same `requires`).
 /// PS provides
 ///   N                                   the state's dimension;
 ///   system(l)                           the scalar system of lane l (integrators.h concept);
@@ -699,13 +734,14 @@ struct MinoPacket {
 void require_packet_solver(const SolverConfig& cfg) {
   validate_solver_config(cfg);
   if (!packet_solver(cfg.kind))
-    throw Error("packet integrator: only the CashKarp45, Fehlberg45 and DormandPrince54 solvers");
+    throw Error("packet integrator: only the CashKarp45, Fehlberg45, DormandPrince54 and DormandPrince853 solvers");
 }
 
 }  // namespace
 
 bool packet_solver(SolverKind kind) {
-  return kind == SolverKind::CashKarp45 || kind == SolverKind::Fehlberg45 || kind == SolverKind::DormandPrince54;
+  return kind == SolverKind::CashKarp45 || kind == SolverKind::Fehlberg45 || kind == SolverKind::DormandPrince54 ||
+         kind == SolverKind::DormandPrince853;
 }
 
 void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& cfg, const PacketRays& rays) {

@@ -1,10 +1,10 @@
 // Wavefront integration of light rays: a packet of kPacketLanes geodesics (GeodesicSystem::Geodesic,
 // y = (x^μ, k^μ)) integrated in lockstep with an explicit embedded Runge–Kutta pair (Cash–Karp
-// 4(5), Fehlberg 4(5) or Dormand–Prince 5(4): packet_solver), one ray per SIMD lane, in a
-// structure-of-arrays layout (component i of lane l at y[i * kPacketLanes + l]).
+// 4(5), Fehlberg 4(5), Dormand–Prince 5(4) or Hairer's DOP853: packet_solver), one ray per SIMD
+// lane, in a structure-of-arrays layout (component i of lane l at y[i * kPacketLanes + l]).
 //
 // Every lane is one independent run of integrate_with<ExplicitRK<Tab>> (integrators.h, Tab the
-// solver's tableau):
+// solver's tableau; integrate_with<DOP853> for DOP853):
 // its own λ, step size, step controller (StepController, the same object), boundary location,
 // stop reason and step count, and the same stop checks in the same order (the scalar
 // MetricSystem's valid/inside/constraint/escaped/captured/reproject/rescale, called per lane).
@@ -44,7 +44,8 @@ struct PacketRays {
 };
 
 /// Whether the packet integrator serves solver `kind` (the explicit embedded pairs that
-/// integrate_with<ExplicitRK<Tab>> runs: CashKarp45, Fehlberg45, DormandPrince54).
+/// integrate_with<ExplicitRK<Tab>> runs: CashKarp45, Fehlberg45, DormandPrince54; and DOP853,
+/// DormandPrince853).
 bool packet_solver(SolverKind kind);
 
 /// Integrates light-ray geodesics (packet_solver(cfg.kind) must hold; the geodesic system in the

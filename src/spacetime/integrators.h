@@ -104,7 +104,7 @@ struct TransportRHS {
 /// scales s_i (as 1/s_i) so that the tolerance keeps its meaning in coordinates, D_i =
 /// eps_abs·s_i + eps_rel·|y0_i|; the driver then sets `inv` to the N values 1/D_i at the start
 /// of the step. The packet integrator runs the same norm on SIMD lanes (geodesic_packet.cpp
-/// LaneErrorNorm): any change here goes there too.
+/// error_scale_norm_lanes): any change here goes there too.
 struct ErrorScale {
   double eps_abs = 0, eps_rel = 0;
   const double* inv = nullptr;  ///< per-component 1/D_i, or null: D_i = eps_abs + eps_rel·|y0_i|
@@ -411,7 +411,8 @@ struct DormandPrince54Tableau {
 /// Hairer's DOP853 (HNW I §II.10; coefficients of dop853.f, Dormand & Prince 1981 8(7)13M
 /// re-optimized with a 5th- and 3rd-order embedded pair). 12 stages, 8th-order propagated.
 struct DOP853Tableau {
-  static constexpr int S = 12;
+  static constexpr int S = 12, kErrExp = 8;  ///< the combined estimate (DOP853) behaves like h⁸
+  static constexpr bool kFsal = false;
   static constexpr double c[12] = {0.0,
                                    0.526001519587677318785587544488e-01,
                                    0.789002279381515978178381316732e-01,
@@ -484,7 +485,7 @@ struct DOP853Tableau {
 struct DOP853 {
   using Tab = DOP853Tableau;
   static constexpr bool kHasErrorEstimate = true;
-  static constexpr int kErrExp = 8;
+  static constexpr int kErrExp = Tab::kErrExp;
   explicit DOP853(const SolverConfig&) {}
 
   template <int N, class F>
@@ -501,10 +502,15 @@ struct DOP853 {
       e5[i] = rk_detail::weighted<Tab, S, N, Tab::e5>(k, i);
       e3[i] = rk_detail::weighted<Tab, S, N, Tab::e3>(k, i);
     }
-    const double err5 = tol.norm<N>(e5, y), err3 = tol.norm<N>(e3, y);
-    const double deno = err5 * err5 + 0.01 * err3 * err3;
-    err = deno > 0 ? std::fabs(h) * err5 * err5 / std::sqrt(deno) : (deno == 0 ? 0.0 : deno);
+    err = combined_error(tol.norm<N>(e5, y), tol.norm<N>(e3, y), h);
     return false;
+  }
+  /// The combined estimate from the scaled norms of Σ e5_j k_j and Σ e3_j k_j (without the
+  /// factor h) and the step h; also the packet integrator's (geodesic_packet.cpp), for the same
+  /// bits.
+  static double combined_error(double err5, double err3, double h) {
+    const double deno = err5 * err5 + 0.01 * err3 * err3;
+    return deno > 0 ? std::fabs(h) * err5 * err5 / std::sqrt(deno) : (deno == 0 ? 0.0 : deno);
   }
   double next_step(double h, double err, bool accepted, bool after_reject) {
     return control.next(h, err, accepted, after_reject);

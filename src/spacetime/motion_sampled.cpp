@@ -36,15 +36,17 @@ void SampledMotion::set_nodes(std::vector<MotionNode> nodes) {
   nodes_ = std::move(nodes);
   samples_.clear();
   samples_.reserve(nodes_.size());
+  node_g_.resize(nodes_.size());
   x0_increasing_ = true;
   for (size_t i = 0; i < nodes_.size(); ++i) {
     const MotionNode& n = nodes_[i];
     samples_.push_back(MotionSample{n.tau, n.x, n.u, n.e});
+    metric_->metric_tensor(n.x, node_g_[i]);
     if (i > 0 && !(n.x[0] > nodes_[i - 1].x[0])) x0_increasing_ = false;
   }
 }
 
-size_t SampledMotion::interval(double tau) const {
+size_t SampledMotion::interval(double tau, size_t hint) const {
   const double lo = nodes_.front().tau, hi = nodes_.back().tau;
   const double slack = 1e-12 * std::max({1.0, std::fabs(lo), std::fabs(hi)});
   if (!(tau >= lo - slack && tau <= hi + slack))
@@ -52,6 +54,15 @@ size_t SampledMotion::interval(double tau) const {
                 " is outside the computed range [" + number_text(lo) + ", " + number_text(hi) +
                 "] (extend it with `forward`/`backward` or `maxnumpoints`)");
   if (nodes_.size() == 1) return 0;
+  // The binary search below gives the last i <= size − 2 with τ_i <= τ (0 below the first node);
+  // the hint and its neighbours first (a Newton step from a node often ends in the interval before).
+  const size_t last = nodes_.size() - 2;
+  auto holds = [&](size_t i) { return nodes_[i].tau <= tau && (i == last || tau < nodes_[i + 1].tau); };
+  if (hint <= last) {
+    if (holds(hint)) return hint;
+    if (hint > 0 && holds(hint - 1)) return hint - 1;
+    if (hint < last && holds(hint + 1)) return hint + 1;
+  }
   auto it =
       std::upper_bound(nodes_.begin(), nodes_.end(), tau, [](double t, const MotionNode& n) { return t < n.tau; });
   size_t i = static_cast<size_t>(it - nodes_.begin());
@@ -82,27 +93,45 @@ void SampledMotion::interpolate_x(size_t i, double tau, Vec4& x, Vec4& u) const 
 }
 
 MotionSample SampledMotion::at_proper_time(double tau) const {
-  const size_t i = interval(tau);
-  if (const MotionSample* node = node_at(i, tau)) return *node;
-  const MotionNode& a = nodes_[i];
-  const MotionNode& b = nodes_[i + 1];
-  MotionSample out;
-  out.tau = tau;
-  interpolate_x(i, tau, out.x, out.u);
+  WorldlineEvent ev;
+  event_at(tau, ev);
+  if (ev.node) return *ev.node;
+  return MotionSample{tau, ev.x, ev.e0, frame_at(ev)};
+}
+
+void SampledMotion::event_at(double tau, WorldlineEvent& ev) const {
+  const size_t i = interval(tau, ev.interval);
+  ev.tau = tau;
+  ev.interval = i;
+  ev.node = node_at(i, tau);
+  if (ev.node) {
+    ev.x = ev.node->x;
+    ev.e0 = ev.node->e[0];
+    ev.g = node_g_[static_cast<size_t>(ev.node - samples_.data())];
+    return;
+  }
+  // e_(0) is the normalized u(τ): the first Gram-Schmidt step of frame_at.
+  Vec4 u;
+  interpolate_x(i, tau, ev.x, u);
+  metric_->metric_tensor(ev.x, ev.g);
+  ev.e0 = unit_timelike(*metric_, ev.x, ev.g, u);
+}
+
+Tetrad SampledMotion::frame_at(const WorldlineEvent& ev) const {
+  if (ev.node) return ev.node->e;
+  const MotionNode& a = nodes_[ev.interval];
+  const MotionNode& b = nodes_[ev.interval + 1];
   // Cubic Hermite for the tetrad vectors (they satisfy a first-order ODE whose derivative is
-  // stored at the nodes).
+  // stored at the nodes), then Gram-Schmidt against g at x(τ) with e_(0) from the event.
   const double h = b.tau - a.tau;
-  const double s = (tau - a.tau) / h;
+  const double s = (ev.tau - a.tau) / h;
   const double s2 = s * s, s3 = s2 * s;
   const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
   Tetrad e{};
-  for (int c = 0; c < 4; ++c)
+  for (int c = 1; c < 4; ++c)
     for (int mu = 0; mu < 4; ++mu)
       e[c][mu] = h00 * a.e[c][mu] + h * h10 * a.de[c][mu] + h01 * b.e[c][mu] + h * h11 * b.de[c][mu];
-  e[0] = out.u;
-  out.e = gram_schmidt(*metric_, out.x, e);
-  out.u = out.e[0];
-  return out;
+  return gram_schmidt_after_e0(*metric_, ev.x, ev.g, ev.e0, e);
 }
 
 void SampledMotion::event_at_proper_time(double tau, Vec4& x, Vec4& u) const {
@@ -111,17 +140,11 @@ void SampledMotion::event_at_proper_time(double tau, Vec4& x, Vec4& u) const {
 }
 
 void SampledMotion::event_at_proper_time(double tau, Vec4& x, Vec4& u, Mat4& g) const {
-  const size_t i = interval(tau);
-  if (const MotionSample* node = node_at(i, tau)) {
-    x = node->x;
-    u = node->e[0];
-    metric_->metric_tensor(x, g);
-    return;
-  }
-  // As at_proper_time: e_(0) is the normalized u(τ) (the first Gram-Schmidt step).
-  interpolate_x(i, tau, x, u);
-  metric_->metric_tensor(x, g);
-  u = unit_timelike(*metric_, x, g, u);
+  WorldlineEvent ev;
+  event_at(tau, ev);
+  x = ev.x;
+  u = ev.e0;
+  g = ev.g;
 }
 
 double SampledMotion::proper_time_at_coordinate_time(double t) const {

@@ -23,12 +23,32 @@ struct MotionNode {
   Tetrad de{};  ///< de_(a)^μ/dτ
 };
 
+/// A worldline event of a sampled motion with what its frame is built from: a simultaneity search
+/// evaluates events, and the frame at the proper time it finds is completed from that event
+/// (SampledMotion::frame_at) instead of being interpolated again.
+struct WorldlineEvent {
+  double tau = 0;
+  Vec4 x{{0, 0, 0, 0}};
+  Vec4 e0{{0, 0, 0, 0}};  ///< e_(0) = u/√(−g(u, u))
+  Mat4 g{};               ///< metric tensor at x
+  /// Index i of the node interval [τ_i, τ_{i+1}] holding τ; the next look-up tries it first (a
+  /// Newton iteration stays in or near one interval).
+  size_t interval = 0;
+  const MotionSample* node = nullptr;  ///< the sample at τ when τ is a node (taken as computed)
+};
+
 class SampledMotion : public Motion {
  public:
   MotionSample at_proper_time(double tau) const override;
   void event_at_proper_time(double tau, Vec4& x, Vec4& u) const override;
   /// The same, and g: the metric tensor of metric() at x (computed anyway to normalize u).
   void event_at_proper_time(double tau, Vec4& x, Vec4& u, Mat4& g) const;
+  /// The event at τ (the values of event_at_proper_time); ev.interval on entry is the interval to
+  /// try first. At a node, g is the node's, computed once when the nodes were installed.
+  void event_at(double tau, WorldlineEvent& ev) const;
+  /// The tetrad at ev.tau from the event: at_proper_time(ev.tau).e bit for bit, without
+  /// interpolating x and u or evaluating g again.
+  Tetrad frame_at(const WorldlineEvent& ev) const;
   MotionSample at_coordinate_time(double t) const override;
   const std::vector<MotionSample>& samples() const override { return samples_; }
   const std::vector<MotionNode>& nodes() const { return nodes_; }
@@ -43,7 +63,8 @@ class SampledMotion : public Motion {
 
  private:
   /// Interval index i with nodes_[i].tau <= tau <= nodes_[i+1].tau; throws outside the range.
-  size_t interval(double tau) const;
+  /// `hint`: an index to try before the binary search (the same result either way).
+  size_t interval(double tau, size_t hint = 0) const;
   /// The sample at τ when τ is a node of interval i (or the only node), else null: nodes are
   /// returned as computed, not interpolated.
   const MotionSample* node_at(size_t i, double tau) const;
@@ -52,6 +73,7 @@ class SampledMotion : public Motion {
   std::shared_ptr<const Metric> metric_;
   std::vector<MotionNode> nodes_;
   std::vector<MotionSample> samples_;
+  std::vector<Mat4> node_g_;  ///< metric tensor at each node (simultaneity searches start at nodes)
   bool x0_increasing_ = true;
 };
 

@@ -10,8 +10,8 @@
 //
 // Bit-identical to the scalar path: every operator is one IEEE operation per lane (Highway's
 // Mul, Add, Div, Sqrt; no fused multiply-add: files that include this header are compiled with
-// -ffp-contract=off, CMakeLists.txt), and sin/cos are fast_math.h's polynomial, the same template
-// (sincos_reduced.h), so a formula written once as a template gives
+// -ffp-contract=off, CMakeLists.txt), and sin/cos and exp are fast_math.h's polynomials, the same
+// templates (sincos_reduced.h, exp_reduced.h), so a formula written once as a template gives
 // the same bits per lane as on doubles.
 #if defined(GEOVIS_SPACETIME_SIMD_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef GEOVIS_SPACETIME_SIMD_H_
@@ -121,6 +121,26 @@ HWY_API SimdD cos(SimdD x) {
   SimdD s, c;
   sincos_t(x, s, c);
   return c;
+}
+
+#include "spacetime/exp_reduced.h"  // exp_reduced: this target's copy
+
+/// fast_exp (fast_math.h) lane by lane: the same reduction and polynomial (exp_reduced) and the
+/// same exact scaling by 2^n (the exponent bits n + 1023), so each lane equals fast_exp of that
+/// lane to the bit. Lanes outside |x| < 708 (and NaN) take fast_exp's own route through std::exp.
+HWY_API SimdD exp_t(SimdD x) {
+  const SimdTag d;
+  if (HWY_UNLIKELY(!hn::AllTrue(d, hn::Lt(hn::Abs(x.v), hn::Set(d, 708.0))))) {
+    HWY_ALIGN double xs[HWY_MAX_BYTES / sizeof(double)];
+    hn::Store(x.v, d, xs);
+    for (size_t i = 0; i < hn::Lanes(d); ++i) xs[i] = fast_exp(xs[i]);
+    return SimdD(hn::Load(d, xs));
+  }
+  SimdD n, er;
+  exp_reduced(x, n, er);
+  const hn::RebindToSigned<SimdTag> di;
+  const auto bits = hn::ShiftLeft<52>(hn::Add(hn::ConvertTo(di, n.v), hn::Set(di, 1023)));
+  return er * SimdD(hn::BitCast(d, bits));
 }
 
 /// A metric's acceleration template a = accel(x, k) (Vec4T<SimdD>) on a packet of `stride` lanes

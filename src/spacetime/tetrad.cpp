@@ -90,8 +90,12 @@ Vec4 unit_timelike(const Metric& m, const Vec4& x, const Mat4& g, const Vec4& v)
 Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v) {
   Mat4 g;
   m.metric_tensor(x, g);
+  return gram_schmidt_after_e0(m, x, g, unit_timelike(m, x, g, v[0]), v);
+}
+
+Tetrad gram_schmidt_after_e0(const Metric& m, const Vec4& x, const Mat4& g, const Vec4& e0, const Tetrad& v) {
   Tetrad e{};
-  e[0] = unit_timelike(m, x, g, v[0]);
+  e[0] = e0;
   for (int i = 1; i < 4; ++i) {
     Vec4 w = v[i];
     const double scale = abs_quadratic_form(g, v[i]);

@@ -43,6 +43,10 @@ Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v);
 /// The first step of gram_schmidt alone: v/√(−g(v,v)) with g the metric tensor of m at x (throws
 /// Error as gram_schmidt does when v is not timelike).
 Vec4 unit_timelike(const Metric& m, const Vec4& x, const Mat4& g, const Vec4& v);
+/// The remaining steps of gram_schmidt: e_(1..3) from v_1..v_3, given g (the metric tensor of m at
+/// x) and e0 = unit_timelike(m, x, g, v_0) — the frame gram_schmidt(m, x, v) gives, bit for bit,
+/// for a caller that has g and e_(0) already (a moving frame whose event was found first).
+Tetrad gram_schmidt_after_e0(const Metric& m, const Vec4& x, const Mat4& g, const Vec4& e0, const Tetrad& v);
 
 /// e_(a) = Σ_b c[a][b] ê_(b): a tetrad given relative to the frame `base` (GeoViS `incoords #f`).
 Tetrad tetrad_from_local(const Tetrad& base, const Tetrad& c);

@@ -242,6 +242,98 @@ TEST(ObjLocal, PassesOutsideExactlyWhereTheMappedSegmentMissesTheBall) {
   }
 }
 
+TEST(ObjLocal, FrameFromTheSearchedEventIsTheFrameAtItsProperTime) {
+  // intersect_piece completes the frame from the event the cull evaluated (state(ev)): it must be
+  // state(τ) bit for bit, at nodes and between them.
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  const LocalFrame frame(m, make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()));
+  for (double tau : {-3.21, 0.0, 0.05, 9.5, frame.motion()->samples()[150].tau}) {
+    const LocalFrame::State direct = frame.state(tau);
+    WorldlineEvent ev;
+    frame.event(tau, ev);
+    const LocalFrame::State from_event = frame.state(ev);
+    EXPECT_EQ(from_event.tau, direct.tau);
+    for (int a = 0; a < 4; ++a) {
+      EXPECT_EQ(from_event.x[a], direct.x[a]) << tau;
+      for (int b = 0; b < 4; ++b) {
+        EXPECT_EQ(from_event.e[a][b], direct.e[a][b]) << tau;
+        EXPECT_EQ(from_event.g[a][b], direct.g[a][b]) << tau;
+      }
+    }
+  }
+}
+
+TEST(ObjLocal, DeltaWrapsTheAzimuthAsRemainder) {
+  // LocalFrame::delta skips std::remainder for |Δφ| <= π, where it returns Δφ itself; across and
+  // at the boundary the results must be remainder's bit for bit.
+  constexpr double kPi = 3.14159265358979323846;
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  const LocalFrame frame(m, make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()));
+  for (double dphi : {0.0, -0.0, 1e-300, 1.0, -2.5, kPi, -kPi, std::nextafter(kPi, 4.0), std::nextafter(-kPi, -4.0),
+                      std::nextafter(kPi, 0.0), 3 * kPi, -3 * kPi, 4.0, -4.0, 7.0, 1e6, -1e6}) {
+    const Vec4 x{{1.0, 7.0, 1.5, 0.25 + dphi}}, y{{0.5, 6.0, 1.4, 0.25}};
+    const double expected = std::remainder(x[3] - y[3], 2 * kPi);
+    const Vec4 d = frame.delta(x, y);
+    EXPECT_EQ(d[3], expected) << dphi;
+    EXPECT_EQ(std::signbit(d[3]), std::signbit(expected)) << dphi;
+    EXPECT_EQ(d[0], x[0] - y[0]);
+    EXPECT_EQ(d[1], x[1] - y[1]);
+  }
+}
+
+TEST(ObjLocal, OuterRadiusHoldsTheObject) {
+  // A local object's bounding sphere (the world tube's radius and the cull's) is its child's
+  // outer_radius: an ellipsoid's own |c| + largest semi-axis, not its box's corner; a compound's
+  // largest child's.
+  const Ellipsoid e(Vec3{1, 2, 2}, Vec3{0.5, 2, 1});
+  EXPECT_DOUBLE_EQ(e.outer_radius(), 3 + 2);
+  const Ellipsoid along(Vec3{0, 4, 0}, Vec3{0.5, 2, 1});  // centre on the long axis: |p| reaches 6
+  EXPECT_DOUBLE_EQ(along.outer_radius(), 4 + 2);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> nd;
+  for (const Ellipsoid* el : {&e, &along}) {
+    double farthest = 0;
+    for (int k = 0; k < 20000; ++k) {
+      const Vec3 n = normalize(Vec3{nd(rng), nd(rng), nd(rng)});
+      farthest = std::max(farthest, norm(el->center + Vec3{el->axlen.x * n.x, el->axlen.y * n.y, el->axlen.z * n.z}));
+    }
+    EXPECT_LE(farthest, el->outer_radius());
+    if (el == &along) EXPECT_GT(farthest, 0.999 * el->outer_radius());
+  }
+  const Ellipsoid ball(Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0.5});
+  EXPECT_DOUBLE_EQ(ball.outer_radius(), 0.5);  // its box's corner: 0.866
+  const CompoundObject both({std::make_shared<Ellipsoid>(e), std::make_shared<Ellipsoid>(ball)});
+  EXPECT_DOUBLE_EQ(both.outer_radius(), 5);
+}
+
+TEST(ObjLocal, EveryPointOfABodyOnAnOrbitIsFoundThroughItsWorldTube) {
+  // The world tube (boxes of pseudo-Cartesian radius ‖J E‖·R about the sampled worldline, the
+  // shell about them, the bounding-sphere cull) must hold the whole body: a short segment across
+  // the surface of a ball of radius 0.5 at a random event of the orbit at r = 6M of paper §3,
+  // from |X| = 0.45 to 0.55 along a random direction of the frame at τ, is hit on the surface.
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  const LocalFrame frame(m, make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()));
+  const LocalObject obj(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0.5}), frame);
+  EXPECT_DOUBLE_EQ(obj.local_radius(), 0.5);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> ut(-9, 69);
+  std::normal_distribution<double> nd;
+  for (int k = 0; k < 400; ++k) {
+    const LocalFrame::State st = frame.state(ut(rng));
+    const Vec3 n = normalize(Vec3{nd(rng), nd(rng), nd(rng)});
+    Segment seg;
+    seg.x0 = st.x + 0.45 * (n.x * st.e[1] + n.y * st.e[2] + n.z * st.e[3]);
+    seg.x1 = st.x + 0.55 * (n.x * st.e[1] + n.y * st.e[2] + n.z * st.e[3]);
+    seg.chart0 = m->to_pseudo_cartesian(seg.x0, seg.p0);
+    seg.chart1 = m->to_pseudo_cartesian(seg.x1, seg.p1);
+    seg.metric = m.get();
+    Hit hit;
+    ASSERT_TRUE(obj.intersect(seg, hit)) << k << " tau " << st.tau;
+    EXPECT_NEAR(norm(hit.point), 0.5, 1e-9) << k;
+    EXPECT_NEAR(hit.s, 0.5, 1e-6) << k;
+  }
+}
+
 TEST(ObjLocal, FactoryLocalCompObjectAndMovingPrimitive) {
   BuildContext ctx;
   ctx.metric = minkowski();

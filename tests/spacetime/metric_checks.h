@@ -45,11 +45,11 @@ inline double expect_christoffel_matches_ad(const Metric& m, const Vec4& x, doub
 }
 
 /// The acceleration the integrator uses (first derivative handed to the step callback) equals
-/// −Γ^μ_ab k^a k^b with the AD symbols, relative to Σ_ab |Γ^μ_ab k^a k^b| (the rounding scale of
-/// the sum), with a floor of floor_frac times the largest of these sums over μ for components that
-/// vanish analytically. Returns the worst ratio.
-inline double expect_accel_matches_ad(const Metric& m, const Vec4& x, const Vec4& k, double rel = 1e-10,
-                                      double floor_frac = 0.0) {
+/// −Γ^μ_ab k^a k^b with the symbols G (what = their source, for messages), relative to
+/// Σ_ab |Γ^μ_ab k^a k^b| (the rounding scale of the sum), with a floor of floor_frac times the
+/// largest of these sums over μ for components that vanish analytically. Returns the worst ratio.
+inline double expect_accel_matches_symbols(const Metric& m, const Vec4& x, const Vec4& k, const Christoffel& G,
+                                           const char* what, double rel, double floor_frac) {
   double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
   SolverConfig cfg;
   cfg.kind = SolverKind::RK4;
@@ -66,8 +66,6 @@ inline double expect_accel_matches_ad(const Metric& m, const Vec4& x, const Vec4
     return StepAction::Stop;
   };
   m.integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
-  Christoffel G;
-  m.christoffel_ad(x, G);
   double scale = 0;  // the largest Σ_ab |Γ^μ_ab k^a k^b| over μ
   for (int mu = 0; mu < 4; ++mu) {
     double sabs = 0;
@@ -86,9 +84,17 @@ inline double expect_accel_matches_ad(const Metric& m, const Vec4& x, const Vec4
     const double ref = std::max({sabs, floor_frac * scale, 1e-300});
     const double d = std::fabs(acc[mu] + s);
     worst = std::max(worst, d / ref);
-    EXPECT_LE(d, rel * ref) << m.name() << " accel^" << mu << ": integrator " << acc[mu] << " AD " << -s;
+    EXPECT_LE(d, rel * ref) << m.name() << " accel^" << mu << ": integrator " << acc[mu] << " " << what << " " << -s;
   }
   return worst;
+}
+
+/// expect_accel_matches_symbols with the AD symbols.
+inline double expect_accel_matches_ad(const Metric& m, const Vec4& x, const Vec4& k, double rel = 1e-10,
+                                      double floor_frac = 0.0) {
+  Christoffel G;
+  m.christoffel_ad(x, G);
+  return expect_accel_matches_symbols(m, x, k, G, "AD", rel, floor_frac);
 }
 
 /// The one tolerance rule of the tests generated from the registry (test_metrics_registry.cpp,

@@ -1,4 +1,5 @@
-// fast_sincos (spacetime/fast_math.h) against glibc's correctly rounded sin/cos.
+// fast_sincos and fast_exp (spacetime/fast_math.h) against glibc's sin/cos (correctly rounded) and
+// exp (glibc 2.28+: < 1 ulp, correctly rounded in all but rare cases).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -71,6 +72,40 @@ TEST(FastMath, LargeAndNonFiniteArgumentsFallBackToLibm) {
   EXPECT_TRUE(std::isnan(s) && std::isnan(c));
   fast_sincos(std::numeric_limits<double>::infinity(), s, c);
   EXPECT_TRUE(std::isnan(s) && std::isnan(c));
+}
+
+// fast_exp within one ulp of glibc's exp: on the range of the scale factors e^{Ht} of the
+// expanding metrics (|Ht| of order 1), the whole range of its polynomial path |x| < 708, tiny
+// arguments, and about the reduction's interval edges (k + 1/2)·ln 2 and the multiples k·ln 2
+// (where e^x is a power of two); exactly 1 at ±0.
+TEST(FastMath, ExpWithinOneUlpOfLibm) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> moderate(-5.0, 5.0), wide(-707.9, 707.9), tiny(-1e-8, 1e-8);
+  double worst = 0;
+  auto check_exp = [&](double x) { worst = std::max(worst, ulps(fast_exp(x), std::exp(x))); };
+  for (int i = 0; i < 300000; ++i) {
+    check_exp(moderate(rng));
+    check_exp(wide(rng));
+    check_exp(tiny(rng));
+  }
+  for (int k = -1020; k <= 1020; ++k)
+    for (int j = -20; j <= 20; ++j) {
+      const double a = k * 0.6931471805599453, b = (k + 0.5) * 0.6931471805599453;
+      check_exp(a + j * 1e-16 * std::max(1.0, std::fabs(a)));
+      check_exp(b + j * 1e-16 * std::max(1.0, std::fabs(b)));
+    }
+  EXPECT_LE(worst, 1.0);
+  RecordProperty("worst_ulps", std::to_string(worst));
+  std::printf("fast_exp worst error: %.3f ulp\n", worst);
+  EXPECT_EQ(fast_exp(0.0), 1.0);
+  EXPECT_EQ(fast_exp(-0.0), 1.0);
+}
+
+TEST(FastMath, ExpOutsideThePolynomialRangeIsLibm) {
+  for (double x : {708.0, 709.5, -708.0, -745.0, -800.0, 1e300, -1e300}) EXPECT_EQ(fast_exp(x), std::exp(x)) << x;
+  EXPECT_EQ(fast_exp(std::numeric_limits<double>::infinity()), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(fast_exp(-std::numeric_limits<double>::infinity()), 0.0);
+  EXPECT_TRUE(std::isnan(fast_exp(std::numeric_limits<double>::quiet_NaN())));
 }
 
 TEST(FastMath, StepControllerRootsMatchPow) {

@@ -1,7 +1,7 @@
 // The packet integrator (spacetime/geodesic_packet.h) against the scalar one (Metric::integrate,
 // CashKarp45, separable equations off), on every SIMD target this machine runs (Highway's
 // SupportedAndGeneratedTargets: AVX-512, AVX2, SSE4, scalar emulation), and SimdD's sine and
-// cosine (spacetime/simd.h) against fast_sincos.
+// cosine and exponential (spacetime/simd.h) against fast_sincos and fast_exp.
 //
 // Bit identity is the expectation everywhere here: the packet's right-hand side is each metric's
 // own scalar geodesic_acceleration, called lane by lane (MetricKernel::of), or a template of the
@@ -18,7 +18,7 @@
 
 #include "spacetime/simd.h"
 
-// SimdD's sin/cos on a batch of arguments, compiled per target.
+// SimdD's sin/cos and exp on a batch of arguments, compiled per target.
 HWY_BEFORE_NAMESPACE();
 namespace geovis {
 namespace HWY_NAMESPACE {
@@ -31,6 +31,10 @@ void simd_sincos(const double* x, double* s, double* c, size_t n) {
     cv.store(c + i);
   }
 }
+void simd_exp(const double* x, double* e, size_t n) {
+  const size_t L = SimdD::lanes();
+  for (size_t i = 0; i + L <= n; i += L) exp_t(SimdD::load(x + i)).store(e + i);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -41,6 +45,7 @@ HWY_AFTER_NAMESPACE();
 #include <cmath>
 #include <array>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +57,7 @@ HWY_AFTER_NAMESPACE();
 
 namespace geovis {
 HWY_EXPORT(simd_sincos);
+HWY_EXPORT(simd_exp);
 }
 
 using namespace geovis;
@@ -169,9 +175,10 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
   }
 }
 
-/// Start states: the sample position and a fan of null directions of the default tetrad.
-std::vector<std::array<double, 8>> fan(const Metric& m, int n) {
-  const Vec4 x = m.info().sample_pos;
+/// Start states: position x (default: the sample position) and a fan of null directions of the
+/// default tetrad.
+std::vector<std::array<double, 8>> fan(const Metric& m, int n, std::optional<Vec4> at = {}) {
+  const Vec4 x = at.value_or(m.info().sample_pos);
   const Tetrad e = m.natural_tetrad(x, TetradKind::Default);
   std::vector<std::array<double, 8>> y;
   for (int i = 0; i < n; ++i) {
@@ -207,13 +214,14 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
 
 // (a) Every metric of the registry: 11 rays (one full packet and a refill) from the sample
 // position, bit-identical to the scalar integrator on every target, with each tableau the packets
-// serve (Cash–Karp; Fehlberg, GeoViS's GSL_RK_Fehlberg; Dormand–Prince 5(4), first-same-as-last);
-// KerrBL and Schwarzschild also through Carter's separated equations in Mino time (kerr_mino.h),
+// serve (Cash–Karp; Fehlberg, GeoViS's GSL_RK_Fehlberg; Dormand–Prince 5(4), first-same-as-last;
+// DOP853, 12 stages and the combined norm of two error estimates); KerrBL and Schwarzschild also through Carter's separated equations in Mino time (kerr_mino.h),
 // their default.
 TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
   const auto m = make_metric(GetParam());
   const auto y0 = fan(*m, 11);
-  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54}) {
+  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54,
+                                SolverKind::DormandPrince853}) {
     SCOPED_TRACE(solver_kind_name(kind));
     SolverConfig cfg = packet_config();
     cfg.kind = kind;
@@ -227,6 +235,40 @@ TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, PacketEveryMetric, ::testing::ValuesIn(metric_names()), test_name);
+
+// KastorTraschen in an expanding universe (H ≠ 0; the registry's default is H = 0, where the
+// scale factor e^{Ht} is 1): its SIMD acceleration evaluates e^{Ht} with fast_exp's SIMD twin on
+// each lane, as kastorTraschen.scm (H = 0.02, observer at t = −20).
+TEST(GeodesicPacket, KastorTraschenExpandingSameBitsAsScalar) {
+  const auto m = make_metric("KastorTraschen", {{"h", 0.02}, {"z1", 4.0}, {"z2", -4.0}});
+  SolverConfig cfg = packet_config();
+  cfg.escape_radius = 1e300;
+  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54,
+                                SolverKind::DormandPrince853}) {
+    SCOPED_TRACE(solver_kind_name(kind));
+    cfg.kind = kind;
+    for_every_target([&] { expect_packet_equals_scalar(*m, cfg, fan(*m, 13, Vec4{{-20.0, 10.0, 0.5, 1.0}})); });
+  }
+}
+
+// DOP853 as the Gyoto comparison scene runs it (bench/gyoto: KerrBL a = 0.9 seen from r = 100,
+// eps_abs = eps_rel = 1e-6, so the tolerance scales with |y|), through Carter's separated
+// equations (their per-component scales, ErrorScale::inv) and in coordinates.
+TEST(GeodesicPacket, Dop853WithRelativeToleranceAsTheGyotoScene) {
+  const auto m = make_metric("KerrBL", {{"mass", 1.0}, {"angmom", 0.9}});
+  SolverConfig cfg = packet_config();
+  cfg.kind = SolverKind::DormandPrince853;
+  cfg.eps_rel = 1e-6;
+  cfg.max_steps = 400;
+  cfg.lambda_max = 1e300;
+  cfg.escape_radius = 1e300;
+  const auto y0 = fan(*m, 13, Vec4{{0.0, 100.0, 85.0 * M_PI / 180, 0.0}});
+  for (const bool separable : {true, false}) {
+    SCOPED_TRACE(separable ? "Mino time" : "coordinate form");
+    cfg.separable = separable;
+    for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0); });
+  }
+}
 
 // (b) Lane refill: many more rays than lanes, of very different lengths (captured within a few
 // steps, escaping, stopped by the callback at various steps, running to max_steps), each equal to
@@ -293,7 +335,7 @@ TEST(GeodesicPacket, FixedStepLambdaMaxAndBox) {
 TEST(GeodesicPacket, RejectsOtherSolvers) {
   const auto m = make_metric("Minkowski");
   SolverConfig cfg = packet_config();
-  cfg.kind = SolverKind::DormandPrince853;
+  cfg.kind = SolverKind::BulirschStoer;
   auto next = [](int, double*) { return false; };
   auto done = [](int, const double*, const GeodesicResult&) {};
   EXPECT_THROW(m->integrate_packet(cfg, PacketRays{next, {}, done}), Error);
@@ -314,6 +356,25 @@ TEST(Simd, SinCosIsFastSinCosLaneByLane) {
       fast_sincos(x[i], fs, fc);
       ASSERT_TRUE(same_bits(s[i], fs) || (std::isnan(s[i]) && std::isnan(fs))) << x[i];
       ASSERT_TRUE(same_bits(c[i], fc) || (std::isnan(c[i]) && std::isnan(fc))) << x[i];
+    }
+  });
+}
+
+// SimdD's exp_t is fast_exp lane by lane, to the bit, on every target, including the std::exp
+// route outside |x| < 708 (overflow, underflow, ±∞, NaN) in some lanes of a vector.
+TEST(Simd, ExpIsFastExpLaneByLane) {
+  std::vector<double> x;
+  for (int i = -3000; i < 3000; ++i) x.push_back(i * 0.0234567891);
+  for (int i = -700; i <= 700; i += 7) x.push_back(i + 0.25);
+  for (double v : {0.0, -0.0, 707.9, 708.0, -708.0, 710.0, -750.0, double(NAN), double(INFINITY), -double(INFINITY)})
+    x.push_back(v);
+  while (x.size() % 8) x.push_back(0.5);
+  std::vector<double> e(x.size());
+  for_every_target([&] {
+    HWY_DYNAMIC_DISPATCH(simd_exp)(x.data(), e.data(), x.size());
+    for (size_t i = 0; i < x.size(); ++i) {
+      const double f = fast_exp(x[i]);
+      ASSERT_TRUE(same_bits(e[i], f) || (std::isnan(e[i]) && std::isnan(f))) << x[i];
     }
   });
 }

@@ -128,6 +128,11 @@ TEST(MetricsOther, ClosedChristoffelAndAccelMatchAD) {
       worst_G = std::max(worst_G, mc::expect_christoffel_matches_ad(*m, s.x));
       const Vec4 k{{1.0 + uni(rng, 0, 0.5), uni(rng, -1, 1), uni(rng, -1, 1), uni(rng, -1, 1)}};
       worst_a = std::max(worst_a, mc::expect_accel_matches_ad(*m, s.x, k));
+      // and the closed-form symbols, of which a hand-written acceleration (KastorTraschen's,
+      // MorrisThorne's) is the contraction.
+      Christoffel G;
+      m->christoffel(s.x, G);
+      mc::expect_accel_matches_symbols(*m, s.x, k, G, "closed", 1e-10, 0.0);
     }
     std::printf("%-22s worst relative |Gamma_closed - Gamma_AD| = %.3g, |accel + Gamma_AD k k| = %.3g\n",
                 c.name.c_str(), worst_G, worst_a);

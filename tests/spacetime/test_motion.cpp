@@ -15,6 +15,7 @@
 #include "spacetime/motion_const_velocity.h"
 #include "spacetime/motion_factory.h"
 #include "spacetime/motion_geodesic.h"
+#include "spacetime/motion_sampled.h"
 #include "spacetime/tetrad.h"
 #include "support/paper_orbit.h"
 
@@ -124,6 +125,38 @@ TEST(Motion, EventAtProperTimeIsTheFullSampleWithoutItsAxes) {
   Vec4 x, u;
   EXPECT_NE(error_of([&] { motion->event_at_proper_time(80.0, x, u); }).find("outside the computed range"),
             std::string::npos);
+}
+
+TEST(Motion, FrameCompletedFromTheEventIsTheFullSample) {
+  // A simultaneity search evaluates events (event_at) and completes the frame at the τ it finds
+  // from the last one (frame_at): the tetrad must be at_proper_time's bit for bit, and the node
+  // interval tried first (the hint) must not change the event, right or wrong.
+  std::shared_ptr<const Metric> m = make_metric("Schwarzschild");
+  const MotionPtr motion = make_motion(paper_orbit_params(), m, paper_solver());
+  const auto& sampled = static_cast<const SampledMotion&>(*motion);
+  const size_t last = sampled.nodes().size() - 1;
+  for (double tau : {-10.0, -3.21, 0.0, 0.05, 17.777, motion->samples()[400].tau, 69.99, 70.0}) {
+    const MotionSample full = motion->at_proper_time(tau);
+    for (size_t hint : {size_t{0}, size_t{1}, size_t{399}, size_t{400}, last - 1, last, last + 5}) {
+      WorldlineEvent ev;
+      ev.interval = hint;
+      sampled.event_at(tau, ev);
+      EXPECT_EQ(ev.tau, tau);
+      EXPECT_LE(sampled.nodes()[ev.interval].tau, tau);
+      EXPECT_LE(tau, sampled.nodes()[ev.interval + 1].tau);
+      Mat4 g;
+      m->metric_tensor(ev.x, g);
+      const Tetrad e = sampled.frame_at(ev);
+      for (int mu = 0; mu < 4; ++mu) {
+        EXPECT_EQ(ev.x[mu], full.x[mu]) << tau << " hint " << hint;
+        EXPECT_EQ(ev.e0[mu], full.e[0][mu]) << tau << " hint " << hint;
+        for (int nu = 0; nu < 4; ++nu) {
+          EXPECT_EQ(ev.g[mu][nu], g[mu][nu]) << tau << " hint " << hint;  // a node's stored g too
+          EXPECT_EQ(e[mu][nu], full.e[mu][nu]) << tau << " hint " << hint;
+        }
+      }
+    }
+  }
 }
 
 TEST(Motion, RadialFreeFallSchwarzschild) {

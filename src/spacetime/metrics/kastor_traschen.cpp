@@ -11,12 +11,37 @@
 //   Γ^i_tt = −Ω_i/(Ω⁵a²),  Γ^i_ti = Ω_t/Ω + H,  Γ^i_ii = Ω_i/Ω,  Γ^i_ij = Ω_j/Ω,  Γ^i_jj = −Ω_i/Ω
 // (the same as Motion4D's MetricKastorTraschen::calculateChristoffels).
 // Natural tetrad (default = static): e_(0) = Ω ∂_t, e_(i) = ∂_i/(aΩ).
+//
+// The acceleration is also compiled per SIMD target for packets of rays (Highway's foreach_target
+// includes this file once per target; the class is compiled once, the per-target part is
+// kastor_traschen_packet_acceleration below). Every evaluation of a = e^{Ht} is fast_exp
+// (fast_math.h), whose SIMD twin gives the same bits on each lane, where glibc's exp has none.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/metrics/kastor_traschen.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+#ifndef GEOVIS_METRICS_KASTOR_TRASCHEN_ONCE_
+#define GEOVIS_METRICS_KASTOR_TRASCHEN_ONCE_
 #include <cmath>
 #include <sstream>
 
 #include "spacetime/metric_crtp.h"
 
 namespace geovis {
+
+/// The parameters the acceleration template (kastor_traschen_accel.h) reads.
+struct KastorTraschenParams {
+  double h = 0, m1 = 1, m2 = 1, z1 = 1, z2 = -1;
+};
+
+namespace scalar {
+#include "spacetime/metrics/kastor_traschen_accel.h"
+}  // namespace scalar
 
 class KastorTraschen final : public MetricCRTP<KastorTraschen> {
  public:
@@ -39,11 +64,10 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
 
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::exp;
     using std::sqrt;
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T a = exp(h_ * x[0]);
+    const T a = exp_t(h_ * x[0]);
     const T d1 = x[3] - z1_, d2 = x[3] - z2_;
     const T rho2 = x[1] * x[1] + x[2] * x[2];
     const T r1 = sqrt(rho2 + d1 * d1), r2 = sqrt(rho2 + d2 * d2);
@@ -57,7 +81,7 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
     G = Christoffel{};
-    const double a = std::exp(h_ * x[0]);
+    const double a = fast_exp(h_ * x[0]);
     const double d1 = x[3] - z1_, d2 = x[3] - z2_;
     const double rho2 = x[1] * x[1] + x[2] * x[2];
     const double r1 = std::sqrt(rho2 + d1 * d1), r2 = std::sqrt(rho2 + d2 * d2);
@@ -88,6 +112,11 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
     }
   }
 
+  /// −Γ^μ_{ab} k^a k^b with the symbols above contracted (kastor_traschen_accel.h).
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::kastor_traschen_accel(prm_, x, k, a); }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD.
+  void packet_acceleration_simd(const double* y, double* a) const;
+
   /// Stops at the black holes, with Motion4D's relative margin 1e-6 about the points r_i = 0, and
   /// where the squared redshift factor −g_tt = 1/Ω² falls below horizon_eps (Metric::horizon_eps;
   /// Motion4D has no such condition). The degenerate horizon of hole i is where a r_i → 0 (Ω → ∞,
@@ -107,7 +136,7 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
     if (m1_ > 0 && !(q1 > r_break1_ * r_break1_)) return false;
     if (m2_ > 0 && !(q2 > r_break2_ * r_break2_)) return false;
     const double sum = (m1_ > 0 ? m1_ / std::sqrt(q1) : 0.0) + (m2_ > 0 ? m2_ / std::sqrt(q2) : 0.0);
-    const double Om = 1.0 + sum / std::exp(h_ * x[0]);
+    const double Om = 1.0 + sum / fast_exp(h_ * x[0]);
     return 1.0 / (Om * Om) > horizon_eps_;
   }
 
@@ -119,7 +148,7 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
          << "): on a black hole (r1 or r2 = 0)";
       throw Error(os.str());
     }
-    const double a = std::exp(h_ * x[0]);
+    const double a = fast_exp(h_ * x[0]);
     const double d1 = x[3] - z1_, d2 = x[3] - z2_;
     const double rho2 = x[1] * x[1] + x[2] * x[2];
     const double Om = 1.0 + (m1_ / std::sqrt(rho2 + d1 * d1) + m2_ / std::sqrt(rho2 + d2 * d2)) / a;
@@ -138,12 +167,38 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
     z2_ = p(4);
     r_break1_ = 1e-6 * m1_;
     r_break2_ = 1e-6 * m2_;
+    prm_ = {h_, m1_, m2_, z1_, z2_};
   }
 
  private:
   double h_ = 0, m1_ = 1, m2_ = 1, z1_ = 1, z2_ = -1, r_break1_ = 0, r_break2_ = 0;
+  KastorTraschenParams prm_;
 };
 
 std::unique_ptr<Metric> make_metric_KastorTraschen() { return std::make_unique<KastorTraschen>(); }
 
 }  // namespace geovis
+#endif  // GEOVIS_METRICS_KASTOR_TRASCHEN_ONCE_
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+#include "spacetime/metrics/kastor_traschen_accel.h"
+
+void kastor_traschen_packet_acceleration(const KastorTraschenParams& p, const double* y, double* a) {
+  packet_acceleration_simd(
+      [&p](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { kastor_traschen_accel(p, x, k, acc); },
+      y, a, kPacketLanes);
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace geovis {
+HWY_EXPORT(kastor_traschen_packet_acceleration);
+void KastorTraschen::packet_acceleration_simd(const double* y, double* a) const {
+  HWY_DYNAMIC_DISPATCH(kastor_traschen_packet_acceleration)(prm_, y, a);
+}
+}  // namespace geovis
+#endif
