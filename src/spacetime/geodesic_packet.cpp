@@ -1,6 +1,7 @@
-// The packet integrator (geodesic_packet.h). The Runge–Kutta attempt (rk_attempt) and the Mino-time
-// right-hand side are compiled once per SIMD instruction set by Highway's foreach_target (this
-// file includes itself per target); the per-lane step control and stop logic is compiled once
+// The packet integrator (geodesic_packet.h). The Runge–Kutta attempt with its error norm and
+// controller root (rk_attempt, mino_attempt), the Mino-time right-hand side and tolerance scales
+// are compiled once per SIMD instruction set by Highway's foreach_target (this file includes
+// itself per target); the per-lane step control and stop logic is compiled once
 // (the HWY_ONCE part), as one driver over the system (integrate_lanes): the geodesic system in
 // the metric's coordinates (CoordinatePacket) or Carter's separated equations in Mino time
 // (MinoPacket, kerr_mino.h).
@@ -18,6 +19,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <type_traits>
 
@@ -40,10 +42,27 @@ inline void packet_rhs(const MetricKernel& m, const double* y, double* dy, unsig
 }
 
 /// The constants of the rays in a packet's lanes (KerrMinoCoeffs, one row per coefficient; the
-/// pole ζ is measured from; axis: all bits set where L = 0), for the SIMD right-hand side.
+/// pole ζ is measured from; axis: all bits set where L = 0; the floor of sin²θ in the tolerance
+/// scales), for the SIMD right-hand side and tolerance scales.
 struct MinoLaneCoeffs {
-  enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, POLE, AXIS, kRows };
+  enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, POLE, AXIS, SIN2_FLOOR, kRows };
   alignas(64) double v[kRows][kPacketLanes] = {};
+};
+
+/// The error tolerance of a packet's lanes (ErrorScale): eps_abs, eps_rel and, for a system with
+/// tolerance scales of its own, the 1/D_i of every lane (N rows of kPacketLanes, SoA; else null).
+struct LaneTolerance {
+  double eps_abs, eps_rel;
+  const double* inv;
+};
+
+/// What the step control needs of an attempt besides y1, for every lane: the scaled error norm
+/// (ErrorScale::norm), its root err^(1/q̂) for the step controller (StepController::next_with_root;
+/// meaningful only where err > 0 is finite) and whether y1 is finite (bit l: lane l).
+struct AttemptError {
+  alignas(64) double err[kPacketLanes];
+  alignas(64) double root[kPacketLanes];
+  unsigned finite;
 };
 
 /// Calls f.template operator()<Tab>() with the tableau of solver `kind` (one of those
@@ -65,15 +84,6 @@ constexpr bool kCombinedEstimate = requires {
   Tab::e5;
   Tab::e3;
 };
-
-/// The scaled error of a step of size h from its estimate(s) at the start state y0: the stepper's
-/// own norm, ExplicitRK's ErrorScale::norm of e = h·Σ e_j k_j, or DOP853's combined norm of
-/// e = Σ e5_j k_j and e3 = Σ e3_j k_j (DOP853::combined_error).
-template <class Tab, int N>
-double step_error_norm(const ErrorScale& tol, const double* e, const double* e3, const double* y0, double h) {
-  if constexpr (kCombinedEstimate<Tab>) return DOP853::combined_error(tol.norm<N>(e, y0), tol.norm<N>(e3, y0), h);
-  return tol.norm<N>(e, y0);
-}
 
 }  // namespace
 }  // namespace geovis
@@ -151,13 +161,115 @@ HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* 
   if constexpr (Tab::kFsal) std::memcpy(dy1, k[S - 1], sizeof k[S - 1]);
 }
 
+/// ErrorScale::norm of the estimate e on every lane: max_i |e_i|/D_i and NaN where an e_i is NaN,
+/// with the same operations per lane as the scalar stepper (std::max(m, v) as the select
+/// m < v ? v : m, so a NaN quotient is skipped as there).
+template <int N>
+HWY_INLINE void error_scale_norm_lanes(const LaneTolerance& tol, const double* y, const double* e, double* err) {
+  constexpr int W = kPacketLanes;
+  // The maximum over the components of term(i, |e_i|) on lanes l..l+lanes−1.
+  auto max_over = [&](size_t l, SimdMask& nan, auto term) {
+    SimdD m(0.0);
+    for (int i = 0; i < N; ++i) {
+      const SimdD a = fabs(SimdD::load(e + i * W + l));
+      nan = nan || a != a;
+      const SimdD v = term(i, a);
+      m = select(m < v, v, m);
+    }
+    return m;
+  };
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    SimdMask nan{hn::FirstN(SimdTag(), 0)};
+    SimdD m;
+    if (tol.inv) {
+      m = max_over(l, nan, [&](int i, SimdD a) { return a * SimdD::load(tol.inv + i * W + l); });
+    } else if (tol.eps_rel == 0.0) {
+      m = max_over(l, nan, [](int, SimdD a) { return a; }) / SimdD(tol.eps_abs);
+    } else {
+      m = max_over(l, nan, [&](int i, SimdD a) {
+        return a / (SimdD(tol.eps_abs) + SimdD(tol.eps_rel) * fabs(SimdD::load(y + i * W + l)));
+      });
+    }
+    select(nan, SimdD(std::numeric_limits<double>::quiet_NaN()), m).store(err + l);
+  }
+}
+
+/// The scaled error of the steps h (per lane) from the attempt's estimate(s) at the start states
+/// y, on every lane: the stepper's own norm, ExplicitRK's ErrorScale::norm of e = h·Σ e_j k_j, or
+/// DOP853's combined norm of e = Σ e5_j k_j and e3 = Σ e3_j k_j (DOP853::combined_error, the
+/// scalar stepper's function, lane by lane).
+template <class Tab, int N>
+HWY_INLINE void step_error_norm_lanes(const LaneTolerance& tol, const double* y, const double* e, const double* e3,
+                                      const double* h, double* err) {
+  error_scale_norm_lanes<N>(tol, y, e, err);
+  if constexpr (kCombinedEstimate<Tab>) {
+    HWY_ALIGN double err3[kPacketLanes];
+    error_scale_norm_lanes<N>(tol, y, e3, err3);
+    for (int l = 0; l < kPacketLanes; ++l) err[l] = DOP853::combined_error(err[l], err3[l], h[l]);
+  }
+}
+
+/// root_q<q>(x) (integrators.h) on every lane where x > 0 is finite, the same operations per lane
+/// (the bit-pattern seed lane by lane: 64-bit integer division has no SIMD instruction).
+template <int q>
+HWY_INLINE void root_q_lanes(const double* x, double* root) {
+  constexpr int W = kPacketLanes;
+  if constexpr (q == 5 || q == 7) {
+    HWY_ALIGN double seed[W];
+    for (int l = 0; l < W; ++l) seed[l] = x[l] > 0.0 && std::isfinite(x[l]) ? root_q_seed<q>(x[l]) : 1.0;
+    for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+      const SimdD xv = SimdD::load(x + l);
+      SimdD y = SimdD::load(seed + l);
+      for (int it = 0; it < 4; ++it) {
+        const SimdD y2 = y * y;
+        if constexpr (q == 5) {
+          y = y * (SimdD(6.0) - xv * (y2 * y2 * y)) * SimdD(0.2);
+        } else {
+          const SimdD y3 = y2 * y;
+          y = y * (SimdD(8.0) - xv * (y3 * y3 * y)) * SimdD(1.0 / 7.0);
+        }
+      }
+      (SimdD(1.0) / y).store(root + l);
+    }
+  } else if constexpr (q == 1 || q == 2 || q == 4 || q == 8) {
+    for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+      SimdD r = SimdD::load(x + l);
+      for (int s = 1; s < q; s *= 2) r = sqrt(r);
+      r.store(root + l);
+    }
+  } else {
+    for (int l = 0; l < W; ++l) root[l] = x[l] > 0.0 && std::isfinite(x[l]) ? root_q<q>(x[l]) : 0.0;
+  }
+}
+
+/// The attempt's AttemptError: the error norm of e (and e3), its root and the finiteness of y1
+/// per lane.
+template <class Tab, int N>
+HWY_INLINE void attempt_error_lanes(const LaneTolerance& tol, const double* y, const double* y1, const double* e,
+                                    const double* e3, const double* h, AttemptError& out) {
+  constexpr int W = kPacketLanes;
+  step_error_norm_lanes<Tab, N>(tol, y, e, e3, h, out.err);
+  root_q_lanes<Tab::kErrExp>(out.err, out.root);
+  HWY_ALIGN double finite[W];
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    SimdMask all{hn::IsFinite(SimdD::load(y1 + l).v)};
+    for (int i = 1; i < N; ++i) all = all && SimdMask{hn::IsFinite(SimdD::load(y1 + i * W + l).v)};
+    select(all, SimdD(1.0), SimdD(0.0)).store(finite + l);
+  }
+  out.finite = 0;
+  for (int l = 0; l < W; ++l) out.finite |= (finite[l] != 0.0 ? 1u : 0u) << l;
+}
+
 /// The attempt of solver `kind` on the geodesic system in the metric's coordinates (lanes: those
-/// whose right-hand side is needed, for metrics evaluated lane by lane).
-void rk_attempt(SolverKind kind, const MetricKernel& m, unsigned lanes, const double* y, const double* dy,
-                const double* h, double* y1, double* e, double* e3, double* dy1) {
+/// whose right-hand side is needed, for metrics evaluated lane by lane), with its AttemptError.
+void rk_attempt(SolverKind kind, const MetricKernel& m, unsigned lanes, const LaneTolerance& tol, const double* y,
+                const double* dy, const double* h, double* y1, double* dy1, AttemptError& err) {
   with_packet_tableau(kind, [&]<class Tab>() {
+    HWY_ALIGN double e[kDim * kPacketLanes];
+    HWY_ALIGN double e3[kCombinedEstimate<Tab> ? kDim * kPacketLanes : 1];
     rk_attempt_lanes<Tab, kDim, kDim>([&](const double* yy, double* dyy) { packet_rhs(m, yy, dyy, lanes); }, y, dy, h,
                                       y1, e, e3, dy1);
+    attempt_error_lanes<Tab, kDim>(tol, y, y1, e, e3, h, err);
   });
 }
 
@@ -182,13 +294,38 @@ HWY_INLINE void mino_rhs_lanes(const MinoLaneCoeffs& c, const double* y, double*
 void mino_rhs(const MinoLaneCoeffs& c, const double* y, double* dy) { mino_rhs_lanes(c, y, dy); }
 
 /// The attempt of solver `kind` on the Mino-time system (t, φ, λ are quadratures:
-/// KerrMinoRHS::kCoupled).
-void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const double* y, const double* dy, const double* h,
-                  double* y1, double* e, double* e3, double* dy1) {
+/// KerrMinoRHS::kCoupled), with its AttemptError.
+void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance& tol, const double* y, const double* dy,
+                  const double* h, double* y1, double* dy1, AttemptError& err) {
   with_packet_tableau(kind, [&]<class Tab>() {
-    rk_attempt_lanes<Tab, KerrMinoRHS::N, KerrMinoRHS::kCoupled>(
-        [&](const double* yy, double* dyy) { mino_rhs_lanes(c, yy, dyy); }, y, dy, h, y1, e, e3, dy1);
+    constexpr int N = KerrMinoRHS::N;
+    HWY_ALIGN double e[N * kPacketLanes];
+    HWY_ALIGN double e3[kCombinedEstimate<Tab> ? N * kPacketLanes : 1];
+    rk_attempt_lanes<Tab, N, KerrMinoRHS::kCoupled>([&](const double* yy, double* dyy) { mino_rhs_lanes(c, yy, dyy); },
+                                                    y, dy, h, y1, e, e3, dy1);
+    attempt_error_lanes<Tab, N>(tol, y, y1, e, e3, h, err);
   });
+}
+
+/// integrate_with's set_tolerance (integrators.h) for the Mino-time system on every lane: the 1/D_i
+/// of ErrorScale from the system's scales (kerr_mino_tolerance_inv_scale) at state y, SoA.
+void mino_tolerance(const MinoLaneCoeffs& c, double eps_abs, double eps_rel, const double* y, double* inv) {
+  using R = MinoLaneCoeffs;
+  constexpr int N = KerrMinoRHS::N, W = kPacketLanes;
+  const double inv_eps_abs = 1.0 / eps_abs;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
+    SimdD ys[N], is[N];
+    for (int i = 0; i < N; ++i) ys[i] = SimdD::load(y + i * W + l);
+    HWY_NAMESPACE::kerr_mino_tolerance_inv_scale(at(R::A2), at(R::SIN2_FLOOR), at(R::POLE), ys, is);
+    for (int i = 0; i < N; ++i) {
+      if (eps_rel == 0.0)
+        is[i] = is[i] * SimdD(inv_eps_abs);
+      else
+        is[i] = SimdD(1.0) / (SimdD(eps_abs) / is[i] + SimdD(eps_rel) * fabs(ys[i]));
+      is[i].store(inv + i * W + l);
+    }
+  }
 }
 
 }  // namespace HWY_NAMESPACE
@@ -201,6 +338,7 @@ namespace geovis {
 HWY_EXPORT(rk_attempt);
 HWY_EXPORT(mino_rhs);
 HWY_EXPORT(mino_attempt);
+HWY_EXPORT(mino_tolerance);
 
 namespace {
 
@@ -211,15 +349,15 @@ struct Lane {
   double lambda = 0, h = 0, hstep = 0, h_cross = 0, err = 0;
   double hmax = 0, hmin = 0, affine0 = 0, remaining = 0;
   int affine_retries = 0;
+  double root = 0;  ///< root_q(err) of the last attempt (AttemptError)
   bool after_reject = false, clipped = false;
   StepController<Tab::kErrExp> control;  ///< ExplicitRK::control
   GeodesicResult res;
-  double inv_tol[N] = {};  ///< ErrorScale::inv of systems with their own tolerance scales
 };
 
 /// Integrates the rays of `rays` on the lanes of packet system PS, each lane exactly as
 /// integrate_with<ExplicitRK<Tab>> (integrators.h, Tab: the tableau of cfg.kind; DOP853 for its
-/// tableau, step_error_norm) integrates PS's scalar system of the lane from λ = 0: the same
+/// tableau, step_error_norm_lanes) integrates PS's scalar system of the lane from λ = 0: the same
 /// steps, checks and stops in the same order (the optional parts — own affine parameter, scaled
 /// tolerance, projection, re-basing — chosen by the same `requires`).
 /// PS provides
@@ -227,8 +365,11 @@ struct Lane {
 ///   system(l)                           the scalar system of lane l (integrators.h concept);
 ///   start(l, y_start, y)                the ray's state from its start (8 components: x, k);
 ///                                       false when it handled the ray itself (done already called);
-///   rhs(y, dy, lanes), attempt(kind, lanes, y, dy, h, y1, e, e3, dy1)   SoA right-hand side and
-///                                       the attempt of solver `kind` (rk_attempt_lanes);
+///   rhs(y, dy, lanes), attempt(kind, lanes, tol, y, dy, h, y1, dy1, err)   SoA right-hand side
+///                                       and the attempt of solver `kind` (rk_attempt_lanes) with
+///                                       its error norm, root and finiteness (AttemptError);
+///   tolerance_inv(eps_abs, eps_rel, y, inv)   for a system with tolerance scales of its own: the
+///                                       1/D_i of set_tolerance at state y on every lane (SoA);
 ///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies.
 template <class Tab, class PS>
@@ -253,13 +394,15 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   const double dir = cfg.direction >= 0 ? 1.0 : -1.0;
   const bool adaptive = cfg.step_ctrl;
   const double hmax_affine = std::max(cfg.step_max, cfg.step_min);
-  const double inv_eps_abs = 1.0 / cfg.eps_abs;
   const double lambda_res = kOwnAffine && std::isfinite(cfg.lambda_max) ? 1e-12 * cfg.lambda_max : 0.0;
   constexpr double kBoundaryRes = 1.0 / 1024;
 
-  HWY_ALIGN double y[N * W] = {}, dy[N * W] = {}, y1[N * W] = {}, dy1[N * W] = {}, e[N * W] = {}, hv[W] = {};
+  HWY_ALIGN double y[N * W] = {}, dy[N * W] = {}, y1[N * W] = {}, dy1[N * W] = {}, hv[W] = {};
   HWY_ALIGN double f1[Tab::kFsal ? N * W : 1];  // f(y1) of the lanes whose last stage is not it
-  HWY_ALIGN double e3[kCombinedEstimate<Tab> ? N * W : 1];  // DOP853's second error estimate
+  // ErrorScale::inv of every lane (SoA) for systems with their own tolerance scales.
+  HWY_ALIGN double inv_tol[kScaledTol ? N * W : 1] = {};
+  const LaneTolerance tol{cfg.eps_abs, cfg.eps_rel, kScaledTol ? inv_tol : nullptr};
+  AttemptError attempt_err;
   Lane<Tab, N> lane[W];
   bool exhausted = false;
   unsigned need_dy = 0;  // lanes whose dy = f(y) is still to be evaluated (fresh rays)
@@ -271,17 +414,12 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   auto put = [](double* soa, int l, const double* in) {
     for (int i = 0; i < N; ++i) soa[i * W + l] = in[i];
   };
-  // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step.
-  auto set_tolerance = [&](int l, const double* yl) {
-    if constexpr (kScaledTol) {
-      double* inv = lane[l].inv_tol;
-      ps.system(l).tolerance_inv_scale(yl, inv);
-      if (cfg.eps_rel == 0.0) {
-        for (int i = 0; i < N; ++i) inv[i] *= inv_eps_abs;
-      } else {
-        for (int i = 0; i < N; ++i) inv[i] = 1.0 / (cfg.eps_abs / inv[i] + cfg.eps_rel * std::fabs(yl[i]));
-      }
-    }
+  // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step, for the lanes in
+  // need_tol at once before the next attempt (PS::tolerance_inv, all lanes: a lane whose state
+  // did not change gets the same values again).
+  unsigned need_tol = 0;
+  auto set_tolerance = [&](int l) {
+    if constexpr (kScaledTol) need_tol |= 1u << l;
   };
   // integrate_with's finish(): the result with the state where the ray stopped.
   auto finish = [&](int l, StopReason r) {
@@ -312,7 +450,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       ln = Lane<Tab, N>{};
       ln.live = true;
       const Sys& sys = ps.system(l);
-      set_tolerance(l, yl);
+      set_tolerance(l);
       const double ppa = per_affine(sys, yl);
       ln.hmax = hmax_affine * ppa;
       ln.hmin = cfg.step_min * ppa;
@@ -375,23 +513,22 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     } while (need_dy);
     if (!ready) return;
 
-    ps.attempt(cfg.kind, ready, y, dy, hv, y1, e, e3, dy1);
+    if constexpr (kScaledTol) {
+      if (need_tol) ps.tolerance_inv(cfg.eps_abs, cfg.eps_rel, y, inv_tol);
+      need_tol = 0;
+    }
+    ps.attempt(cfg.kind, ready, tol, y, dy, hv, y1, dy1, attempt_err);
     unsigned accepted = 0, need_dy1 = 0;
     for (int l = 0; l < W; ++l) {
       if (!(ready >> l & 1u)) continue;
       Lane<Tab, N>& ln = lane[l];
       auto& sys = ps.system(l);
       ln.res.rhs_evals += Tab::S - 1;
-      double yl[N], yl1[N], el[N], el3[N];
-      get(y, l, yl);
+      double yl1[N];
       get(y1, l, yl1);
-      get(e, l, el);
-      if constexpr (kCombinedEstimate<Tab>) get(e3, l, el3);
-      ErrorScale tol{cfg.eps_abs, cfg.eps_rel};
-      if constexpr (kScaledTol) tol.inv = ln.inv_tol;
-      ln.err = step_error_norm<Tab, N>(tol, el, el3, yl, ln.hstep);
-      bool finite = true;
-      for (int i = 0; i < N; ++i) finite = finite && std::isfinite(yl1[i]);
+      ln.err = attempt_err.err[l];
+      ln.root = attempt_err.root[l];
+      const bool finite = attempt_err.finite >> l & 1u;
       const bool in_domain = finite && sys.valid(yl1);
       if (!in_domain || (adaptive && !(ln.err <= 1.0))) {
         ready &= ~(1u << l);
@@ -409,7 +546,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
             continue;
           }
         }
-        ln.h = in_domain ? ln.control.next(ln.hstep, ln.err, false, ln.after_reject) : 0.5 * ln.hstep;
+        ln.h =
+            in_domain ? ln.control.next_with_root(ln.hstep, ln.err, ln.root, false, ln.after_reject) : 0.5 * ln.hstep;
         ln.after_reject = true;
         if (ln.h < ln.hmin || ln.h <= 4 * DBL_EPSILON * std::fabs(ln.lambda)) {
           finish(l, !finite ? StopReason::NotFinite : (!in_domain ? StopReason::Invalid : StopReason::StepUnderflow));
@@ -419,6 +557,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       if constexpr (kOwnAffine) {
         // λ_max overshot, or a step longer than step_max in λ: retried shorter (integrate_with).
+        double yl[N];
+        get(y, l, yl);
         const double dl = std::fabs(sys.affine(yl1) - sys.affine(yl));
         if (ln.affine_retries < 50) {
           if (std::isfinite(cfg.lambda_max) && dl > ln.remaining * (1.0 + 1e-12)) {
@@ -485,7 +625,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       put(y, l, yl1);
       put(dy, l, dyl1);
       ln.lambda = lambda1;
-      set_tolerance(l, yl1);
+      set_tolerance(l);
       StopReason stop = StopReason::None;
       if (act == StepAction::Stop)
         stop = StopReason::Callback;
@@ -503,7 +643,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         continue;
       }
       if (adaptive)
-        ln.h = std::min(ln.hmax, std::max(ln.control.next(ln.hstep, ln.err, true, ln.after_reject), ln.hmin));
+        ln.h = std::min(ln.hmax,
+                        std::max(ln.control.next_with_root(ln.hstep, ln.err, ln.root, true, ln.after_reject), ln.hmin));
       if (!adaptive && kOwnAffine) ln.h = std::fabs(cfg.step_size) * per_affine(sys, yl1);
       if (!ln.after_reject) ln.h_cross = 0.0;
       ln.after_reject = false;
@@ -526,10 +667,10 @@ struct CoordinatePacket {
     return true;
   }
   void rhs(const double* y, double* dy, unsigned lanes) const { packet_rhs(metric, y, dy, lanes); }
-  void attempt(SolverKind kind, unsigned lanes, const double* y, const double* dy, const double* h, double* y1,
-               double* e, double* e3, double* dy1) const {
+  void attempt(SolverKind kind, unsigned lanes, const LaneTolerance& tol, const double* y, const double* dy,
+               const double* h, double* y1, double* dy1, AttemptError& err) const {
     // Looked up per call: before the first dispatch the table entry is Highway's target chooser.
-    HWY_DYNAMIC_DISPATCH(rk_attempt)(kind, metric, lanes, y, dy, h, y1, e, e3, dy1);
+    HWY_DYNAMIC_DISPATCH(rk_attempt)(kind, metric, lanes, tol, y, dy, h, y1, dy1, err);
   }
   StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
   void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
@@ -562,14 +703,17 @@ struct MinoPacket {
     using R = MinoLaneCoeffs;
     const KerrMinoConstants& c = r.c;
     const double row[R::kRows] = {
-        c.M, c.a, c.a2, c.E, c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0};
+        c.M, c.a, c.a2, c.E, c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0, c.sin2_floor};
     for (int i = 0; i < R::kRows; ++i) coeffs.v[i][l] = row[i];
     return true;
   }
   void rhs(const double* y, double* dy, unsigned) const { HWY_DYNAMIC_DISPATCH(mino_rhs)(coeffs, y, dy); }
-  void attempt(SolverKind kind, unsigned, const double* y, const double* dy, const double* h, double* y1, double* e,
-               double* e3, double* dy1) const {
-    HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, y, dy, h, y1, e, e3, dy1);
+  void tolerance_inv(double eps_abs, double eps_rel, const double* y, double* inv) const {
+    HWY_DYNAMIC_DISPATCH(mino_tolerance)(coeffs, eps_abs, eps_rel, y, inv);
+  }
+  void attempt(SolverKind kind, unsigned, const LaneTolerance& tol, const double* y, const double* dy, const double* h,
+               double* y1, double* dy1, AttemptError& err) const {
+    HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
   }
   StepAction step(int l, const StepView& s) {
     if (!rays.on_step) return ray[l]->step(s, {});

@@ -8,11 +8,12 @@
 // its own λ, step size, step controller (StepController, the same object), boundary location,
 // stop reason and step count, and the same stop checks in the same order (the scalar
 // MetricSystem's valid/inside/constraint/escaped/captured/reproject/rescale, called per lane).
-// Only the Runge–Kutta arithmetic runs on all lanes at once (Google Highway, spacetime/simd.h,
-// dispatched at run time to AVX-512 / AVX2 / SSE4 / scalar emulation), with the same operations
-// in the same order as the scalar stepper: a lane's accepted steps, states and stop reason equal
-// the scalar integrator's to the bit where the right-hand side is the same function (test
-// tests/spacetime/test_geodesic_packet.cpp).
+// The Runge–Kutta arithmetic, the error norm, the finiteness test, the step controller's root
+// err^(1/q̂) and the Mino system's tolerance scales run on all lanes at once (Google Highway,
+// spacetime/simd.h, dispatched at run time to AVX-512 / AVX2 / SSE4 / scalar emulation), with the
+// same operations in the same order as the scalar stepper: a lane's accepted steps, states and
+// stop reason equal the scalar integrator's to the bit where the right-hand side is the same
+// function (test tests/spacetime/test_geodesic_packet.cpp).
 //
 // A lane whose ray ended is refilled at once from the source (PacketRays::next), so the lanes stay
 // busy until the source is exhausted.

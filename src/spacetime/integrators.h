@@ -103,7 +103,8 @@ struct TransportRHS {
 /// A system whose variables are not the coordinates (Mino state, kerr_mino.h) gives per-component
 /// scales s_i (as 1/s_i) so that the tolerance keeps its meaning in coordinates, D_i =
 /// eps_abs·s_i + eps_rel·|y0_i|; the driver then sets `inv` to the N values 1/D_i at the start
-/// of the step.
+/// of the step. The packet integrator runs the same norm on SIMD lanes (geodesic_packet.cpp
+/// error_scale_norm_lanes): any change here goes there too.
 struct ErrorScale {
   double eps_abs = 0, eps_rel = 0;
   const double* inv = nullptr;  ///< per-component 1/D_i, or null: D_i = eps_abs + eps_rel·|y0_i|
@@ -199,43 +200,40 @@ inline void all_stages(F& f, const double* y, double h, double (&k)[S][N]) {
 
 }  // namespace rk_detail
 
-/// Step-size control of the embedded pairs. Standard rule (HNW I §II.4):
-///   h_new = h·0.9·err^(−1/q̂),  q̂ = kErrExp (the error estimate behaves like h^q̂),
-/// growth limited to ×5 and shrink to ×0.2 (GSL's standard control), no growth right after a
-/// rejection (HNW I §II.4). After two accepted steps in a row it also applies Gustafsson's
-/// predictive rule (Gustafsson, ACM TOMS 20 (1994) 496; HNW II §IV.8, as in Hairer's RADAU5)
-///   h_new = h·0.9·err^(−1/q̂) · (h/h_old) · (err_old/err)^(1/q̂)
-/// and takes the smaller proposal: when the error grows steadily from step to step (a ray falling
-/// towards a black hole), the standard rule keeps proposing steps that are then rejected.
+/// The start of root_q's Newton iteration for q = 5, 7: 2^(−log2(x)/q) from x's bit pattern
+/// (exponent and mantissa read as a linear approximation of log2).
+template <int q>
+GEOVIS_HOT_INLINE double root_q_seed(double x) {
+  constexpr std::int64_t kOne = 0x3FF0000000000000;  // bits of 1.0
+  std::int64_t i;
+  std::memcpy(&i, &x, sizeof i);
+  i = kOne - (i - kOne) / q;
+  double y;
+  std::memcpy(&y, &i, sizeof y);
+  return y;
+}
+
 /// x^(1/q) (x > 0 finite) for the step-size controllers: square roots for q = 2, 4, 8 (DOP853),
-/// a division-free Newton iteration for q = 5, std::pow otherwise (a libm call per step). Always
-/// inlined, like StepController::next below.
+/// a division-free Newton iteration for q = 5 and 7, std::pow otherwise (a libm call per step).
+/// Always inlined, like StepController::next below. The packet integrator (geodesic_packet.cpp
+/// root_q_lanes) runs the same operations on SIMD lanes: any change here goes there too (test
+/// GeodesicPacket, bit identity).
+///
+/// q = 5, 7: y = x^(−1/q) by Newton's iteration y ← y (q + 1 − x y^q)/q (no division) from the
+/// bit-pattern estimate 2^(−log2(x)/q) of root_q_seed (within 9 %; the error e goes to ~3e² per
+/// iteration); four iterations leave < 1e-9 relative error, far below what a step-size proposal
+/// needs (test FastMath.StepControllerRootsMatchPow).
 template <int q>
 GEOVIS_HOT_INLINE double root_q(double x) {
   if constexpr (q == 5) {
-    // err^(1/5) for the 4(5) pairs: y = x^(−1/5) by Newton's iteration y ← y (6 − x y⁵)/5
-    // (no division) from the bit-pattern estimate 2^(−log2(x)/5) (within 9 %; the error e goes
-    // to 3e² per iteration); four iterations leave < 1e-9 relative error, far below what a
-    // step-size proposal needs (test FastMath.StepControllerRootsMatchPow).
-    constexpr std::int64_t kOne = 0x3FF0000000000000;  // bits of 1.0
-    std::int64_t i;
-    std::memcpy(&i, &x, sizeof i);
-    i = kOne - (i - kOne) / 5;
-    double y;
-    std::memcpy(&y, &i, sizeof y);
+    double y = root_q_seed<5>(x);
     for (int it = 0; it < 4; ++it) {
       const double y2 = y * y;
       y = y * (6.0 - x * (y2 * y2 * y)) * 0.2;
     }
     return 1.0 / y;
   } else if constexpr (q == 7) {
-    // err^(1/7) for RKN86, as q = 5: y = x^(−1/7), y ← y (8 − x y⁷)/7.
-    constexpr std::int64_t kOne = 0x3FF0000000000000;
-    std::int64_t i;
-    std::memcpy(&i, &x, sizeof i);
-    i = kOne - (i - kOne) / 7;
-    double y;
-    std::memcpy(&y, &i, sizeof y);
+    double y = root_q_seed<7>(x);
     for (int it = 0; it < 4; ++it) {
       const double y2 = y * y, y3 = y2 * y;
       y = y * (8.0 - x * (y3 * y3 * y)) * (1.0 / 7.0);
@@ -254,6 +252,14 @@ GEOVIS_HOT_INLINE double root_q(double x) {
   }
 }
 
+/// Step-size control of the embedded pairs. Standard rule (HNW I §II.4):
+///   h_new = h·0.9·err^(−1/q̂),  q̂ = kErrExp (the error estimate behaves like h^q̂),
+/// growth limited to ×5 and shrink to ×0.2 (GSL's standard control), no growth right after a
+/// rejection (HNW I §II.4). After two accepted steps in a row it also applies Gustafsson's
+/// predictive rule (Gustafsson, ACM TOMS 20 (1994) 496; HNW II §IV.8, as in Hairer's RADAU5)
+///   h_new = h·0.9·err^(−1/q̂) · (h/h_old) · (err_old/err)^(1/q̂)
+/// and takes the smaller proposal: when the error grows steadily from step to step (a ray falling
+/// towards a black hole), the standard rule keeps proposing steps that are then rejected.
 template <int kErrExp>
 struct StepController {
   static constexpr double kSafety = 0.9, kMaxGrow = 5.0, kMaxShrink = 0.2;
@@ -262,12 +268,17 @@ struct StepController {
   // Always inlined: the per-metric integrator (metric_crtp.h) is its only caller in a metric file,
   // but in a unity unit of several metrics (CMakeLists.txt) GCC stopped inlining it.
   GEOVIS_HOT_INLINE double next(double h, double err, bool accepted, bool after_reject) {
+    return next_with_root(h, err, err > 0.0 && std::isfinite(err) ? root_q<kErrExp>(err) : 0.0, accepted, after_reject);
+  }
+  /// next() with root = root_q<kErrExp>(err) given (used only where err > 0 is finite): the packet
+  /// integrator takes the roots of all its lanes at once (geodesic_packet.cpp).
+  GEOVIS_HOT_INLINE double next_with_root(double h, double err, double root, bool accepted, bool after_reject) {
     h = std::fabs(h);
     double fac, q = 0;
     if (!(err > 0.0)) {
       fac = kMaxGrow;
     } else if (std::isfinite(err)) {
-      q = root_q<kErrExp>(err);
+      q = root;
       fac = kSafety / q;
       if (accepted && h_old > 0 && q_old > 0) fac = std::min(fac, fac * (h / h_old) * (q_old / q));
       fac = std::clamp(fac, kMaxShrink, kMaxGrow);

@@ -269,16 +269,9 @@ struct KerrMinoSystem {
   /// as in the coordinate form. |sin θ| is floored at 1e-3 for rays through the axis (L = 0),
   /// where δθ = δz/|sin θ| is meaningless, and at θ_min/2 otherwise: the polar turning point
   /// sin²θ_min ≈ L²/(B + 2A) is resolved only if δz stays below ~|sin θ| there.
+  /// (kerr_mino_tolerance_inv_scale, kerr_mino_rhs.h: the same formula on a packet's lanes.)
   void tolerance_inv_scale(const double* y, double* is) const {
-    const double w2 = y[I::W] * y[I::W], z = f.polar.z(y[I::Z]), z2 = z * z;
-    const double w2sigma = 1.0 + k.a2 * z2 * w2;  // w² Σ
-    const double st = std::sqrt(std::max(f.polar.sin2(y[I::Z]), k.sin2_floor));
-    const double q = 1.0 / (w2 * st * w2sigma);  // one division for all four
-    is[I::T] = is[I::PHI] = is[I::LAM] = 1.0;
-    is[I::W] = q * st * w2sigma;
-    is[I::Z] = q * w2 * w2sigma;
-    is[I::DW] = q * w2 * st;
-    is[I::DZ] = q * w2 * w2;
+    kerr_mino_tolerance_inv_scale(k.a2, k.sin2_floor, f.polar.pole, y, is);
   }
   /// Projection onto the polar first integral z'² = Z near the axis (Hairer, Lubich & Wanner,
   /// "Geometric Numerical Integration", 2nd ed., §IV.4: one Newton step of the orthogonal

@@ -1,4 +1,5 @@
-// The right-hand side of the Mino-time system (kerr_mino.h) as one template over the number type.
+// The right-hand side and the tolerance scales of the Mino-time system (kerr_mino.h) as templates
+// over the number type.
 // Included (no include guard) by kerr_mino.h into namespace geovis, for doubles and dual numbers,
 // and by the packet integrator (geodesic_packet.cpp) into each SIMD target's namespace
 // (geovis::HWY_NAMESPACE), where its instantiation on SimdD must be compiled with that target's
@@ -31,4 +32,25 @@ GEOVIS_HOT_INLINE void kerr_mino_rhs(const KerrMinoCoeffs<T>& k, const Cond& axi
   dy[LAM] = iw2 + k.a2 * z2;
   dy[DW] = 2.0 * k.c * w * P + (k.M - k.a2 * w) * muK - k.K * w * D;
   dy[DZ] = -(k.B + 2.0 * k.A * z2) * z;
+}
+
+/// KerrMinoSystem::tolerance_inv_scale (kerr_mino.h, where the scales are explained) on any number
+/// type T: the reciprocals 1/s_i of the tolerance scales of state y (ζ relative to `pole`), from a²
+/// and the floor of sin²θ of the ray. One formula for one ray and for a packet's lanes
+/// (geodesic_packet.cpp), so both give the same bits.
+template <class T>
+GEOVIS_HOT_INLINE void kerr_mino_tolerance_inv_scale(const T& a2, const T& sin2_floor, const T& pole, const T* y,
+                                                     T* is) {
+  using std::sqrt;
+  enum { W = 0, Z = 1, DW = 2, DZ = 3, TT = 4, PHI = 5, LAM = 6 };
+  const T w2 = y[W] * y[W], z = pole + y[Z], z2 = z * z;
+  const T w2sigma = 1.0 + a2 * z2 * w2;                        // w² Σ
+  const T s2 = -y[Z] * (2.0 * pole + y[Z]);                    // sin²θ (PolarOffset::sin2)
+  const T st = sqrt(select(s2 < sin2_floor, sin2_floor, s2));  // std::max(s2, floor)
+  const T q = 1.0 / (w2 * st * w2sigma);                       // one division for all four
+  is[TT] = is[PHI] = is[LAM] = T(1.0);
+  is[W] = q * st * w2sigma;
+  is[Z] = q * w2 * w2sigma;
+  is[DW] = q * w2 * st;
+  is[DZ] = q * w2 * w2;
 }
