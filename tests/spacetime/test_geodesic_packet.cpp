@@ -257,7 +257,8 @@ TEST(GeodesicPacket, KastorTraschenExpandingSameBitsAsScalar) {
 // the bit-identity above is a test of the templates, not of the scalar function twice.
 TEST(GeodesicPacket, MetricsWithSimdAcceleration) {
   for (const char* name : {"EddFinkIn", "KerrBL", "MorrisThorne", "Schwarzschild", "KastorTraschen",
-                           "ReissnerNordstrom", "Kottler", "BarriolaVilenkin", "Ernst"}) {
+                           "ReissnerNordstrom", "Kottler", "BarriolaVilenkin", "Ernst", "SchwarzschildIsotropic",
+                           "CosmicStringSchwarzschild"}) {
     EXPECT_TRUE(make_metric(name)->has_simd_packet_acceleration()) << name;
   }
   EXPECT_FALSE(make_metric("Minkowski")->has_simd_packet_acceleration());

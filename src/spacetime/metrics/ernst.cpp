@@ -116,8 +116,8 @@ namespace HWY_NAMESPACE {
 
 void ernst_packet_acceleration(double B2, double rs, const double* y, double* a) {
   packet_acceleration_simd(
-      [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { ernst_accel(B2, rs, x, k, acc); },
-      y, a, kPacketLanes);
+      [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { ernst_accel(B2, rs, x, k, acc); }, y, a,
+      kPacketLanes);
 }
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis

@@ -136,8 +136,8 @@ namespace HWY_NAMESPACE {
 
 void kottler_packet_acceleration(double M, double L, const double* y, double* a) {
   packet_acceleration_simd(
-      [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { kottler_accel(M, L, x, k, acc); },
-      y, a, kPacketLanes);
+      [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { kottler_accel(M, L, x, k, acc); }, y, a,
+      kPacketLanes);
 }
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis

@@ -146,9 +146,9 @@ namespace HWY_NAMESPACE {
 #include "spacetime/metrics/reissner_nordstrom_accel.h"
 
 void reissner_nordstrom_packet_acceleration(double M, double Q2, const double* y, double* a) {
-  packet_acceleration_simd(
-      [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { reissner_nordstrom_accel(M, Q2, x, k, acc); },
-      y, a, kPacketLanes);
+  packet_acceleration_simd([=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k,
+                               Vec4T<SimdD>& acc) { reissner_nordstrom_accel(M, Q2, x, k, acc); },
+                           y, a, kPacketLanes);
 }
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
