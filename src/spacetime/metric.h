@@ -171,6 +171,9 @@ class Metric {
   /// accepts; the geodesic system in coordinates, or Carter's separated equations where integrate
   /// uses them); each ray as integrate(cfg, Geodesic, y, 0, cb).
   virtual void integrate_packet(const SolverConfig& cfg, const PacketRays& rays) const;
+  /// True where a packet's right-hand side runs on SIMD lanes (the metric's acceleration template
+  /// compiled per Highway target, metric_crtp.h), false where it runs lane by lane; for tests.
+  virtual bool has_simd_packet_acceleration() const { return false; }
   /// Geodesics (GeodesicSystem::Geodesic) are integrated through separated equations of the form
   /// y'' = f(y) when cfg.separable is set (KerrBL, Schwarzschild: spacetime/kerr_mino.h), which
   /// is what the RKN86 solver needs.

@@ -102,6 +102,13 @@ class MetricCRTP : public Metric {
   /// form reports).
   static constexpr bool kSeparable = requires(const M& m) { m.kerr_mino_params(); };
   bool has_separable_geodesics() const override { return kSeparable; }
+
+  /// A metric with `void packet_acceleration_simd(const double* y, double* a) const` (all lanes,
+  /// simd.h) gives packets of rays (MetricKernel::of below) its SIMD acceleration.
+  static constexpr bool kSimdPacket = requires(const M& m, const double* y, double* a) {
+    m.packet_acceleration_simd(y, a);
+  };
+  bool has_simd_packet_acceleration() const override { return kSimdPacket; }
   bool transported_screen(const Vec4& x0, const Vec4& k0, const Vec4 (&s0)[2], const Vec4& x, const Vec4& k,
                           Vec4 (&s)[2]) const override {
     if constexpr (kSeparable) {

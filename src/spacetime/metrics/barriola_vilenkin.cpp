@@ -3,6 +3,21 @@
 // Müller & Grave, Catalogue of Spacetimes (arXiv:0904.4184), section "Barriola-Vilenkin monopole";
 // M. Barriola, A. Vilenkin, Phys. Rev. Lett. 63 (1989) 341, with k² = 1 − 8πGη².
 // Space is a cone: on the equator dr² + k² r² dφ² is flat in the angle ψ = kφ.
+//
+// The acceleration is also compiled per SIMD target for packets of rays (Highway's foreach_target
+// includes this file once per target; the class is compiled once, the per-target part is
+// barriola_vilenkin_packet_acceleration below): g_μμ and −Γkk are the templates of barriola_vilenkin_accel.h.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/metrics/barriola_vilenkin.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+#ifndef GEOVIS_METRICS_BARRIOLA_VILENKIN_ONCE_
+#define GEOVIS_METRICS_BARRIOLA_VILENKIN_ONCE_
 #include <cmath>
 #include <string>
 
@@ -11,6 +26,10 @@
 #include "spacetime/metrics/diagonal_metric.h"
 
 namespace geovis {
+
+namespace scalar {
+#include "spacetime/metrics/barriola_vilenkin_accel.h"
+}  // namespace scalar
 
 class BarriolaVilenkin final : public MetricCRTP<BarriolaVilenkin> {
  public:
@@ -41,22 +60,18 @@ class BarriolaVilenkin final : public MetricCRTP<BarriolaVilenkin> {
     g[3][3] = k2_ * r * r * st * st;
   }
 
-  /// A = B = 1, C = k² r², C' = 2k² r.
-  void diagonal(const Vec4& x, DiagonalMetric& d) const {
-    const double r = x[1];
-    spherical_diagonal(1.0, 0.0, 1.0, 0.0, k2_ * r * r, 2.0 * k2_ * r, x[2], d);
-  }
+  /// g_μμ and their derivatives (barriola_vilenkin_accel.h).
+  void diagonal(const Vec4& x, DiagonalMetric& d) const { scalar::barriola_vilenkin_diagonal(k2_, x, d); }
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
     DiagonalMetric d;
     diagonal(x, d);
     diagonal_christoffel(d, G);
   }
-  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    DiagonalMetric d;
-    diagonal(x, d);
-    diagonal_accel(d, k, a);
-  }
+  /// −Γ^μ_{ab} k^a k^b of the diagonal metric (barriola_vilenkin_accel.h).
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::barriola_vilenkin_accel(k2_, x, k, a); }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD.
+  void packet_acceleration_simd(const double* y, double* a) const;
 
   /// r > 0 (the conical singularity at the origin) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
@@ -88,3 +103,28 @@ class BarriolaVilenkin final : public MetricCRTP<BarriolaVilenkin> {
 std::unique_ptr<Metric> make_metric_BarriolaVilenkin() { return std::make_unique<BarriolaVilenkin>(); }
 
 }  // namespace geovis
+#endif  // GEOVIS_METRICS_BARRIOLA_VILENKIN_ONCE_
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+#include "spacetime/metrics/diagonal_metric_accel.h"
+#include "spacetime/metrics/barriola_vilenkin_accel.h"
+
+void barriola_vilenkin_packet_acceleration(double k2, const double* y, double* a) {
+  packet_acceleration_simd(
+      [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { barriola_vilenkin_accel(k2, x, k, acc); },
+      y, a, kPacketLanes);
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace geovis {
+HWY_EXPORT(barriola_vilenkin_packet_acceleration);
+void BarriolaVilenkin::packet_acceleration_simd(const double* y, double* a) const {
+  HWY_DYNAMIC_DISPATCH(barriola_vilenkin_packet_acceleration)(k2_, y, a);
+}
+}  // namespace geovis
+#endif

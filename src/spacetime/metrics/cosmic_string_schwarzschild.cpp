@@ -8,6 +8,22 @@
 // Christoffel symbols: those of Schwarzschild with g_φφ multiplied by β² (diagonal_metric.h; the
 // factor cancels in every Γ^φ and gives Γ^r_φφ, Γ^θ_φφ a factor β²). Natural tetrad: static,
 // e_(3) = ∂_φ/(β r sin θ). Stop at the horizon break radius r_s (1 + horizon_eps).
+//
+// The acceleration is also compiled per SIMD target for packets of rays (Highway's foreach_target
+// includes this file once per target; the class is compiled once, the per-target part is
+// cosmic_string_schwarzschild_packet_acceleration below): g_μμ and −Γkk are the templates of
+// cosmic_string_schwarzschild_accel.h.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/metrics/cosmic_string_schwarzschild.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+#ifndef GEOVIS_METRICS_COSMIC_STRING_SCHWARZSCHILD_ONCE_
+#define GEOVIS_METRICS_COSMIC_STRING_SCHWARZSCHILD_ONCE_
 #include <cmath>
 
 #include "spacetime/metric_crtp.h"
@@ -15,6 +31,10 @@
 #include "spacetime/metrics/static_spherical.h"
 
 namespace geovis {
+
+namespace scalar {
+#include "spacetime/metrics/cosmic_string_schwarzschild_accel.h"
+}  // namespace scalar
 
 class CosmicStringSchwarzschild final : public MetricCRTP<CosmicStringSchwarzschild> {
  public:
@@ -46,11 +66,9 @@ class CosmicStringSchwarzschild final : public MetricCRTP<CosmicStringSchwarzsch
     g[3][3] = b2_ * r * r * st * st;
   }
 
+  /// g_μμ and their derivatives (cosmic_string_schwarzschild_accel.h).
   void diagonal(const Vec4& x, DiagonalMetric& d) const {
-    const double r = x[1], f = 1.0 - rs_ / r, df = rs_ / (r * r);
-    spherical_diagonal(f, df, 1.0 / f, -df / (f * f), r * r, 2.0 * r, x[2], d);
-    d.h[3] *= b2_;
-    for (int c = 0; c < 4; ++c) d.dh[c][3] *= b2_;
+    scalar::cosmic_string_schwarzschild_diagonal(rs_, b2_, x, d);
   }
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
@@ -58,11 +76,12 @@ class CosmicStringSchwarzschild final : public MetricCRTP<CosmicStringSchwarzsch
     diagonal(x, d);
     diagonal_christoffel(d, G);
   }
+  /// −Γ^μ_{ab} k^a k^b of the diagonal metric (cosmic_string_schwarzschild_accel.h).
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    DiagonalMetric d;
-    diagonal(x, d);
-    diagonal_accel(d, k, a);
+    scalar::cosmic_string_schwarzschild_accel(rs_, b2_, x, k, a);
   }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD.
+  void packet_acceleration_simd(const double* y, double* a) const;
 
   /// Outside the horizon break radius r_s (1 + horizon_eps), off the axis (the string).
   bool is_valid(const Vec4& x) const override {
@@ -107,3 +126,28 @@ std::unique_ptr<Metric> make_metric_CosmicStringSchwarzschild() {
 }
 
 }  // namespace geovis
+#endif  // GEOVIS_METRICS_COSMIC_STRING_SCHWARZSCHILD_ONCE_
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+#include "spacetime/metrics/diagonal_metric_accel.h"
+#include "spacetime/metrics/cosmic_string_schwarzschild_accel.h"
+
+void cosmic_string_schwarzschild_packet_acceleration(double rs, double b2, const double* y, double* a) {
+  packet_acceleration_simd([=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k,
+                               Vec4T<SimdD>& acc) { cosmic_string_schwarzschild_accel(rs, b2, x, k, acc); },
+                           y, a, kPacketLanes);
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace geovis {
+HWY_EXPORT(cosmic_string_schwarzschild_packet_acceleration);
+void CosmicStringSchwarzschild::packet_acceleration_simd(const double* y, double* a) const {
+  HWY_DYNAMIC_DISPATCH(cosmic_string_schwarzschild_packet_acceleration)(rs_, b2_, y, a);
+}
+}  // namespace geovis
+#endif

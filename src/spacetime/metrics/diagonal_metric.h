@@ -7,7 +7,9 @@
 // (no sum; direct evaluation of the formula with g_{μν} = 0 for μ ≠ ν):
 //   Γ^i_{ii} = ∂_i h_i / (2 h_i),   Γ^i_{ij} = ∂_j h_i / (2 h_i),   Γ^i_{jj} = −∂_i h_j / (2 h_i)
 // (i ≠ j), all others zero. Everything here is inline, allocation free and branch free apart
-// from the zero tests, so it is fit for the integrator's hot path.
+// from the zero tests, so it is fit for the integrator's hot path. The metric functions and the
+// acceleration are templates over the number type (diagonal_metric_accel.h), so a metric writes
+// its g_μμ once for the scalar and the SIMD packet integrator.
 #pragma once
 
 #include <cmath>
@@ -17,30 +19,12 @@
 
 namespace geovis {
 
-/// h[μ] = g_{μμ}; dh[c][μ] = ∂_c g_{μμ}.
-struct DiagonalMetric {
-  double h[4];
-  double dh[4][4];
-};
+// DiagonalMetricT, spherical_diagonal and diagonal_accel, templates over the number type: here
+// for doubles, and per SIMD target in the metric files that give packets of rays a SIMD
+// acceleration (reissner_nordstrom.cpp, ...).
+#include "spacetime/metrics/diagonal_metric_accel.h"
 
-/// Fills d for a static, spherically symmetric line element in (t, r, θ, φ):
-///   ds² = −A(r) dt² + B(r) dr² + C(r) (dθ² + sin²θ dφ²),
-/// given A, B, C and their r-derivatives.
-inline void spherical_diagonal(double A, double dA, double B, double dB, double C, double dC, double theta,
-                               DiagonalMetric& d) {
-  double st, ct;
-  fast_sincos(theta, st, ct);
-  d = DiagonalMetric{};
-  d.h[0] = -A;
-  d.h[1] = B;
-  d.h[2] = C;
-  d.h[3] = C * st * st;
-  d.dh[1][0] = -dA;
-  d.dh[1][1] = dB;
-  d.dh[1][2] = dC;
-  d.dh[1][3] = dC * st * st;
-  d.dh[2][3] = 2.0 * C * st * ct;
-}
+using DiagonalMetric = DiagonalMetricT<double>;
 
 /// All Γ^μ_{ab} of a diagonal metric (formulas in the file comment).
 inline void diagonal_christoffel(const DiagonalMetric& d, Christoffel& G) {
@@ -55,21 +39,6 @@ inline void diagonal_christoffel(const DiagonalMetric& d, Christoffel& G) {
         G.G[i][j][j] = -d.dh[i][j] * inv2h;
       }
     }
-  }
-}
-
-/// a^i = −Γ^i_{ab} k^a k^b = −(1 / 2h_i) (2 k^i Σ_j ∂_j h_i k^j − Σ_j ∂_i h_j (k^j)²), which is the
-/// contraction of the three cases above (the j = i terms of both sums give Γ^i_{ii}). Always
-/// inlined: it is the hot path of every diagonal metric, and in a unity unit of several metrics
-/// (CMakeLists.txt) GCC stopped inlining it into their integrators.
-GEOVIS_HOT_INLINE void diagonal_accel(const DiagonalMetric& d, const Vec4& k, Vec4& a) {
-  for (int i = 0; i < 4; ++i) {
-    double s1 = 0, s2 = 0;
-    for (int j = 0; j < 4; ++j) {
-      s1 += d.dh[j][i] * k[j];
-      s2 += d.dh[i][j] * k[j] * k[j];
-    }
-    a[i] = -(2.0 * k[i] * s1 - s2) * (0.5 / d.h[i]);
   }
 }
 

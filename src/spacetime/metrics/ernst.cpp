@@ -3,6 +3,21 @@
 //   ds² = Λ² [−f dt² + dr²/f + r² dθ²] + r² sin²θ / Λ² dφ²,   f = 1 − 2M/r,  Λ = 1 + B² r² sin²θ
 // Müller & Grave, Catalogue of Spacetimes (arXiv:0904.4184), section "Ernst spacetime";
 // F. J. Ernst, J. Math. Phys. 17 (1976) 54. B is the magnetic field strength; only B² enters.
+//
+// The acceleration is also compiled per SIMD target for packets of rays (Highway's foreach_target
+// includes this file once per target; the class is compiled once, the per-target part is
+// ernst_packet_acceleration below): g_μμ and −Γkk are the templates of ernst_accel.h.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/metrics/ernst.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+#ifndef GEOVIS_METRICS_ERNST_ONCE_
+#define GEOVIS_METRICS_ERNST_ONCE_
 #include <cmath>
 #include <string>
 
@@ -10,6 +25,10 @@
 #include "spacetime/metrics/diagonal_metric.h"
 
 namespace geovis {
+
+namespace scalar {
+#include "spacetime/metrics/ernst_accel.h"
+}  // namespace scalar
 
 class Ernst final : public MetricCRTP<Ernst> {
  public:
@@ -44,43 +63,18 @@ class Ernst final : public MetricCRTP<Ernst> {
     g[3][3] = r * r * st * st / L2;
   }
 
-  /// g_μμ and their r- and θ-derivatives, with Λ_r = 2B² r sin²θ, Λ_θ = 2B² r² sinθ cosθ,
-  /// f_r = 2M/r² (product and quotient rule on the line element above).
-  void diagonal(const Vec4& x, DiagonalMetric& d) const {
-    const double r = x[1];
-    double st, ct;
-    fast_sincos(x[2], st, ct);
-    const double f = 1.0 - rs_ / r, df = rs_ / (r * r);
-    const double L = 1.0 + B2_ * r * r * st * st;
-    const double Lr = 2.0 * B2_ * r * st * st, Lth = 2.0 * B2_ * r * r * st * ct;
-    const double L2 = L * L;
-    d = DiagonalMetric{};
-    d.h[0] = -L2 * f;
-    d.h[1] = L2 / f;
-    d.h[2] = L2 * r * r;
-    d.h[3] = r * r * st * st / L2;
-    // ∂_r
-    d.dh[1][0] = -(2.0 * L * Lr * f + L2 * df);
-    d.dh[1][1] = 2.0 * L * Lr / f - L2 * df / (f * f);
-    d.dh[1][2] = 2.0 * L * Lr * r * r + 2.0 * L2 * r;
-    d.dh[1][3] = 2.0 * r * st * st / L2 - 2.0 * r * r * st * st * Lr / (L2 * L);
-    // ∂_θ
-    d.dh[2][0] = -2.0 * L * Lth * f;
-    d.dh[2][1] = 2.0 * L * Lth / f;
-    d.dh[2][2] = 2.0 * L * Lth * r * r;
-    d.dh[2][3] = 2.0 * r * r * st * ct / L2 - 2.0 * r * r * st * st * Lth / (L2 * L);
-  }
+  /// g_μμ and their derivatives (ernst_accel.h).
+  void diagonal(const Vec4& x, DiagonalMetric& d) const { scalar::ernst_diagonal(B2_, rs_, x, d); }
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
     DiagonalMetric d;
     diagonal(x, d);
     diagonal_christoffel(d, G);
   }
-  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    DiagonalMetric d;
-    diagonal(x, d);
-    diagonal_accel(d, k, a);
-  }
+  /// −Γ^μ_{ab} k^a k^b of the diagonal metric (ernst_accel.h).
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::ernst_accel(B2_, rs_, x, k, a); }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD.
+  void packet_acceleration_simd(const double* y, double* a) const;
 
   /// Outside the horizon r = 2M and off the polar axis.
   bool is_valid(const Vec4& x) const override {
@@ -112,3 +106,28 @@ class Ernst final : public MetricCRTP<Ernst> {
 std::unique_ptr<Metric> make_metric_Ernst() { return std::make_unique<Ernst>(); }
 
 }  // namespace geovis
+#endif  // GEOVIS_METRICS_ERNST_ONCE_
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+#include "spacetime/metrics/diagonal_metric_accel.h"
+#include "spacetime/metrics/ernst_accel.h"
+
+void ernst_packet_acceleration(double B2, double rs, const double* y, double* a) {
+  packet_acceleration_simd(
+      [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { ernst_accel(B2, rs, x, k, acc); }, y, a,
+      kPacketLanes);
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace geovis {
+HWY_EXPORT(ernst_packet_acceleration);
+void Ernst::packet_acceleration_simd(const double* y, double* a) const {
+  HWY_DYNAMIC_DISPATCH(ernst_packet_acceleration)(B2_, rs_, y, a);
+}
+}  // namespace geovis
+#endif

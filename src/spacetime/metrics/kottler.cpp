@@ -3,6 +3,21 @@
 // Müller & Grave, Catalogue of Spacetimes (arXiv:0904.4184), section "Kottler".
 // The static region is where f > 0: r ∈ (r_bh, r_cosmo) for Λ > 0 (requires 9ΛM² < 1),
 // r > r_bh for Λ ≤ 0. Rays stop at both horizons (the t-coordinate is singular there).
+//
+// The acceleration is also compiled per SIMD target for packets of rays (Highway's foreach_target
+// includes this file once per target; the class is compiled once, the per-target part is
+// kottler_packet_acceleration below): g_μμ and −Γkk are the templates of kottler_accel.h.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/metrics/kottler.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+#ifndef GEOVIS_METRICS_KOTTLER_ONCE_
+#define GEOVIS_METRICS_KOTTLER_ONCE_
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -11,6 +26,10 @@
 #include "spacetime/metrics/diagonal_metric.h"
 
 namespace geovis {
+
+namespace scalar {
+#include "spacetime/metrics/kottler_accel.h"
+}  // namespace scalar
 
 class Kottler final : public MetricCRTP<Kottler> {
  public:
@@ -46,24 +65,18 @@ class Kottler final : public MetricCRTP<Kottler> {
 
   double f_of(double r) const { return 1.0 - 2.0 * M_ / r - (L_ / 3.0) * r * r; }
 
-  /// g_μμ and ∂_r g_μμ: f' = 2M/r² − 2Λr/3, (1/f)' = −f'/f².
-  void diagonal(const Vec4& x, DiagonalMetric& d) const {
-    const double r = x[1];
-    const double f = f_of(r);
-    const double df = 2.0 * M_ / (r * r) - 2.0 * L_ * r / 3.0;
-    spherical_diagonal(f, df, 1.0 / f, -df / (f * f), r * r, 2.0 * r, x[2], d);
-  }
+  /// g_μμ and their derivatives (kottler_accel.h).
+  void diagonal(const Vec4& x, DiagonalMetric& d) const { scalar::kottler_diagonal(M_, L_, x, d); }
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
     DiagonalMetric d;
     diagonal(x, d);
     diagonal_christoffel(d, G);
   }
-  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    DiagonalMetric d;
-    diagonal(x, d);
-    diagonal_accel(d, k, a);
-  }
+  /// −Γ^μ_{ab} k^a k^b of the diagonal metric (kottler_accel.h).
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::kottler_accel(M_, L_, x, k, a); }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD.
+  void packet_acceleration_simd(const double* y, double* a) const;
 
   /// Inside the static region f > 0 (between the horizons), r > 0, off the polar axis. The
   /// margin 1e-8 on f corresponds to Schwarzschild's r > r_s (1 + 1e-8).
@@ -113,3 +126,28 @@ class Kottler final : public MetricCRTP<Kottler> {
 std::unique_ptr<Metric> make_metric_Kottler() { return std::make_unique<Kottler>(); }
 
 }  // namespace geovis
+#endif  // GEOVIS_METRICS_KOTTLER_ONCE_
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+#include "spacetime/metrics/diagonal_metric_accel.h"
+#include "spacetime/metrics/kottler_accel.h"
+
+void kottler_packet_acceleration(double M, double L, const double* y, double* a) {
+  packet_acceleration_simd(
+      [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { kottler_accel(M, L, x, k, acc); }, y, a,
+      kPacketLanes);
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace geovis {
+HWY_EXPORT(kottler_packet_acceleration);
+void Kottler::packet_acceleration_simd(const double* y, double* a) const {
+  HWY_DYNAMIC_DISPATCH(kottler_packet_acceleration)(M_, L_, y, a);
+}
+}  // namespace geovis
+#endif

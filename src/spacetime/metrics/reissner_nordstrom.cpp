@@ -3,6 +3,21 @@
 //   ds² = −f dt² + dr²/f + r² (dθ² + sin²θ dφ²),   f(r) = 1 − 2M/r + Q²/r²
 // Müller & Grave, Catalogue of Spacetimes (arXiv:0904.4184), section "Reissner-Nordström".
 // Horizons r± = M ± sqrt(M² − Q²) for |Q| ≤ M; for |Q| > M the singularity r = 0 is naked.
+//
+// The acceleration is also compiled per SIMD target for packets of rays (Highway's foreach_target
+// includes this file once per target; the class is compiled once, the per-target part is
+// reissner_nordstrom_packet_acceleration below): g_μμ and −Γkk are the templates of reissner_nordstrom_accel.h.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/metrics/reissner_nordstrom.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+#ifndef GEOVIS_METRICS_REISSNER_NORDSTROM_ONCE_
+#define GEOVIS_METRICS_REISSNER_NORDSTROM_ONCE_
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -12,6 +27,10 @@
 #include "spacetime/metrics/diagonal_metric.h"
 
 namespace geovis {
+
+namespace scalar {
+#include "spacetime/metrics/reissner_nordstrom_accel.h"
+}  // namespace scalar
 
 class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
  public:
@@ -45,24 +64,18 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
     g[3][3] = r * r * st * st;
   }
 
-  /// g_μμ and ∂_r g_μμ: f' = 2M/r² − 2Q²/r³, (1/f)' = −f'/f².
-  void diagonal(const Vec4& x, DiagonalMetric& d) const {
-    const double r = x[1];
-    const double f = 1.0 - 2.0 * M_ / r + Q2_ / (r * r);
-    const double df = 2.0 * M_ / (r * r) - 2.0 * Q2_ / (r * r * r);
-    spherical_diagonal(f, df, 1.0 / f, -df / (f * f), r * r, 2.0 * r, x[2], d);
-  }
+  /// g_μμ and their derivatives (reissner_nordstrom_accel.h).
+  void diagonal(const Vec4& x, DiagonalMetric& d) const { scalar::reissner_nordstrom_diagonal(M_, Q2_, x, d); }
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
     DiagonalMetric d;
     diagonal(x, d);
     diagonal_christoffel(d, G);
   }
-  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    DiagonalMetric d;
-    diagonal(x, d);
-    diagonal_accel(d, k, a);
-  }
+  /// −Γ^μ_{ab} k^a k^b of the diagonal metric (reissner_nordstrom_accel.h).
+  void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::reissner_nordstrom_accel(M_, Q2_, x, k, a); }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD.
+  void packet_acceleration_simd(const double* y, double* a) const;
 
   /// Outside the outer horizon (or r > 0 for a naked singularity) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
@@ -124,3 +137,28 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
 std::unique_ptr<Metric> make_metric_ReissnerNordstrom() { return std::make_unique<ReissnerNordstrom>(); }
 
 }  // namespace geovis
+#endif  // GEOVIS_METRICS_REISSNER_NORDSTROM_ONCE_
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+#include "spacetime/metrics/diagonal_metric_accel.h"
+#include "spacetime/metrics/reissner_nordstrom_accel.h"
+
+void reissner_nordstrom_packet_acceleration(double M, double Q2, const double* y, double* a) {
+  packet_acceleration_simd([=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k,
+                               Vec4T<SimdD>& acc) { reissner_nordstrom_accel(M, Q2, x, k, acc); },
+                           y, a, kPacketLanes);
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace geovis {
+HWY_EXPORT(reissner_nordstrom_packet_acceleration);
+void ReissnerNordstrom::packet_acceleration_simd(const double* y, double* a) const {
+  HWY_DYNAMIC_DISPATCH(reissner_nordstrom_packet_acceleration)(M_, Q2_, y, a);
+}
+}  // namespace geovis
+#endif

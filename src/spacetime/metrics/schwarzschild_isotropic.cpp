@@ -3,6 +3,22 @@
 //   ρ = sqrt(x² + y² + z²),  ρ_s = M/2
 // Müller & Grave, Catalogue of Spacetimes (arXiv:0904.4184), section "Schwarzschild spacetime /
 // Isotropic coordinates". Schwarzschild radius: r = ρ (1 + ρ_s/ρ)²; the horizon r = 2M is ρ = ρ_s.
+//
+// The acceleration is also compiled per SIMD target for packets of rays (Highway's foreach_target
+// includes this file once per target; the class is compiled once, the per-target part is
+// schwarzschild_isotropic_packet_acceleration below): g_μμ and −Γkk are the templates of
+// schwarzschild_isotropic_accel.h.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "spacetime/metrics/schwarzschild_isotropic.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off: foreach_target must come first
+#include <hwy/highway.h>
+// clang-format on
+
+#include "spacetime/simd.h"
+
+#ifndef GEOVIS_METRICS_SCHWARZSCHILD_ISOTROPIC_ONCE_
+#define GEOVIS_METRICS_SCHWARZSCHILD_ISOTROPIC_ONCE_
 #include <cmath>
 #include <string>
 
@@ -10,6 +26,10 @@
 #include "spacetime/metrics/diagonal_metric.h"
 
 namespace geovis {
+
+namespace scalar {
+#include "spacetime/metrics/schwarzschild_isotropic_accel.h"
+}  // namespace scalar
 
 class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
  public:
@@ -39,37 +59,20 @@ class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
     g[1][1] = g[2][2] = g[3][3] = psi2 * psi2;
   }
 
-  /// ∂_j g_tt = −2α α' n_j with α' = 2ρ_s/(ρ + ρ_s)²; ∂_j g_ii = 4ψ³ ψ' n_j with ψ' = −ρ_s/ρ²,
-  /// n_j = x_j/ρ.
-  void diagonal(const Vec4& x, DiagonalMetric& d) const {
-    const double rho = std::sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
-    const double rp = rho + rho_s_;
-    const double alpha = (rho - rho_s_) / rp;
-    const double dalpha = 2.0 * rho_s_ / (rp * rp);
-    const double psi = 1.0 + rho_s_ / rho;
-    const double psi3 = psi * psi * psi;
-    const double dpsi = -rho_s_ / (rho * rho);
-    const double dtt = -2.0 * alpha * dalpha, dss = 4.0 * psi3 * dpsi;
-    d = DiagonalMetric{};
-    d.h[0] = -alpha * alpha;
-    d.h[1] = d.h[2] = d.h[3] = psi3 * psi;
-    for (int j = 1; j < 4; ++j) {
-      const double n = x[j] / rho;
-      d.dh[j][0] = dtt * n;
-      d.dh[j][1] = d.dh[j][2] = d.dh[j][3] = dss * n;
-    }
-  }
+  /// g_μμ and their derivatives (schwarzschild_isotropic_accel.h).
+  void diagonal(const Vec4& x, DiagonalMetric& d) const { scalar::schwarzschild_isotropic_diagonal(rho_s_, x, d); }
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
     DiagonalMetric d;
     diagonal(x, d);
     diagonal_christoffel(d, G);
   }
+  /// −Γ^μ_{ab} k^a k^b of the diagonal metric (schwarzschild_isotropic_accel.h).
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const {
-    DiagonalMetric d;
-    diagonal(x, d);
-    diagonal_accel(d, k, a);
+    scalar::schwarzschild_isotropic_accel(rho_s_, x, k, a);
   }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD.
+  void packet_acceleration_simd(const double* y, double* a) const;
 
   /// Outside the horizon ρ = ρ_s (margin 1e-8 as Schwarzschild). The isotropic chart also covers
   /// the second exterior ρ < ρ_s, which a ray cannot reach without crossing the horizon.
@@ -117,3 +120,28 @@ class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
 std::unique_ptr<Metric> make_metric_SchwarzschildIsotropic() { return std::make_unique<SchwarzschildIsotropic>(); }
 
 }  // namespace geovis
+#endif  // GEOVIS_METRICS_SCHWARZSCHILD_ISOTROPIC_ONCE_
+
+HWY_BEFORE_NAMESPACE();
+namespace geovis {
+namespace HWY_NAMESPACE {
+#include "spacetime/metrics/diagonal_metric_accel.h"
+#include "spacetime/metrics/schwarzschild_isotropic_accel.h"
+
+void schwarzschild_isotropic_packet_acceleration(double rho_s, const double* y, double* a) {
+  packet_acceleration_simd([=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k,
+                               Vec4T<SimdD>& acc) { schwarzschild_isotropic_accel(rho_s, x, k, acc); },
+                           y, a, kPacketLanes);
+}
+}  // namespace HWY_NAMESPACE
+}  // namespace geovis
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace geovis {
+HWY_EXPORT(schwarzschild_isotropic_packet_acceleration);
+void SchwarzschildIsotropic::packet_acceleration_simd(const double* y, double* a) const {
+  HWY_DYNAMIC_DISPATCH(schwarzschild_isotropic_packet_acceleration)(rho_s_, y, a);
+}
+}  // namespace geovis
+#endif
