@@ -263,6 +263,21 @@ std::shared_ptr<T> shaded(std::shared_ptr<T> obj, const Shader& s, int id, int c
   return obj;
 }
 
+/// A 72×32 panorama along −e_(1) of the observer of `kind` at radius r on the equator of metric
+/// `name`, the rays' radial coordinate bounded to [r_min, 100], at most 5000 steps.
+RenderJob equator_panorama_job(const char* name, double r, double r_min, TetradKind kind = TetradKind::Default) {
+  auto metric = std::shared_ptr<const Metric>(make_metric(name));
+  RenderJob job;
+  job.metric = metric;
+  job.observer.pos = Vec4{{0, r, kPi / 2, 0}};
+  job.observer.e = metric->natural_tetrad(job.observer.pos, kind);
+  job.camera = std::make_shared<PanoramaCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, 360, 160, 72, 32);
+  job.solver.box_ll = Vec4{{-1e300, r_min, -1e300, -1e300}};
+  job.solver.box_ur = Vec4{{1e300, 100, 1e300, 1e300}};
+  job.solver.max_steps = 5000;
+  return job;
+}
+
 /// Renders `job` as it is and with every step tested: the same pixels, data and steps.
 void expect_same_render(RenderJob job, double expected_free_radius) {
   job.filter = Filter::RGBpdz;
@@ -294,12 +309,7 @@ TEST(SegmentCull, SchwarzschildSceneRendersTheSameWithAndWithoutSkipping) {
   // scaled ellipsoid (its bounds 11.97 away) and a CSG solid around it (a ball with a cavity; the
   // difference lies within the outer ball's bounds, 11 away).
   static PositionShader shader;
-  auto metric = std::shared_ptr<const Metric>(make_metric("Schwarzschild"));
-  RenderJob job;
-  job.metric = metric;
-  job.observer.pos = Vec4{{0, 10, kPi / 2, 0}};
-  job.observer.e = metric->natural_tetrad(job.observer.pos, TetradKind::Static);
-  job.camera = std::make_shared<PanoramaCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, 360, 160, 72, 32);
+  RenderJob job = equator_panorama_job("Schwarzschild", 10, 0, TetradKind::Static);
   auto turned = shaded(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{1, 3, 1}), shader, 3);
   turned->set_transform(rotate_scale(40, 1.5, {-16, 4, 2}));
   auto cut = std::make_shared<CsgObject>(CsgOp::Difference,
@@ -308,9 +318,6 @@ TEST(SegmentCull, SchwarzschildSceneRendersTheSameWithAndWithoutSkipping) {
   job.scene = std::make_shared<CompoundObject>(std::vector<SceneObjectPtr>{
       shaded(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{40, 40, 40}), shader, 1),
       shaded(std::make_shared<Box>(Vec3{12, -2, -2}, Vec3{15, 2, 2}), shader, 2), turned, cut});
-  job.solver.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
-  job.solver.box_ur = Vec4{{1e300, 100, 1e300, 1e300}};
-  job.solver.max_steps = 5000;
   expect_same_render(job, 11.0);
 }
 
@@ -318,18 +325,10 @@ TEST(SegmentCull, MorrisThorneBothChartsRenderTheSameWithAndWithoutSkipping) {
   // The wormhole scene: an observer at l = 3 sees a sphere of radius 50 on each side of the
   // throat (chart 0: l > 0, chart 1: l <= 0).
   static PositionShader shader;
-  auto metric = std::shared_ptr<const Metric>(make_metric("MorrisThorne"));
-  RenderJob job;
-  job.metric = metric;
-  job.observer.pos = Vec4{{0, 3, kPi / 2, 0}};
-  job.observer.e = metric->natural_tetrad(job.observer.pos);
-  job.camera = std::make_shared<PanoramaCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, 360, 160, 72, 32);
+  RenderJob job = equator_panorama_job("MorrisThorne", 3, -100);
   job.scene = std::make_shared<CompoundObject>(std::vector<SceneObjectPtr>{
       shaded(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{50, 50, 50}), shader, 1, 0),
       shaded(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{50, 50, 50}), shader, 2, 1)});
-  job.solver.box_ll = Vec4{{-1e300, -100, -1e300, -1e300}};
-  job.solver.box_ur = Vec4{{1e300, 100, 1e300, 1e300}};
-  job.solver.max_steps = 5000;
   EXPECT_NEAR(Tracer(job).segment_cull().radius(1), 50 * (1 - SegmentCull::kMargin), 1e-10);
   expect_same_render(job, 50.0);
 }
@@ -338,18 +337,10 @@ TEST(SegmentCull, EddingtonFinkelsteinInsideTheSkyRendersTheSameWithAndWithoutSk
   // fallEddFinkIn's setting: ingoing Eddington–Finkelstein coordinates, the observer at r = 10
   // inside a sky of radius 60, here with a ball at r = 20 beside it.
   static PositionShader shader;
-  auto metric = std::shared_ptr<const Metric>(make_metric("EddFinkIn"));
-  RenderJob job;
-  job.metric = metric;
-  job.observer.pos = Vec4{{0, 10, kPi / 2, 0}};
-  job.observer.e = metric->natural_tetrad(job.observer.pos);
-  job.camera = std::make_shared<PanoramaCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, 360, 160, 72, 32);
+  RenderJob job = equator_panorama_job("EddFinkIn", 10, 0);
   job.scene = std::make_shared<CompoundObject>(std::vector<SceneObjectPtr>{
       shaded(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{60, 60, 60}), shader, 1),
       shaded(std::make_shared<Ellipsoid>(Vec3{0, 20, 0}, Vec3{2, 2, 2}), shader, 2)});
-  job.solver.box_ll = Vec4{{-1e300, 0, -1e300, -1e300}};
-  job.solver.box_ur = Vec4{{1e300, 100, 1e300, 1e300}};
-  job.solver.max_steps = 5000;
   expect_same_render(job, 18.0);
 }
 
