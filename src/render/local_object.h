@@ -71,11 +71,6 @@ class LocalFrame {
   /// x_obj(τ) and e_(0), not the whole frame: for an orthonormal tetrad the local spatial distance²
   /// of Δx = x − x_obj is Σ_i (X^i)² = g(Δx, Δx) + (X^0)², X^0 = −g(e_(0), Δx).
   bool passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineEvent& ev, double radius) const;
-  bool passes_outside(const Vec4& xa, const Vec4& xb, double tau, double radius) const {
-    WorldlineEvent ev;
-    event(tau, ev);
-    return passes_outside(xa, xb, ev, radius);
-  }
   /// Local coordinates X^a = η^{ab} g(e_(b), x − x_obj) of event x.
   Vec4 to_local(const State& s, const Vec4& x) const;
   /// x − y in coordinates, the periodic angle (φ of spherical/cylindrical charts) wrapped to

@@ -237,8 +237,10 @@ TEST(ObjLocal, PassesOutsideExactlyWhereTheMappedSegmentMissesTheBall) {
     const double s = std::clamp(-dot(pa, d) / dot(d, d), 0.0, 1.0);
     const Vec3 closest = pa + s * d;
     const double dist = std::sqrt(dot(closest, closest));
-    EXPECT_TRUE(frame.passes_outside(xa, xb, tau, 0.999 * dist)) << k;
-    EXPECT_FALSE(frame.passes_outside(xa, xb, tau, 1.001 * dist)) << k;
+    WorldlineEvent ev;
+    frame.event(tau, ev);
+    EXPECT_TRUE(frame.passes_outside(xa, xb, ev, 0.999 * dist)) << k;
+    EXPECT_FALSE(frame.passes_outside(xa, xb, ev, 1.001 * dist)) << k;
   }
 }
 
