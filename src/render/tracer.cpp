@@ -27,7 +27,7 @@ struct RayState {
   const SceneObject* scene;
   const SegmentCull* cull = nullptr;
   bool hit = false;
-  Hit best;  ///< the refined hit; until a chord hits, the fresh Hit its tests fill (test_chord)
+  Hit best;         ///< the refined hit; until a chord hits, the fresh Hit its tests fill (test_chord)
   double frac = 0;  ///< refined hit position as fraction of the step
   double lambda0 = 0, lambda1 = 0;
   double y0[kMaxSystemDim], y1[kMaxSystemDim], dy0[kMaxSystemDim], dy1[kMaxSystemDim];

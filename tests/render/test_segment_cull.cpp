@@ -286,8 +286,8 @@ void expect_hits_inside_bounds(const SceneObject& obj, int& hits, int& skipped) 
     if (!hit_found) EXPECT_TRUE(hit.object_id == -13 && !hit.valid()) << "chord " << k;
     hits += hit_found;
     skipped += beyond;
-    EXPECT_FALSE(hit_found && beyond) << "chord " << k << " (" << a.x << " " << a.y << " " << a.z << ") -> ("
-                                      << c.x << " " << c.y << " " << c.z << ")";
+    EXPECT_FALSE(hit_found && beyond) << "chord " << k << " (" << a.x << " " << a.y << " " << a.z << ") -> (" << c.x
+                                      << " " << c.y << " " << c.z << ")";
   }
 }
 
@@ -311,9 +311,9 @@ TEST(SegmentCull, ChordsThatHitAreNeverBeyondTheBounds) {
   objects.push_back(moved);
   objects.push_back(std::make_shared<Cylinder>(Vec3{-1, -1, -1}, Vec3{1, 1.5, 1.2}, 2, 2.5));
   // A transformed group of a sphere and a ring.
-  auto group = std::make_shared<CompoundObject>(std::vector<SceneObjectPtr>{
-      std::make_shared<Ellipsoid>(Vec3{4, 0, 0}, Vec3{1, 1, 1}),
-      std::make_shared<PlaneRing>(Vec3{0, 0, 0}, Vec3{0, 0, 1}, 1, 3)});
+  auto group = std::make_shared<CompoundObject>(
+      std::vector<SceneObjectPtr>{std::make_shared<Ellipsoid>(Vec3{4, 0, 0}, Vec3{1, 1, 1}),
+                                  std::make_shared<PlaneRing>(Vec3{0, 0, 0}, Vec3{0, 0, 1}, 1, 3)});
   group->set_transform(rotate_scale(20, 1.5, {0, 1, 0}));
   objects.push_back(group);
   for (size_t i = 0; i < objects.size(); ++i) {
