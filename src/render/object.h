@@ -104,9 +104,11 @@ struct Hit {
 class SceneObject {
  public:
   virtual ~SceneObject() = default;
-  /// Tests the segment; on a closer hit (0 <= s < hit.s) fills `hit` and returns true.
+  /// Tests the segment; on a closer hit (0 <= s < hit.s) fills `hit` and returns true, else
+  /// leaves `hit` as it is and returns false (the tracer reuses one Hit for the chords that miss).
   virtual bool intersect(const Segment& seg, Hit& hit) const = 0;
-  /// Bounds in pseudo-Cartesian coordinates (infinite when unknown/unbounded).
+  /// Bounds in pseudo-Cartesian coordinates (infinite when unknown/unbounded): a segment that
+  /// hits the object touches them (a compound's BVH and the tracer's SegmentCull skip the others).
   virtual Bounds3 bounds() const = 0;
   /// No point of the object lies closer to the origin than this (pseudo-Cartesian |p|; the
   /// renderer's capture radius, geodesic.h SolverConfig::capture_radius). Default: the distance

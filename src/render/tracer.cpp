@@ -15,21 +15,26 @@ namespace geovis {
 
 /// State of the hit search of one ray (tracer.h).
 struct RayState {
+  /// One end of a step's chord: its chart and squared distance |p|² from the origin, and the
+  /// pseudo-Cartesian point p itself where it is known (have_p).
+  struct ChordEnd {
+    Vec3 p;
+    double radius2 = 0;
+    int chart = 0;
+    bool have_p = false;
+  };
   const Metric* metric;
   const SceneObject* scene;
   const SegmentCull* cull = nullptr;
   bool hit = false;
-  Hit best;
+  Hit best;         ///< the refined hit; until a chord hits, the fresh Hit its tests fill (test_chord)
   double frac = 0;  ///< refined hit position as fraction of the step
   double lambda0 = 0, lambda1 = 0;
   double y0[kMaxSystemDim], y1[kMaxSystemDim], dy0[kMaxSystemDim], dy1[kMaxSystemDim];
   int dim = 8;
-  // The end of the previous step = the start of the next one (saves one transformation): its
-  // chart and radius always, its pseudo-Cartesian point where it was computed (have_prev_p).
-  bool have_prev = false, have_prev_p = false;
-  Vec3 prev_p;
-  double prev_radius = 0;
-  int prev_chart = 0;
+  // The end of the previous step = the start of the next one (saves one transformation).
+  bool have_prev = false;
+  ChordEnd prev;
 };
 
 namespace {
@@ -141,76 +146,45 @@ GeodesicResult integrate_ray(const Metric& m, bool straight, const SolverConfig&
   return m.integrate(cfg, system, y, 0.0, cb);
 }
 
-/// One end of a step's chord: its chart and distance |p| from the origin, and the
-/// pseudo-Cartesian point p itself where it is known (have_p).
-struct ChordEnd {
+/// The end at metric coordinates x, transformed to its pseudo-Cartesian point. Built from locals:
+/// p written through a reference into the end kept the end in memory, and its copy to
+/// RayState::prev then loaded wide words over the narrow stores just made (a store-forwarding
+/// stall, a third of test_step's time in perf annotate).
+GEOVIS_HOT_INLINE RayState::ChordEnd transformed_end(const Metric& m, const Vec4& x) {
   Vec3 p;
-  double radius = 0;
-  int chart = 0;
-  bool have_p = false;
-};
+  const int chart = m.to_pseudo_cartesian(x, p);
+  return {p, dot(p, p), chart, true};
+}
 
 /// The end at metric coordinates x (the integrator's pseudo-Cartesian point `given`, chart 0, where
 /// it has one): only its chart and radius where the metric gives them without transforming x
 /// (Metric::pseudo_cartesian_radius), else the transformed point.
-ChordEnd chord_end(const Metric& m, const Vec4& x, const double* given) {
-  ChordEnd e;
+GEOVIS_HOT_INLINE RayState::ChordEnd chord_end(const Metric& m, const Vec4& x, const double* given) {
   if (given) {
-    e.p = Vec3{given[0], given[1], given[2]};
-    e.have_p = true;
-  } else if (m.pseudo_cartesian_radius(x, e.radius, e.chart)) {
-    return e;
-  } else {
-    e.chart = m.to_pseudo_cartesian(x, e.p);
-    e.have_p = true;
+    const Vec3 p{given[0], given[1], given[2]};
+    return {p, dot(p, p), 0, true};
   }
-  e.radius = norm(e.p);
-  return e;
+  double radius;
+  int chart;
+  if (m.pseudo_cartesian_radius(x, radius, chart)) return {Vec3{}, radius * radius, chart, false};
+  return transformed_end(m, x);
 }
 
-/// The hit search's test of one accepted step: its chord (pseudo-Cartesian segment, paper §2.3)
-/// against the scene, unless the chord lies in the scene's empty ball of its chart (SegmentCull);
-/// a chord hit is refined on the curved step (refine_hit) and stops the ray.
-StepAction test_step(RayState& rs, const StepView& st) {
-  if (!rs.scene) return StepAction::Continue;
+/// The scene's test of the chord of step `st` from p0 in chart0 to p1 in chart1 (test_step); a
+/// chord hit is refined on the curved step (refine_hit) and stops the ray. Not inlined, and the
+/// ends by value: test_step skips most steps, and without this function's frame (the segment, the
+/// hit) and with its chord ends in registers it does so in a few instructions.
+[[gnu::noinline]] StepAction test_chord(RayState& rs, const StepView& st, Vec3 p0, Vec3 p1, int chart0, int chart1) {
   const Metric& mm = *rs.metric;
-  Segment seg;
-  seg.x0 = vec4_at(st.y0);
-  seg.x1 = vec4_at(st.y1);
-  ChordEnd e0;
-  if (rs.have_prev) {
-    e0.chart = rs.prev_chart;
-    e0.radius = rs.prev_radius;
-    e0.have_p = rs.have_prev_p;
-    e0.p = rs.prev_p;
-  } else {
-    e0 = chord_end(mm, seg.x0, st.p0);
+  const Segment seg{vec4_at(st.y0), vec4_at(st.y1), p0, p1, chart0, chart1, &st, &mm};
+  // rs.best is a fresh Hit until a chord hits, and an object that finds no hit leaves it as it is
+  // (SceneObject::intersect): no 200-byte Hit to clear per tested chord (rep stos, half of this
+  // function's time on sphereAroundBlackhole in perf annotate).
+  if (!rs.scene->intersect(seg, rs.best)) return StepAction::Continue;
+  if (!refine_hit(st, seg, *rs.scene, mm, rs.best, rs.frac)) {
+    rs.best = Hit{};  // a grazing ray: no hit, the next chords are tested afresh
+    return StepAction::Continue;
   }
-  ChordEnd e1 = chord_end(mm, seg.x1, st.p1);
-  rs.have_prev = true;
-  rs.prev_chart = e1.chart;
-  rs.prev_radius = e1.radius;
-  rs.have_prev_p = e1.have_p;
-  rs.prev_p = e1.p;
-  if (rs.cull && rs.cull->excludes(e0.chart, e0.radius, e1.chart, e1.radius)) return StepAction::Continue;
-  // The chord is tested: both pseudo-Cartesian ends (the charts from the radius agree with
-  // to_pseudo_cartesian's, Metric::pseudo_cartesian_radius).
-  if (!e0.have_p) e0.chart = mm.to_pseudo_cartesian(seg.x0, e0.p);
-  if (!e1.have_p) {
-    e1.chart = mm.to_pseudo_cartesian(seg.x1, e1.p);
-    rs.have_prev_p = true;
-    rs.prev_p = e1.p;
-  }
-  seg.p0 = e0.p;
-  seg.p1 = e1.p;
-  seg.chart0 = e0.chart;
-  seg.chart1 = e1.chart;
-  seg.step = &st;
-  seg.metric = &mm;
-  Hit h;
-  if (!rs.scene->intersect(seg, h)) return StepAction::Continue;
-  rs.best = h;
-  if (!refine_hit(st, seg, *rs.scene, mm, rs.best, rs.frac)) return StepAction::Continue;
   rs.hit = true;
   rs.lambda0 = st.lambda0;
   rs.lambda1 = st.lambda1;
@@ -222,6 +196,30 @@ StepAction test_step(RayState& rs, const StepView& st) {
     rs.dy1[i] = st.dy1[i];
   }
   return StepAction::Stop;
+}
+
+/// The hit search's test of one accepted step: its chord (pseudo-Cartesian segment, paper §2.3)
+/// against the scene (test_chord), unless the chord lies in the scene's empty ball of its chart
+/// or beyond its bounding box (SegmentCull: a few compares, before the ends are transformed where
+/// the ball already excludes the chord).
+StepAction test_step(RayState& rs, const StepView& st) {
+  if (!rs.scene) return StepAction::Continue;
+  const Metric& mm = *rs.metric;
+  RayState::ChordEnd e0 = rs.have_prev ? rs.prev : chord_end(mm, vec4_at(st.y0), st.p0);
+  RayState::ChordEnd e1 = chord_end(mm, vec4_at(st.y1), st.p1);
+  rs.have_prev = true;
+  rs.prev = e1;
+  const SegmentCull& cull = *rs.cull;
+  if (cull.inside_empty_ball(e0.chart, e0.radius2, e1.chart, e1.radius2)) return StepAction::Continue;
+  // Both pseudo-Cartesian ends (the charts from the radius agree with to_pseudo_cartesian's,
+  // Metric::pseudo_cartesian_radius).
+  if (!e0.have_p) e0 = transformed_end(mm, vec4_at(st.y0));
+  if (!e1.have_p) {
+    e1 = transformed_end(mm, vec4_at(st.y1));
+    rs.prev = e1;
+  }
+  if (cull.outside_bounds(e0.p, e1.p)) return StepAction::Continue;
+  return test_chord(rs, st, e0.p, e1.p, e0.chart, e1.chart);
 }
 
 /// Hit search: integrates the ray (integrate_ray) and tests every accepted step (test_step).
