@@ -127,8 +127,9 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev
   const double lo = bounded ? motion_->tau_min() : -inf, hi = bounded ? motion_->tau_max() : inf;
   tau = std::clamp(tau, lo, hi);
   for (int it = 0; it < 20; ++it) {
-    // Only the event and e_(0) are needed, not the whole frame.
-    event(tau, ev);
+    // Only the event and e_(0) are needed, not the whole frame; a search started where the last
+    // one ended (intersect_piece's refinement) finds that event in `ev` already.
+    if (!(ev.tau == tau)) event(tau, ev);
     // f(τ) = g(e0, x − x_obj(τ)); df/dτ = −g(u, u) + g(∇_u e0, Δx) = 1 for geodesic or uniform
     // motion (and 1 + O(a·Δx) otherwise), so the Newton step is τ − f.
     const double f = dot(ev.g, ev.e0, delta(x, ev.x));
@@ -153,8 +154,16 @@ bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineE
   // to_local is linear in Δx: the mapped segment is Δx(s) = a + s b, s ∈ [0, 1], and its
   // distance² the quadratic A + 2Bs + Cs² in the spatial form Q(v, w) = g(v, w) + g(e0, v) g(e0, w).
   const Vec4 a = delta(xa, x_obj), b = delta(xb, x_obj) - a;
-  const double ea = dot(g, e0, a), eb = dot(g, e0, b), gaa = dot(g, a, a), gbb = dot(g, b, b);
-  const double A = gaa + ea * ea, B = dot(g, a, b) + ea * eb, C = gbb + eb * eb;
+  // The five forms are dot products with g a and g b (two matrix products instead of five
+  // quadratic forms; the rounding differs from dot(g, ·, ·) far below the margins below).
+  Vec4 ga, gb;
+  for (int mu = 0; mu < 4; ++mu) {
+    ga[mu] = (g[mu][0] * a[0] + g[mu][1] * a[1]) + (g[mu][2] * a[2] + g[mu][3] * a[3]);
+    gb[mu] = (g[mu][0] * b[0] + g[mu][1] * b[1]) + (g[mu][2] * b[2] + g[mu][3] * b[3]);
+  }
+  auto dot4 = [](const Vec4& v, const Vec4& w) { return (v[0] * w[0] + v[1] * w[1]) + (v[2] * w[2] + v[3] * w[3]); };
+  const double ea = dot4(e0, ga), eb = dot4(e0, gb), gaa = dot4(a, ga), gbb = dot4(b, gb);
+  const double A = gaa + ea * ea, B = dot4(a, gb) + ea * eb, C = gbb + eb * eb;
   const double s = C > 0 ? std::clamp(-B / C, 0.0, 1.0) : 0.0;
   const double d2 = A + s * (2 * B + s * C);
   // The sums cancel to rounding (~1e-16) of the size of their terms, and the tetrad of state() is
@@ -165,8 +174,14 @@ bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineE
 
 Vec4 LocalFrame::body_velocity(const State& s, const Vec3& X, const Vec4& x_hit) const {
   Vec4 w = s.e[0];
-  if (motion_ && (X.x != 0 || X.y != 0 || X.z != 0)) {
-    // d/dτ [x_obj(τ) + X^i e_(i)(τ)] = u + X^i de_(i)/dτ, central difference.
+  if (sampled_ && (X.x != 0 || X.y != 0 || X.z != 0)) {
+    // d/dτ [x_obj(τ) + X^i e_(i)(τ)] = u + X^i de_(i)/dτ, with de_(i)/dτ of the interpolated
+    // tetrad from the derivatives the motion stored at its nodes (the transport equation's).
+    const Tetrad de = sampled_->frame_derivative_at(s.tau);
+    for (int i = 1; i < 4; ++i)
+      for (int mu = 0; mu < 4; ++mu) w[mu] += X[i - 1] * de[i][mu];
+  } else if (motion_ && (X.x != 0 || X.y != 0 || X.z != 0)) {
+    // The same derivative by a central difference.
     const double h = 1e-4 * (1.0 + std::fabs(s.tau));
     double ta = s.tau - h, tb = s.tau + h;
     if (!motion_->unbounded()) ta = std::max(motion_->tau_min(), ta), tb = std::min(motion_->tau_max(), tb);

@@ -265,6 +265,32 @@ TEST(ObjLocal, FrameFromTheSearchedEventIsTheFrameAtItsProperTime) {
   }
 }
 
+TEST(ObjLocal, BodyVelocityOfASampledMotionFromTheStoredFrameDerivative) {
+  // The four-velocity of a body point at local X, d/dτ [x_obj + X^i e_(i)] normalised, takes
+  // de_(i)/dτ of a sampled motion from its nodes' derivatives (SampledMotion::frame_derivative_at);
+  // it must agree with the central difference of the interpolated frames (its value before) to
+  // that difference's own error, and be a unit timelike vector at the hit event.
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  const LocalFrame frame(m, make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()));
+  const Motion& motion = *frame.motion();
+  for (double tau : {-3.21, 0.05, 9.5, 41.234, motion.samples()[150].tau}) {
+    const LocalFrame::State st = frame.state(tau);
+    const Vec3 X{0.3, -0.2, 0.35};
+    const Vec4 x_hit = st.x + X.x * st.e[1] + X.y * st.e[2] + X.z * st.e[3];
+    const Vec4 w = frame.body_velocity(st, X, x_hit);
+    const double h = 1e-4 * (1.0 + std::fabs(tau));
+    const MotionSample a = motion.at_proper_time(tau - h), b = motion.at_proper_time(tau + h);
+    Vec4 expected = st.e[0];
+    for (int i = 1; i < 4; ++i)
+      for (int mu = 0; mu < 4; ++mu) expected[mu] += X[i - 1] * (b.e[i][mu] - a.e[i][mu]) / (2 * h);
+    Mat4 g;
+    m->metric_tensor(x_hit, g);
+    expected = (1.0 / std::sqrt(-dot(g, expected, expected))) * expected;
+    for (int mu = 0; mu < 4; ++mu) EXPECT_NEAR(w[mu], expected[mu], 1e-9) << tau << " " << mu;
+    EXPECT_NEAR(dot(g, w, w), -1.0, 1e-14) << tau;
+  }
+}
+
 TEST(ObjLocal, DeltaWrapsTheAzimuthAsRemainder) {
   // LocalFrame::delta skips std::remainder for |Δφ| <= π, where it returns Δφ itself; across and
   // at the boundary the results must be remainder's bit for bit.
