@@ -308,6 +308,11 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
   }
 }
 
+double LocalObject::inner_radius() const {
+  if (tube_.empty()) return SceneObject::inner_radius();
+  return std::sqrt(tube_inner2_);  // shrunk by 1e-9 for rounding, as world_tube_test uses it
+}
+
 double LocalObject::time_extent(const LocalFrame::State& s) const {
   // max over |X| <= R of |X^i e_(i)^0| = R ‖(e_(1)^0, e_(2)^0, e_(3)^0)‖, widened by 25% like
   // the spatial radius.

@@ -106,6 +106,10 @@ class LocalObject final : public SceneObject {
   LocalObject(SceneObjectPtr child, LocalFrame frame);
   bool intersect(const Segment& seg, Hit& hit) const override;
   Bounds3 bounds() const override { return bounds_; }
+  /// A sampled world tube: the inner radius of its shell (every tube box, hence the body at every
+  /// time, lies outside it; an orbit's tube is a ring whose bounds hold the origin); else the
+  /// distance of the bounds. The tracer's capture radius and empty ball (render/segment_cull.h).
+  double inner_radius() const override;
   const LocalFrame& frame() const { return frame_; }
   const SceneObjectPtr& child() const { return child_; }
   /// Radius of the object's bounding sphere about the local origin (local length units).
