@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "object_test_helpers.h"
@@ -360,6 +361,34 @@ TEST(ObjLocal, EveryPointOfABodyOnAnOrbitIsFoundThroughItsWorldTube) {
     EXPECT_NEAR(norm(hit.point), 0.5, 1e-9) << k;
     EXPECT_NEAR(hit.s, 0.5, 1e-6) << k;
   }
+}
+
+TEST(ObjLocal, InnerRadiusOfASampledTubeHoldsNoPointOfTheBody) {
+  // The tracer captures the rays that fall below the scene's inner radius and skips the steps
+  // inside it (spacetime/capture.h, render/segment_cull.h). A ball of radius 0.5 on the circular
+  // orbit at r = 6M of paper §3: its tube's bounds hold the origin (distance 0), its inner radius
+  // is the shell's; no point of the body's surface, at any time, may lie below it (its innermost
+  // point, along −e_(3) = −r̂, at r ≈ 6 − 0.5·√(1 − 2M/r) ≈ 5.59).
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  const LocalFrame frame(m, make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()));
+  const LocalObject obj(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0.5}), frame);
+  EXPECT_EQ(obj.bounds().distance_from_origin(), 0.0);
+  const double inner = obj.inner_radius();
+  EXPECT_GT(inner, 4.5);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> ut(-10, 70);
+  std::normal_distribution<double> nd;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 2000; ++k) {
+    const LocalFrame::State st = frame.state(ut(rng));
+    const Vec3 n = k % 2 == 0 ? Vec3{0, 0, -1} : normalize(Vec3{nd(rng), nd(rng), nd(rng)});
+    Vec3 p;
+    m->to_pseudo_cartesian(st.x + 0.5 * (n.x * st.e[1] + n.y * st.e[2] + n.z * st.e[3]), p);
+    EXPECT_GE(norm(p), inner) << k << " tau " << st.tau;
+    nearest = std::min(nearest, norm(p));
+  }
+  EXPECT_NEAR(nearest, 6 - 0.5 * std::sqrt(1 - 2.0 / 6), 1e-3);
+  EXPECT_LT(nearest - inner, 1.0);  // the shell's margins: ‖J E‖ and 25 % on the radius, box corners
 }
 
 TEST(ObjLocal, FactoryLocalCompObjectAndMovingPrimitive) {
