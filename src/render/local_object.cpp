@@ -256,12 +256,14 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
     return;
   }
   const auto& samples = frame_.motion()->samples();
-  double dt_max = 0;
+  double dt_max = 0, r_min = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i + 1 < samples.size() || (samples.size() == 1 && i == 0); ++i) {
     const size_t j = std::min(i + 1, samples.size() - 1);
     const LocalFrame::State a = frame_.state(samples[i].tau), b = frame_.state(samples[j].tau),
                             mid = frame_.state(0.5 * (samples[i].tau + samples[j].tau));
-    const double r = std::max({pseudo_cartesian_radius(a), pseudo_cartesian_radius(b), pseudo_cartesian_radius(mid)});
+    const double ra = pseudo_cartesian_radius(a), rb = pseudo_cartesian_radius(b), rm = pseudo_cartesian_radius(mid);
+    const double r = std::max({ra, rb, rm});
+    r_min = std::min({r_min, ra, rb, rm});
     dt_max = std::max({dt_max, time_extent(a), time_extent(b), time_extent(mid)});
     TubeBox tb;
     tb.t0 = std::min(a.x[0], b.x[0]);
@@ -292,6 +294,8 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
     r_out2 = std::max(r_out2, far * far);
   }
   tube_inner2_ = r_in * r_in * (1 - 1e-9);
+  const double r_accept = kAcceptRadiusFraction * r_min;
+  accept2_ = r_accept * r_accept;
   tube_outer2_ = r_out2 * (1 + 1e-9);
   // An event of the body (local time 0, |X| <= R) lies at coordinate time t_obj + X^i e_(i)^0:
   // the worldline piece to look at is the segment's time range widened by max |X^i e_(i)^0|.
@@ -654,8 +658,11 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     Vec3 pc_obj;
     frame_.metric().to_pseudo_cartesian(best_state.x, pc_obj);
     const Vec3 pc_hit = seg.p0 + best.s * (seg.p1 - seg.p0);
-    const double r = pseudo_cartesian_radius(best_state);
-    if (dot(pc_hit - pc_obj, pc_hit - pc_obj) > r * r) return false;
+    const double d2 = dot(pc_hit - pc_obj, pc_hit - pc_obj);
+    if (!(d2 <= accept2_)) {
+      const double r = pseudo_cartesian_radius(best_state);
+      if (d2 > r * r) return false;
+    }
   }
   best.emitter_u = frame_.body_velocity(best_state, best.point, x_hit);
   best.keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)

@@ -391,6 +391,38 @@ TEST(ObjLocal, InnerRadiusOfASampledTubeHoldsNoPointOfTheBody) {
   EXPECT_LT(nearest - inner, 1.0);  // the shell's margins: ‖J E‖ and 25 % on the radius, box corners
 }
 
+TEST(ObjLocal, AcceptRadiusIsBelowTheRadiusAlongTheMotion) {
+  // intersect_piece accepts a hit within accept_radius() of its worldline event without the
+  // pseudo-Cartesian radius at the hit's frame: that must never exceed the radius anywhere along
+  // the motion, between the samples too. The circular orbit at r = 6M (radius constant) and a
+  // radial fall from r = 10M to near the horizon (‖J E‖ changing fastest at the end).
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  ParamSet fall("init-motion", SourceLoc{"fall.scm", 1});
+  fall.add("type", "Geodesic");
+  fall.add("pos", std::vector<double>{0.0, 10.0, M_PI / 2, 0.0});
+  fall.add("localvel", std::vector<double>{0, 0, 0});
+  fall.add("maxnumpoints", 1000);
+  fall.add("forward", 33.5);  // the horizon at τ = 33.71
+  SolverConfig fall_solver;
+  fall_solver.step_ctrl = false;
+  fall_solver.step_size = 0.05;
+  for (const MotionPtr& motion : {make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()),
+                                  make_motion(fall, m, fall_solver)}) {
+    const LocalFrame frame(m, motion);
+    const LocalObject obj(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0.5}), frame);
+    const double accept = obj.accept_radius();
+    EXPECT_GT(accept, 0.0);
+    double closest = std::numeric_limits<double>::infinity();
+    const double lo = motion->tau_min(), hi = motion->tau_max();
+    for (int k = 0; k <= 20000; ++k) {
+      const double r = obj.pseudo_cartesian_radius(frame.state(lo + (hi - lo) * k / 20000));
+      closest = std::min(closest, r / accept);
+    }
+    EXPECT_GT(closest, 1.0);
+    EXPECT_LT(closest, 1.2);  // the fraction 0.9 of the samples' smallest radius
+  }
+}
+
 TEST(ObjLocal, FactoryLocalCompObjectAndMovingPrimitive) {
   BuildContext ctx;
   ctx.metric = minkowski();
