@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/error.h"
 #include "render/compound.h"
@@ -94,12 +95,7 @@ LocalFrame::State LocalFrame::state(double tau) const {
 
 LocalFrame::State LocalFrame::state(const WorldlineEvent& ev) const {
   if (!sampled_) return state(ev.tau);
-  State s;
-  s.tau = ev.tau;
-  s.x = ev.x;
-  s.e = sampled_->frame_at(ev);
-  s.g = ev.g;
-  return s;
+  return State{ev.tau, ev.x, sampled_->frame_at(ev), ev.g};  // each member once (no zeroing first)
 }
 
 Vec4 LocalFrame::delta(const Vec4& x, const Vec4& y) const {
@@ -577,17 +573,17 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     tau = samples[k].tau;
     ev.interval = samples.size() > 1 ? std::min(k, samples.size() - 2) : 0;
   }
-  Hit best;
-  bool found = false;
-  LocalFrame::State best_state;
+  // The hit and its frame so far (optional: nothing is built for the many segments that the first
+  // test below rules out).
+  std::optional<Hit> best;
+  std::optional<LocalFrame::State> best_state;
   // A rotating frame: the first estimate maps each end of the segment with the frame of its own
   // time. Consecutive segments then join in the local frame (a polyline along the ray's spiral);
   // with one frozen frame per segment the local path would jump between segments by the turn of
   // the frame, and a ray that crosses a thin part far from the axis inside such a jump would
   // miss it (holes near the tip of a clock hand). The frozen-frame iteration below then places
   // the hit exactly; where it loses a grazing hit, this estimate is kept.
-  Hit polyline;
-  bool have_polyline = false;
+  std::optional<Hit> polyline;
   if (rotation_rate_ > 0) {
     PieceEnds own;
     if (!ends) {
@@ -604,17 +600,15 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     ls.chart0 = ls.chart1 = child_->chart;
     ls.metric = seg.metric;
     polyline = hit;
-    if (!child_->intersect(ls, polyline)) return false;
-    have_polyline = true;
-    x_ref = seg.x0 + polyline.s * dseg;
-    tau = ta + polyline.s * (tb - ta);
+    if (!child_->intersect(ls, *polyline)) return false;
+    x_ref = seg.x0 + polyline->s * dseg;
+    tau = ta + polyline->s * (tb - ta);
   }
   for (int iter = 0; iter < 12; ++iter) {
     double tau_new = tau;
     if (!frame_.simultaneous_tau(x_ref, tau_new, ev)) break;
-    if (found && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) break;
+    if (best && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) break;
     tau = tau_new;
-    LocalFrame::State st;
     if (!tube_.empty()) {
       // A sampled motion's full frame (interpolated and orthonormalized) is costly: first rule
       // out, from the event and e_(0) alone, a segment that passes outside the body's bounding
@@ -622,10 +616,8 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
       // the one the search ended at.
       if (ev.tau != tau) frame_.event(tau, ev);
       if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) break;
-      st = frame_.state(ev);
-    } else {
-      st = frame_.state(tau);
     }
+    const LocalFrame::State st = tube_.empty() ? frame_.state(tau) : frame_.state(ev);
     const Vec4 X0 = frame_.to_local(st, seg.x0), X1 = frame_.to_local(st, seg.x1);
     Segment ls;
     ls.x0 = seg.x0;  // world coordinate times for Hit::time
@@ -638,35 +630,33 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     if (!child_->intersect(ls, h)) break;  // keep the previous estimate when refinement loses it
     best = h;
     best_state = st;
-    found = true;
     if (!frame_.moving()) break;
     x_ref = seg.x0 + h.s * dseg;
   }
-  if (!found && have_polyline) {
+  if (!best && polyline) {
     best = polyline;
     double t_hit = tau;
     frame_.simultaneous_tau(x_ref, t_hit);
     best_state = frame_.state(t_hit);
-    found = true;
   }
-  if (!found) return false;
-  const Vec4 x_hit = seg.x0 + best.s * dseg;
+  if (!best) return false;
+  const Vec4 x_hit = seg.x0 + best->s * dseg;
   // The local coordinates are first-order in x − x_obj: only trust a hit whose event lies near
   // the worldline (within the pseudo-Cartesian radius of the body at τ), not a spurious
   // intersection of the linearised map of far-away events.
   if (frame_.moving()) {
     Vec3 pc_obj;
-    frame_.metric().to_pseudo_cartesian(best_state.x, pc_obj);
-    const Vec3 pc_hit = seg.p0 + best.s * (seg.p1 - seg.p0);
+    frame_.metric().to_pseudo_cartesian(best_state->x, pc_obj);
+    const Vec3 pc_hit = seg.p0 + best->s * (seg.p1 - seg.p0);
     const double d2 = dot(pc_hit - pc_obj, pc_hit - pc_obj);
     if (!(d2 <= accept2_)) {
-      const double r = pseudo_cartesian_radius(best_state);
+      const double r = pseudo_cartesian_radius(*best_state);
       if (d2 > r * r) return false;
     }
   }
-  best.emitter_u = frame_.body_velocity(best_state, best.point, x_hit);
-  best.keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)
-  hit = best;
+  best->emitter_u = frame_.body_velocity(*best_state, best->point, x_hit);
+  best->keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)
+  hit = *best;
   return true;
 }
 
