@@ -573,8 +573,16 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     tau = samples[k].tau;
     ev.interval = samples.size() > 1 ? std::min(k, samples.size() - 2) : 0;
   }
-  // The hit and its frame so far (optional: nothing is built for the many segments that the first
-  // test below rules out).
+  if (!tube_.empty()) {
+    // A sampled motion's full frame (interpolated and orthonormalized) is costly: first rule out,
+    // from the event simultaneous with the middle of the segment and its e_(0) alone, a segment
+    // that passes outside the body's bounding sphere (the child test would miss it), before
+    // anything else is built; the loop below completes the frame from that event.
+    if (!frame_.simultaneous_tau(x_ref, tau, ev)) return false;
+    if (ev.tau != tau) frame_.event(tau, ev);
+    if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) return false;
+  }
+  // The hit and its frame so far.
   std::optional<Hit> best;
   std::optional<LocalFrame::State> best_state;
   // A rotating frame: the first estimate maps each end of the segment with the frame of its own
@@ -605,17 +613,16 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     tau = ta + polyline->s * (tb - ta);
   }
   for (int iter = 0; iter < 12; ++iter) {
-    double tau_new = tau;
-    if (!frame_.simultaneous_tau(x_ref, tau_new, ev)) break;
-    if (best && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) break;
-    tau = tau_new;
-    if (!tube_.empty()) {
-      // A sampled motion's full frame (interpolated and orthonormalized) is costly: first rule
-      // out, from the event and e_(0) alone, a segment that passes outside the body's bounding
-      // sphere (the child test below would miss it); the frame is then completed from that event,
-      // the one the search ended at.
-      if (ev.tau != tau) frame_.event(tau, ev);
-      if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) break;
+    if (iter > 0 || tube_.empty()) {  // (a sampled tube's first search and test: above)
+      double tau_new = tau;
+      if (!frame_.simultaneous_tau(x_ref, tau_new, ev)) break;
+      if (best && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) break;
+      tau = tau_new;
+      if (!tube_.empty()) {
+        // The same test at the event of the refined τ (the frame is completed from it).
+        if (ev.tau != tau) frame_.event(tau, ev);
+        if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) break;
+      }
     }
     const LocalFrame::State st = tube_.empty() ? frame_.state(tau) : frame_.state(ev);
     const Vec4 X0 = frame_.to_local(st, seg.x0), X1 = frame_.to_local(st, seg.x1);
