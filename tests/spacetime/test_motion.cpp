@@ -183,7 +183,7 @@ TEST(Motion, FrameDerivativeIsTheParallelTransportAlongTheOrbit) {
         double transport = 0;
         for (int al = 0; al < 4; ++al)
           for (int be = 0; be < 4; ++be) transport -= G.G[mu][al][be] * s.u[al] * s.e[a][be];
-        EXPECT_NEAR(de[a][mu], transport, 1e-7) << tau << " e" << a << "^" << mu;
+        EXPECT_NEAR(de[a][mu], transport, 1e-9) << tau << " e" << a << "^" << mu;
         largest = std::max(largest, std::fabs(transport));
       }
   }
