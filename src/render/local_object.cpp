@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/error.h"
 #include "render/compound.h"
@@ -94,12 +95,7 @@ LocalFrame::State LocalFrame::state(double tau) const {
 
 LocalFrame::State LocalFrame::state(const WorldlineEvent& ev) const {
   if (!sampled_) return state(ev.tau);
-  State s;
-  s.tau = ev.tau;
-  s.x = ev.x;
-  s.e = sampled_->frame_at(ev);
-  s.g = ev.g;
-  return s;
+  return State{ev.tau, ev.x, sampled_->frame_at(ev), ev.g};  // each member once (no zeroing first)
 }
 
 Vec4 LocalFrame::delta(const Vec4& x, const Vec4& y) const {
@@ -127,8 +123,9 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev
   const double lo = bounded ? motion_->tau_min() : -inf, hi = bounded ? motion_->tau_max() : inf;
   tau = std::clamp(tau, lo, hi);
   for (int it = 0; it < 20; ++it) {
-    // Only the event and e_(0) are needed, not the whole frame.
-    event(tau, ev);
+    // Only the event and e_(0) are needed, not the whole frame; a search started where the last
+    // one ended (intersect_piece's refinement) finds that event in `ev` already.
+    if (!(ev.tau == tau)) event(tau, ev);
     // f(τ) = g(e0, x − x_obj(τ)); df/dτ = −g(u, u) + g(∇_u e0, Δx) = 1 for geodesic or uniform
     // motion (and 1 + O(a·Δx) otherwise), so the Newton step is τ − f.
     const double f = dot(ev.g, ev.e0, delta(x, ev.x));
@@ -153,8 +150,16 @@ bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineE
   // to_local is linear in Δx: the mapped segment is Δx(s) = a + s b, s ∈ [0, 1], and its
   // distance² the quadratic A + 2Bs + Cs² in the spatial form Q(v, w) = g(v, w) + g(e0, v) g(e0, w).
   const Vec4 a = delta(xa, x_obj), b = delta(xb, x_obj) - a;
-  const double ea = dot(g, e0, a), eb = dot(g, e0, b), gaa = dot(g, a, a), gbb = dot(g, b, b);
-  const double A = gaa + ea * ea, B = dot(g, a, b) + ea * eb, C = gbb + eb * eb;
+  // The five forms are dot products with g a and g b (two matrix products instead of five
+  // quadratic forms; the rounding differs from dot(g, ·, ·) far below the margins below).
+  Vec4 ga, gb;
+  for (int mu = 0; mu < 4; ++mu) {
+    ga[mu] = (g[mu][0] * a[0] + g[mu][1] * a[1]) + (g[mu][2] * a[2] + g[mu][3] * a[3]);
+    gb[mu] = (g[mu][0] * b[0] + g[mu][1] * b[1]) + (g[mu][2] * b[2] + g[mu][3] * b[3]);
+  }
+  auto dot4 = [](const Vec4& v, const Vec4& w) { return (v[0] * w[0] + v[1] * w[1]) + (v[2] * w[2] + v[3] * w[3]); };
+  const double ea = dot4(e0, ga), eb = dot4(e0, gb), gaa = dot4(a, ga), gbb = dot4(b, gb);
+  const double A = gaa + ea * ea, B = dot4(a, gb) + ea * eb, C = gbb + eb * eb;
   const double s = C > 0 ? std::clamp(-B / C, 0.0, 1.0) : 0.0;
   const double d2 = A + s * (2 * B + s * C);
   // The sums cancel to rounding (~1e-16) of the size of their terms, and the tetrad of state() is
@@ -165,8 +170,14 @@ bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineE
 
 Vec4 LocalFrame::body_velocity(const State& s, const Vec3& X, const Vec4& x_hit) const {
   Vec4 w = s.e[0];
-  if (motion_ && (X.x != 0 || X.y != 0 || X.z != 0)) {
-    // d/dτ [x_obj(τ) + X^i e_(i)(τ)] = u + X^i de_(i)/dτ, central difference.
+  if (sampled_ && (X.x != 0 || X.y != 0 || X.z != 0)) {
+    // d/dτ [x_obj(τ) + X^i e_(i)(τ)] = u + X^i de_(i)/dτ, with de_(i)/dτ of the interpolated
+    // tetrad from the derivatives the motion stored at its nodes (the transport equation's).
+    const Tetrad de = sampled_->frame_derivative_at(s.tau);
+    for (int i = 1; i < 4; ++i)
+      for (int mu = 0; mu < 4; ++mu) w[mu] += X[i - 1] * de[i][mu];
+  } else if (motion_ && (X.x != 0 || X.y != 0 || X.z != 0)) {
+    // The same derivative by a central difference.
     const double h = 1e-4 * (1.0 + std::fabs(s.tau));
     double ta = s.tau - h, tb = s.tau + h;
     if (!motion_->unbounded()) ta = std::max(motion_->tau_min(), ta), tb = std::min(motion_->tau_max(), tb);
@@ -241,12 +252,14 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
     return;
   }
   const auto& samples = frame_.motion()->samples();
-  double dt_max = 0;
+  double dt_max = 0, r_min = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i + 1 < samples.size() || (samples.size() == 1 && i == 0); ++i) {
     const size_t j = std::min(i + 1, samples.size() - 1);
     const LocalFrame::State a = frame_.state(samples[i].tau), b = frame_.state(samples[j].tau),
                             mid = frame_.state(0.5 * (samples[i].tau + samples[j].tau));
-    const double r = std::max({pseudo_cartesian_radius(a), pseudo_cartesian_radius(b), pseudo_cartesian_radius(mid)});
+    const double ra = pseudo_cartesian_radius(a), rb = pseudo_cartesian_radius(b), rm = pseudo_cartesian_radius(mid);
+    const double r = std::max({ra, rb, rm});
+    r_min = std::min({r_min, ra, rb, rm});
     dt_max = std::max({dt_max, time_extent(a), time_extent(b), time_extent(mid)});
     TubeBox tb;
     tb.t0 = std::min(a.x[0], b.x[0]);
@@ -277,6 +290,8 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
     r_out2 = std::max(r_out2, far * far);
   }
   tube_inner2_ = r_in * r_in * (1 - 1e-9);
+  const double r_accept = kAcceptRadiusFraction * r_min;
+  accept2_ = r_accept * r_accept;
   tube_outer2_ = r_out2 * (1 + 1e-9);
   // An event of the body (local time 0, |X| <= R) lies at coordinate time t_obj + X^i e_(i)^0:
   // the worldline piece to look at is the segment's time range widened by max |X^i e_(i)^0|.
@@ -291,6 +306,11 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
     }
     chunks_.push_back(c);
   }
+}
+
+double LocalObject::inner_radius() const {
+  if (tube_.empty()) return SceneObject::inner_radius();
+  return std::sqrt(tube_inner2_);  // shrunk by 1e-9 for rounding, as world_tube_test uses it
 }
 
 double LocalObject::time_extent(const LocalFrame::State& s) const {
@@ -553,17 +573,25 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     tau = samples[k].tau;
     ev.interval = samples.size() > 1 ? std::min(k, samples.size() - 2) : 0;
   }
-  Hit best;
-  bool found = false;
-  LocalFrame::State best_state;
+  if (!tube_.empty()) {
+    // A sampled motion's full frame (interpolated and orthonormalized) is costly: first rule out,
+    // from the event simultaneous with the middle of the segment and its e_(0) alone, a segment
+    // that passes outside the body's bounding sphere (the child test would miss it), before
+    // anything else is built; the loop below completes the frame from that event.
+    if (!frame_.simultaneous_tau(x_ref, tau, ev)) return false;
+    if (ev.tau != tau) frame_.event(tau, ev);
+    if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) return false;
+  }
+  // The hit and its frame so far.
+  std::optional<Hit> best;
+  std::optional<LocalFrame::State> best_state;
   // A rotating frame: the first estimate maps each end of the segment with the frame of its own
   // time. Consecutive segments then join in the local frame (a polyline along the ray's spiral);
   // with one frozen frame per segment the local path would jump between segments by the turn of
   // the frame, and a ray that crosses a thin part far from the axis inside such a jump would
   // miss it (holes near the tip of a clock hand). The frozen-frame iteration below then places
   // the hit exactly; where it loses a grazing hit, this estimate is kept.
-  Hit polyline;
-  bool have_polyline = false;
+  std::optional<Hit> polyline;
   if (rotation_rate_ > 0) {
     PieceEnds own;
     if (!ends) {
@@ -580,28 +608,23 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     ls.chart0 = ls.chart1 = child_->chart;
     ls.metric = seg.metric;
     polyline = hit;
-    if (!child_->intersect(ls, polyline)) return false;
-    have_polyline = true;
-    x_ref = seg.x0 + polyline.s * dseg;
-    tau = ta + polyline.s * (tb - ta);
+    if (!child_->intersect(ls, *polyline)) return false;
+    x_ref = seg.x0 + polyline->s * dseg;
+    tau = ta + polyline->s * (tb - ta);
   }
   for (int iter = 0; iter < 12; ++iter) {
-    double tau_new = tau;
-    if (!frame_.simultaneous_tau(x_ref, tau_new, ev)) break;
-    if (found && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) break;
-    tau = tau_new;
-    LocalFrame::State st;
-    if (!tube_.empty()) {
-      // A sampled motion's full frame (interpolated and orthonormalized) is costly: first rule
-      // out, from the event and e_(0) alone, a segment that passes outside the body's bounding
-      // sphere (the child test below would miss it); the frame is then completed from that event,
-      // the one the search ended at.
-      if (ev.tau != tau) frame_.event(tau, ev);
-      if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) break;
-      st = frame_.state(ev);
-    } else {
-      st = frame_.state(tau);
+    if (iter > 0 || tube_.empty()) {  // (a sampled tube's first search and test: above)
+      double tau_new = tau;
+      if (!frame_.simultaneous_tau(x_ref, tau_new, ev)) break;
+      if (best && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) break;
+      tau = tau_new;
+      if (!tube_.empty()) {
+        // The same test at the event of the refined τ (the frame is completed from it).
+        if (ev.tau != tau) frame_.event(tau, ev);
+        if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) break;
+      }
     }
+    const LocalFrame::State st = tube_.empty() ? frame_.state(tau) : frame_.state(ev);
     const Vec4 X0 = frame_.to_local(st, seg.x0), X1 = frame_.to_local(st, seg.x1);
     Segment ls;
     ls.x0 = seg.x0;  // world coordinate times for Hit::time
@@ -614,32 +637,33 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     if (!child_->intersect(ls, h)) break;  // keep the previous estimate when refinement loses it
     best = h;
     best_state = st;
-    found = true;
     if (!frame_.moving()) break;
     x_ref = seg.x0 + h.s * dseg;
   }
-  if (!found && have_polyline) {
+  if (!best && polyline) {
     best = polyline;
     double t_hit = tau;
     frame_.simultaneous_tau(x_ref, t_hit);
     best_state = frame_.state(t_hit);
-    found = true;
   }
-  if (!found) return false;
-  const Vec4 x_hit = seg.x0 + best.s * dseg;
+  if (!best) return false;
+  const Vec4 x_hit = seg.x0 + best->s * dseg;
   // The local coordinates are first-order in x − x_obj: only trust a hit whose event lies near
   // the worldline (within the pseudo-Cartesian radius of the body at τ), not a spurious
   // intersection of the linearised map of far-away events.
   if (frame_.moving()) {
     Vec3 pc_obj;
-    frame_.metric().to_pseudo_cartesian(best_state.x, pc_obj);
-    const Vec3 pc_hit = seg.p0 + best.s * (seg.p1 - seg.p0);
-    const double r = pseudo_cartesian_radius(best_state);
-    if (dot(pc_hit - pc_obj, pc_hit - pc_obj) > r * r) return false;
+    frame_.metric().to_pseudo_cartesian(best_state->x, pc_obj);
+    const Vec3 pc_hit = seg.p0 + best->s * (seg.p1 - seg.p0);
+    const double d2 = dot(pc_hit - pc_obj, pc_hit - pc_obj);
+    if (!(d2 <= accept2_)) {
+      const double r = pseudo_cartesian_radius(*best_state);
+      if (d2 > r * r) return false;
+    }
   }
-  best.emitter_u = frame_.body_velocity(best_state, best.point, x_hit);
-  best.keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)
-  hit = best;
+  best->emitter_u = frame_.body_velocity(*best_state, best->point, x_hit);
+  best->keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)
+  hit = *best;
   return true;
 }
 

@@ -19,6 +19,7 @@
 // hand's tip) is not missed. The hit's point/normal/ray_dir are in the local frame.
 #pragma once
 
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -103,13 +104,28 @@ class LocalObject final : public SceneObject {
   /// Largest change of the tetrad components (relative to their size) within one merged piece of
   /// a long segment (intersect_per_box).
   static constexpr double kMaxFrameChange = 1e-3;
+  /// A hit of a sampled motion's body is near its worldline event (intersect_piece's last check,
+  /// |p_hit − p_obj| <= pseudo_cartesian_radius at the hit's frame) without evaluating that radius
+  /// where |p_hit − p_obj| is below this fraction of the smallest radius at the motion's samples
+  /// (the tube's boxes, mid-points included): the samples resolve the motion, so the radius between
+  /// them stays far above 0.9 of theirs (test ObjLocal.AcceptRadiusIsBelowTheRadiusAlongTheMotion).
+  static constexpr double kAcceptRadiusFraction = 0.9;
   LocalObject(SceneObjectPtr child, LocalFrame frame);
   bool intersect(const Segment& seg, Hit& hit) const override;
   Bounds3 bounds() const override { return bounds_; }
+  /// A sampled world tube: the inner radius of its shell (every tube box, hence the body at every
+  /// time, lies outside it; an orbit's tube is a ring whose bounds hold the origin); else the
+  /// distance of the bounds. The tracer's capture radius and empty ball (render/segment_cull.h).
+  double inner_radius() const override;
   const LocalFrame& frame() const { return frame_; }
   const SceneObjectPtr& child() const { return child_; }
   /// Radius of the object's bounding sphere about the local origin (local length units).
   double local_radius() const { return radius_local_; }
+  /// Pseudo-Cartesian radius covering a local sphere of local_radius() at frame state s.
+  double pseudo_cartesian_radius(const LocalFrame::State& s) const;
+  /// A sampled motion: the distance of a hit from its worldline event accepted without
+  /// pseudo_cartesian_radius (kAcceptRadiusFraction); 0 otherwise.
+  double accept_radius() const { return std::sqrt(accept2_); }
 
  private:
   struct TubeBox {
@@ -135,8 +151,6 @@ class LocalObject final : public SceneObject {
   /// A sampled world tube and a segment much longer in time than the body: each tube box the
   /// segment passes is tested as its own piece (the frozen frame of one piece stays near the body).
   bool intersect_per_box(const Segment& seg, Hit& hit) const;
-  /// Pseudo-Cartesian radius covering a local sphere of radius_local_ at frame state s.
-  double pseudo_cartesian_radius(const LocalFrame::State& s) const;
   /// Coordinate-time spread of the body's simultaneous events at frame state s.
   double time_extent(const LocalFrame::State& s) const;
   /// Calls visit(j, u0, u1) for each tube box j whose time interval meets [ta, tb] and which the
@@ -157,6 +171,9 @@ class LocalObject final : public SceneObject {
   /// Squared radii of the pseudo-Cartesian shell about the origin that holds every tube_ box.
   double tube_inner2_ = 0, tube_outer2_ = std::numeric_limits<double>::infinity();
   double tube_margin_t_ = 0;
+  /// Squared pseudo-Cartesian distance of a hit from its worldline event below which it is accepted
+  /// without pseudo_cartesian_radius (kAcceptRadiusFraction; 0: always evaluated).
+  double accept2_ = 0;
   /// Upper bound of the frame's rotation rate per unit coordinate time (rotating ConstVelocity
   /// motions; 0 otherwise).
   double rotation_rate_ = 0;

@@ -47,6 +47,9 @@ void SampledMotion::set_nodes(std::vector<MotionNode> nodes) {
 }
 
 size_t SampledMotion::interval(double tau, size_t hint) const {
+  // The common case first: τ inside the hinted interval (not the last one, whose end the range
+  // check below bounds), where that check cannot fail.
+  if (hint + 2 < nodes_.size() && nodes_[hint].tau <= tau && tau < nodes_[hint + 1].tau) return hint;
   const double lo = nodes_.front().tau, hi = nodes_.back().tau;
   const double slack = 1e-12 * std::max({1.0, std::fabs(lo), std::fabs(hi)});
   if (!(tau >= lo - slack && tau <= hi + slack))
@@ -132,6 +135,27 @@ Tetrad SampledMotion::frame_at(const WorldlineEvent& ev) const {
     for (int mu = 0; mu < 4; ++mu)
       e[c][mu] = h00 * a.e[c][mu] + h * h10 * a.de[c][mu] + h01 * b.e[c][mu] + h * h11 * b.de[c][mu];
   return gram_schmidt_after_e0(*metric_, ev.x, ev.g, ev.e0, e);
+}
+
+Tetrad SampledMotion::frame_derivative_at(double tau) const {
+  const size_t i = interval(tau);
+  Tetrad de{};
+  if (const MotionSample* node = node_at(i, tau)) {
+    const MotionNode& n = nodes_[static_cast<size_t>(node - samples_.data())];
+    for (int c = 1; c < 4; ++c) de[c] = n.de[c];
+    return de;
+  }
+  // d/dτ of frame_at's cubic Hermite polynomial: (1/h) d/ds of its basis.
+  const MotionNode& a = nodes_[i];
+  const MotionNode& b = nodes_[i + 1];
+  const double h = b.tau - a.tau;
+  const double s = (tau - a.tau) / h;
+  const double s2 = s * s;
+  const double d00 = (6 * s2 - 6 * s) / h, d10 = 3 * s2 - 4 * s + 1, d01 = -d00, d11 = 3 * s2 - 2 * s;
+  for (int c = 1; c < 4; ++c)
+    for (int mu = 0; mu < 4; ++mu)
+      de[c][mu] = d00 * a.e[c][mu] + d10 * a.de[c][mu] + d01 * b.e[c][mu] + d11 * b.de[c][mu];
+  return de;
 }
 
 void SampledMotion::event_at_proper_time(double tau, Vec4& x, Vec4& u) const {

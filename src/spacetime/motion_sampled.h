@@ -7,6 +7,7 @@
 // Base of GeodesicMotion and WorldlineMotion.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -27,7 +28,9 @@ struct MotionNode {
 /// evaluates events, and the frame at the proper time it finds is completed from that event
 /// (SampledMotion::frame_at) instead of being interpolated again.
 struct WorldlineEvent {
-  double tau = 0;
+  /// Proper time of the event; NaN until an event is evaluated into it (equal to no τ, so a
+  /// search that reuses the event it holds, LocalFrame::simultaneous_tau, never takes a blank one).
+  double tau = std::numeric_limits<double>::quiet_NaN();
   Vec4 x{{0, 0, 0, 0}};
   Vec4 e0{{0, 0, 0, 0}};  ///< e_(0) = u/√(−g(u, u))
   Mat4 g{};               ///< metric tensor at x
@@ -49,6 +52,12 @@ class SampledMotion : public Motion {
   /// The tetrad at ev.tau from the event: at_proper_time(ev.tau).e bit for bit, without
   /// interpolating x and u or evaluating g again.
   Tetrad frame_at(const WorldlineEvent& ev) const;
+  /// de_(a)/dτ at τ (a = 1, 2, 3; e_(0) left zero): the derivative of the cubic Hermite polynomial
+  /// of frame_at, the stored de at a node. frame_at's Gram-Schmidt step changes the tetrad by the
+  /// interpolation error, O(h⁴), so its derivative by O(h³) (tests: Motion.
+  /// FrameDerivativeIsTheParallelTransportAlongTheOrbit, ObjLocal.
+  /// BodyVelocityOfASampledMotionFromTheStoredFrameDerivative).
+  Tetrad frame_derivative_at(double tau) const;
   MotionSample at_coordinate_time(double t) const override;
   const std::vector<MotionSample>& samples() const override { return samples_; }
   const std::vector<MotionNode>& nodes() const { return nodes_; }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "object_test_helpers.h"
@@ -265,6 +266,32 @@ TEST(ObjLocal, FrameFromTheSearchedEventIsTheFrameAtItsProperTime) {
   }
 }
 
+TEST(ObjLocal, BodyVelocityOfASampledMotionFromTheStoredFrameDerivative) {
+  // The four-velocity of a body point at local X, d/dτ [x_obj + X^i e_(i)] normalised, takes
+  // de_(i)/dτ of a sampled motion from its nodes' derivatives (SampledMotion::frame_derivative_at);
+  // it must agree with the central difference of the interpolated frames (its value before) to
+  // that difference's own error, and be a unit timelike vector at the hit event.
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  const LocalFrame frame(m, make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()));
+  const Motion& motion = *frame.motion();
+  for (double tau : {-3.21, 0.05, 9.5, 41.234, motion.samples()[150].tau}) {
+    const LocalFrame::State st = frame.state(tau);
+    const Vec3 X{0.3, -0.2, 0.35};
+    const Vec4 x_hit = st.x + X.x * st.e[1] + X.y * st.e[2] + X.z * st.e[3];
+    const Vec4 w = frame.body_velocity(st, X, x_hit);
+    const double h = 1e-4 * (1.0 + std::fabs(tau));
+    const MotionSample a = motion.at_proper_time(tau - h), b = motion.at_proper_time(tau + h);
+    Vec4 expected = st.e[0];
+    for (int i = 1; i < 4; ++i)
+      for (int mu = 0; mu < 4; ++mu) expected[mu] += X[i - 1] * (b.e[i][mu] - a.e[i][mu]) / (2 * h);
+    Mat4 g;
+    m->metric_tensor(x_hit, g);
+    expected = (1.0 / std::sqrt(-dot(g, expected, expected))) * expected;
+    for (int mu = 0; mu < 4; ++mu) EXPECT_NEAR(w[mu], expected[mu], 1e-9) << tau << " " << mu;
+    EXPECT_NEAR(dot(g, w, w), -1.0, 1e-14) << tau;
+  }
+}
+
 TEST(ObjLocal, DeltaWrapsTheAzimuthAsRemainder) {
   // LocalFrame::delta skips std::remainder for |Δφ| <= π, where it returns Δφ itself; across and
   // at the boundary the results must be remainder's bit for bit.
@@ -333,6 +360,66 @@ TEST(ObjLocal, EveryPointOfABodyOnAnOrbitIsFoundThroughItsWorldTube) {
     ASSERT_TRUE(obj.intersect(seg, hit)) << k << " tau " << st.tau;
     EXPECT_NEAR(norm(hit.point), 0.5, 1e-9) << k;
     EXPECT_NEAR(hit.s, 0.5, 1e-6) << k;
+  }
+}
+
+TEST(ObjLocal, InnerRadiusOfASampledTubeHoldsNoPointOfTheBody) {
+  // The tracer captures the rays that fall below the scene's inner radius and skips the steps
+  // inside it (spacetime/capture.h, render/segment_cull.h). A ball of radius 0.5 on the circular
+  // orbit at r = 6M of paper §3: its tube's bounds hold the origin (distance 0), its inner radius
+  // is the shell's; no point of the body's surface, at any time, may lie below it (its innermost
+  // point, along −e_(3) = −r̂, at r ≈ 6 − 0.5·√(1 − 2M/r) ≈ 5.59).
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  const LocalFrame frame(m, make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()));
+  const LocalObject obj(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0.5}), frame);
+  EXPECT_EQ(obj.bounds().distance_from_origin(), 0.0);
+  const double inner = obj.inner_radius();
+  EXPECT_GT(inner, 4.5);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> ut(-10, 70);
+  std::normal_distribution<double> nd;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 2000; ++k) {
+    const LocalFrame::State st = frame.state(ut(rng));
+    const Vec3 n = k % 2 == 0 ? Vec3{0, 0, -1} : normalize(Vec3{nd(rng), nd(rng), nd(rng)});
+    Vec3 p;
+    m->to_pseudo_cartesian(st.x + 0.5 * (n.x * st.e[1] + n.y * st.e[2] + n.z * st.e[3]), p);
+    EXPECT_GE(norm(p), inner) << k << " tau " << st.tau;
+    nearest = std::min(nearest, norm(p));
+  }
+  EXPECT_NEAR(nearest, 6 - 0.5 * std::sqrt(1 - 2.0 / 6), 1e-3);
+  EXPECT_LT(nearest - inner, 1.0);  // the shell's margins: ‖J E‖ and 25 % on the radius, box corners
+}
+
+TEST(ObjLocal, AcceptRadiusIsBelowTheRadiusAlongTheMotion) {
+  // intersect_piece accepts a hit within accept_radius() of its worldline event without the
+  // pseudo-Cartesian radius at the hit's frame: that must never exceed the radius anywhere along
+  // the motion, between the samples too. The circular orbit at r = 6M (radius constant) and a
+  // radial fall from r = 10M to near the horizon (‖J E‖ changing fastest at the end).
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  ParamSet fall("init-motion", SourceLoc{"fall.scm", 1});
+  fall.add("type", "Geodesic");
+  fall.add("pos", std::vector<double>{0.0, 10.0, M_PI / 2, 0.0});
+  fall.add("localvel", std::vector<double>{0, 0, 0});
+  fall.add("maxnumpoints", 1000);
+  fall.add("forward", 33.5);  // the horizon at τ = 33.71
+  SolverConfig fall_solver;
+  fall_solver.step_ctrl = false;
+  fall_solver.step_size = 0.05;
+  for (const MotionPtr& motion : {make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()),
+                                  make_motion(fall, m, fall_solver)}) {
+    const LocalFrame frame(m, motion);
+    const LocalObject obj(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0.5}), frame);
+    const double accept = obj.accept_radius();
+    EXPECT_GT(accept, 0.0);
+    double closest = std::numeric_limits<double>::infinity();
+    const double lo = motion->tau_min(), hi = motion->tau_max();
+    for (int k = 0; k <= 20000; ++k) {
+      const double r = obj.pseudo_cartesian_radius(frame.state(lo + (hi - lo) * k / 20000));
+      closest = std::min(closest, r / accept);
+    }
+    EXPECT_GT(closest, 1.0);
+    EXPECT_LT(closest, 1.2);  // the fraction 0.9 of the samples' smallest radius
   }
 }
 
