@@ -159,6 +159,41 @@ HWY_INLINE void packet_acceleration_simd(const F& accel, const double* y, double
   }
 }
 
+#include "spacetime/geodesic_constraint.h"  // geodesic_constraint: this target's copy
+
+/// MetricSystem::constraint (integrators.h, geodesic_constraint) on a packet of `stride` lanes in
+/// structure-of-arrays layout, one SimdD of lanes at a time: y holds x^μ, k^μ (8 rows of `stride`
+/// doubles), value and scale receive one double per lane. metric_tensor(x, g) is the metric's
+/// g_μν template (Mat4T<SimdD>); no_observer_norm(x, g, k) its own size of k where x^0 is no time
+/// coordinate, or abs_quadratic_form's.
+template <class MetricTensor, class NoObserverNorm>
+HWY_INLINE void packet_constraint_simd(const MetricTensor& metric_tensor, const NoObserverNorm& no_observer_norm,
+                                       const double* y, double target, double* value, double* scale, size_t stride) {
+  for (size_t l = 0; l < stride; l += SimdD::lanes()) {
+    Vec4T<SimdD> x, k;
+    for (int i = 0; i < 4; ++i) {
+      x[i] = SimdD::load(y + i * stride + l);
+      k[i] = SimdD::load(y + (4 + i) * stride + l);
+    }
+    Mat4T<SimdD> g;
+    metric_tensor(x, g);
+    SimdD v, s;
+    HWY_NAMESPACE::geodesic_constraint(g, k, target, [&] { return no_observer_norm(x, g, k); }, v, s);  // this target's copy
+    v.store(value + l);
+    s.store(scale + l);
+  }
+}
+/// The same for a metric whose x^0 is a time coordinate wherever its rays go (no size of k of its
+/// own: abs_quadratic_form).
+template <class MetricTensor>
+HWY_INLINE void packet_constraint_simd(const MetricTensor& metric_tensor, const double* y, double target, double* value,
+                                       double* scale, size_t stride) {
+  packet_constraint_simd(
+      metric_tensor,
+      [](const Vec4T<SimdD>&, const Mat4T<SimdD>& g, const Vec4T<SimdD>& k) { return HWY_NAMESPACE::abs_quadratic_form(g, k); }, y,
+      target, value, scale, stride);
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();

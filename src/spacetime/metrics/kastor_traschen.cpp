@@ -62,21 +62,10 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
     on_params_changed();
   }
 
+  /// The line element in the file comment (kastor_traschen_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::sqrt;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T a = exp_t(h_ * x[0]);
-    const T d1 = x[3] - z1_, d2 = x[3] - z2_;
-    const T rho2 = x[1] * x[1] + x[2] * x[2];
-    const T r1 = sqrt(rho2 + d1 * d1), r2 = sqrt(rho2 + d2 * d2);
-    const T Om = 1.0 + (m1_ / r1 + m2_ / r2) / a;
-    g[0][0] = -1.0 / (Om * Om);
-    const T s = a * a * Om * Om;
-    g[1][1] = s;
-    g[2][2] = s;
-    g[3][3] = s;
+    scalar::kastor_traschen_metric_tensor(prm_, x, g);
   }
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
@@ -116,6 +105,8 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::kastor_traschen_accel(prm_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// Stops at the black holes, with Motion4D's relative margin 1e-6 about the points r_i = 0, and
   /// where the squared redshift factor −g_tt = 1/Ω² falls below horizon_eps (Metric::horizon_eps;
@@ -190,6 +181,11 @@ void kastor_traschen_packet_acceleration(const KastorTraschenParams& p, const do
       [&p](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { kastor_traschen_accel(p, x, k, acc); },
       y, a, kPacketLanes);
 }
+void kastor_traschen_packet_constraint(const KastorTraschenParams& p, const double* y, double target, double* value,
+                                       double* scale) {
+  packet_constraint_simd([&p](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { kastor_traschen_metric_tensor(p, x, g); }, y,
+                         target, value, scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -199,6 +195,10 @@ namespace geovis {
 HWY_EXPORT(kastor_traschen_packet_acceleration);
 void KastorTraschen::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(kastor_traschen_packet_acceleration)(prm_, y, a);
+}
+HWY_EXPORT(kastor_traschen_packet_constraint);
+void KastorTraschen::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
+  HWY_DYNAMIC_DISPATCH(kastor_traschen_packet_constraint)(prm_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif
