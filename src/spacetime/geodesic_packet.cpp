@@ -374,7 +374,8 @@ struct Lane {
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies;
 ///   valid_lanes(y, lanes), step_checks(cfg, y, lanes, out) (optional)   the scalar system's valid,
 ///                                       and its constraint, escaped and captured (PacketStepChecks),
-///                                       of all lanes' states at once.
+///                                       of all lanes' states at once;
+///   accepted_states_change(cfg) (optional)   false where the system never changes an accepted state.
 template <class Tab, class PS>
 void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   constexpr int W = kPacketLanes, N = PS::N;
@@ -390,6 +391,10 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     p.valid_lanes(yy, 0u);
     p.step_checks(cfg, yy, 0u, out);
   };
+  // Whether an accepted state may change before it is taken (reproject, project_invariants,
+  // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it.
+  bool accepted_states_change = true;
+  if constexpr (requires { ps.accepted_states_change(cfg); }) accepted_states_change = ps.accepted_states_change(cfg);
   auto affine = [](const Sys& s, const double* yy, double sv) {
     if constexpr (kOwnAffine) return s.affine(yy);
     return sv;
@@ -536,7 +541,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       auto& sys = ps.system(l);
       ln.res.rhs_evals += Tab::S - 1;
       double yl1[N];
-      get(y1, l, yl1);
+      if (!kLaneChecks || kOwnAffine || accepted_states_change) get(y1, l, yl1);
       ln.err = attempt_err.err[l];
       ln.root = attempt_err.root[l];
       const bool finite = attempt_err.finite >> l & 1u;
@@ -592,11 +597,13 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         ln.affine_retries = 0;
         ln.clipped = dl >= ln.remaining * (1.0 - 1e-12);
       }
-      if (cfg.reproject) sys.reproject(yl1, cfg.type);
       bool changed = false;
-      if constexpr (requires { sys.project_invariants(yl1); }) changed = sys.project_invariants(yl1);
-      if constexpr (requires { sys.rescale(yl1, cfg.type); }) changed = sys.rescale(yl1, cfg.type) || changed;
-      put(y1, l, yl1);
+      if (accepted_states_change) {
+        if (cfg.reproject) sys.reproject(yl1, cfg.type);
+        if constexpr (requires { sys.project_invariants(yl1); }) changed = sys.project_invariants(yl1);
+        if constexpr (requires { sys.rescale(yl1, cfg.type); }) changed = sys.rescale(yl1, cfg.type) || changed;
+        put(y1, l, yl1);
+      }
       accepted |= 1u << l;
       if (!Tab::kFsal || cfg.reproject || changed) need_dy1 |= 1u << l;
     }
@@ -707,6 +714,10 @@ struct CoordinatePacket {
   /// MetricSystem's tests of all lanes' states at once, with the metric's functions inlined
   /// (MetricKernel::packet_valid, packet_step_checks).
   unsigned valid_lanes(const double* y, unsigned lanes) const { return metric.packet_valid(y, lanes); }
+  /// MetricSystem::reproject and rescale (the only ones that change an accepted state here).
+  bool accepted_states_change(const SolverConfig& c) const {
+    return c.reproject || (c.type == GeodesicType::Lightlike && metric.rescales_null_direction());
+  }
   void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) const {
     metric.packet_step_checks(c, y, lanes, out);
   }

@@ -103,6 +103,8 @@ class MetricKernel {
       for (int j = 0; j < 4; ++j) h += std::fabs(g[i][j] * k[i] * k[j]);
     return h;
   }
+  /// Whether the metric rescales light rays' directions (rescale_null_direction).
+  bool rescales_null_direction() const { return ops_->rescale_null_direction != nullptr; }
   /// Rescales a light ray's direction when the metric asks for it; true when k changed.
   bool rescale_null_direction(double* k) const {
     if (ops_->rescale_null_direction == nullptr) return false;
