@@ -16,6 +16,7 @@
 // the other systems and steppers through M's function table (metric_kernel.h).
 #pragma once
 
+#include <concepts>
 #include <memory>
 #include <type_traits>
 
@@ -117,6 +118,12 @@ class MetricCRTP : public Metric {
     m.packet_constraint_simd(y, 0.0, v, v);
   };
   bool has_simd_packet_constraint() const override { return kSimdConstraint; }
+  /// A metric with `unsigned packet_is_valid_simd(const double* y) const` (all lanes, bit l: lane l;
+  /// simd.h's packet_position_mask_simd on its is_valid template) gives packets of rays its
+  /// validity test on SIMD lanes.
+  static constexpr bool kSimdValid = requires(const M& m, const double* y) {
+    { m.packet_is_valid_simd(y) } -> std::same_as<unsigned>;
+  };
   bool transported_screen(const Vec4& x0, const Vec4& k0, const Vec4 (&s0)[2], const Vec4& x, const Vec4& k,
                           Vec4 (&s)[2]) const override {
     if constexpr (kSeparable) {
@@ -249,16 +256,33 @@ MetricKernel MetricKernel::of(const M& m) {
       // lanes where M has the template (the same operations: the same bits).
       [](V p, const double* y, unsigned lanes) {
         const M& mm = *static_cast<const M*>(p);
-        GeodesicRHS<M> f{mm};
-        const MetricSystem<M, GeodesicRHS<M>> sys{mm, f};
-        unsigned valid = 0;
-        for (int l = 0; l < kPacketLanes; ++l) {
-          if (!(lanes >> l & 1u)) continue;
-          double yl[8];
-          for (int i = 0; i < 8; ++i) yl[i] = y[i * kPacketLanes + l];
-          if (sys.valid(yl)) valid |= 1u << l;
+        if constexpr (M::kSimdValid) {
+          // MetricSystem::valid: is_valid on SIMD lanes, then the break by direction lane by lane.
+          unsigned valid = lanes & mm.packet_is_valid_simd(y);
+          if constexpr (requires(const Vec4& v) { mm.leaves_chart(v, v); }) {
+            for (int l = 0; l < kPacketLanes; ++l) {
+              if (!(valid >> l & 1u)) continue;
+              Vec4 x, k;
+              for (int i = 0; i < 4; ++i) {
+                x[i] = y[i * kPacketLanes + l];
+                k[i] = y[(4 + i) * kPacketLanes + l];
+              }
+              if (mm.leaves_chart(x, k)) valid &= ~(1u << l);
+            }
+          }
+          return valid;
+        } else {
+          GeodesicRHS<M> f{mm};
+          const MetricSystem<M, GeodesicRHS<M>> sys{mm, f};
+          unsigned valid = 0;
+          for (int l = 0; l < kPacketLanes; ++l) {
+            if (!(lanes >> l & 1u)) continue;
+            double yl[8];
+            for (int i = 0; i < 8; ++i) yl[i] = y[i * kPacketLanes + l];
+            if (sys.valid(yl)) valid |= 1u << l;
+          }
+          return valid;
         }
-        return valid;
       },
       [](V p, const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) {
         const M& mm = *static_cast<const M*>(p);

@@ -80,6 +80,7 @@ HWY_API SimdD abs(SimdD a) { return SimdD(hn::Abs(a.v)); }
 HWY_API SimdD fabs(SimdD a) { return SimdD(hn::Abs(a.v)); }
 HWY_API SimdD min(SimdD a, SimdD b) { return SimdD(hn::Min(a.v, b.v)); }
 HWY_API SimdD max(SimdD a, SimdD b) { return SimdD(hn::Max(a.v, b.v)); }
+HWY_API SimdMask isfinite(SimdD a) { return {hn::IsFinite(a.v)}; }
 
 #include "spacetime/sincos_reduced.h"  // sincos_reduced: this target's copy
 
@@ -157,6 +158,22 @@ HWY_INLINE void packet_acceleration_simd(const F& accel, const double* y, double
     accel(x, k, acc);
     for (int i = 0; i < 4; ++i) acc[i].store(a + i * stride + l);
   }
+}
+
+/// A metric's condition on the position x (a template over the number type giving a lane mask,
+/// e.g. its validity domain) on a packet of `stride` lanes in structure-of-arrays layout (y holds
+/// x^μ in its first 4 rows of `stride` doubles): bit l set where it holds on lane l.
+template <class Condition>
+HWY_INLINE unsigned packet_position_mask_simd(const Condition& condition, const double* y, size_t stride) {
+  unsigned bits = 0;
+  for (size_t l = 0; l < stride; l += SimdD::lanes()) {
+    Vec4T<SimdD> x;
+    for (int i = 0; i < 4; ++i) x[i] = SimdD::load(y + i * stride + l);
+    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(SimdTag(), condition(x).m, lane_bits);
+    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+  }
+  return bits;
 }
 
 #include "spacetime/geodesic_constraint.h"  // geodesic_constraint: this target's copy

@@ -118,18 +118,12 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
   /// H = 0 exactly √(−g_tt) between rest at x and rest far away, the Majumdar–Papapetrou limit), so
   /// its intensity falls like 1/Ω⁴: below the margin (1/Ω < 10⁻² at the default 10⁻⁴) nothing
   /// visible comes from there, as at the break radius r_s (1 + horizon_eps) of Schwarzschild.
+  /// (kastor_traschen_accel.h, a template for SIMD lanes as well).
   bool is_valid(const Vec4& x) const override {
-    for (int i = 0; i < 4; ++i)
-      if (!std::isfinite(x[i])) return false;
-    const double rho2 = x[1] * x[1] + x[2] * x[2];
-    const double d1 = x[3] - z1_, d2 = x[3] - z2_;
-    const double q1 = rho2 + d1 * d1, q2 = rho2 + d2 * d2;
-    if (m1_ > 0 && !(q1 > r_break1_ * r_break1_)) return false;
-    if (m2_ > 0 && !(q2 > r_break2_ * r_break2_)) return false;
-    const double sum = (m1_ > 0 ? m1_ / std::sqrt(q1) : 0.0) + (m2_ > 0 ? m2_ / std::sqrt(q2) : 0.0);
-    const double Om = 1.0 + sum / fast_exp(h_ * x[0]);
-    return 1.0 / (Om * Om) > horizon_eps_;
+    return scalar::kastor_traschen_valid(prm_, r_break1_, r_break2_, horizon_eps_, x);
   }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD: bit l set where lane l is valid.
+  unsigned packet_is_valid_simd(const double* y) const;
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
@@ -181,6 +175,12 @@ void kastor_traschen_packet_acceleration(const KastorTraschenParams& p, const do
       [&p](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { kastor_traschen_accel(p, x, k, acc); },
       y, a, kPacketLanes);
 }
+unsigned kastor_traschen_packet_is_valid(const KastorTraschenParams& p, double r_break1, double r_break2,
+                                         double horizon_eps, const double* y) {
+  return packet_position_mask_simd(
+      [&](const Vec4T<SimdD>& x) { return kastor_traschen_valid(p, r_break1, r_break2, horizon_eps, x); }, y,
+      kPacketLanes);
+}
 void kastor_traschen_packet_constraint(const KastorTraschenParams& p, const double* y, double target, double* value,
                                        double* scale) {
   packet_constraint_simd([&p](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { kastor_traschen_metric_tensor(p, x, g); }, y,
@@ -195,6 +195,10 @@ namespace geovis {
 HWY_EXPORT(kastor_traschen_packet_acceleration);
 void KastorTraschen::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(kastor_traschen_packet_acceleration)(prm_, y, a);
+}
+HWY_EXPORT(kastor_traschen_packet_is_valid);
+unsigned KastorTraschen::packet_is_valid_simd(const double* y) const {
+  return HWY_DYNAMIC_DISPATCH(kastor_traschen_packet_is_valid)(prm_, r_break1_, r_break2_, horizon_eps_, y);
 }
 HWY_EXPORT(kastor_traschen_packet_constraint);
 void KastorTraschen::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
