@@ -43,7 +43,8 @@ GEOVIS_HOT_INLINE void geodesic_constraint(const Mat4T<T>& g, const Vec4T<T>& k,
   T h(-1.0);
   const T b1 = g[0][1], b2 = g[0][2], b3 = g[0][3];
   const auto diagonal = b1 == T(0.0) && b2 == T(0.0) && b3 == T(0.0);
-  if (!none_of(diagonal)) h = select(diagonal && g[0][0] < T(0.0), s - 2.0 * g[0][0] * k[0] * k[0], h);  // α² = −g_00
+  // α² = −g_00
+  if (!none_of(diagonal)) h = select(diagonal && g[0][0] < T(0.0), s - 2.0 * g[0][0] * k[0] * k[0], h);
   if (!all_of(diagonal)) {
     // γ positive definite (Sylvester) and α² = β^T adj(γ) β / det γ − g_00.
     const T g11 = g[1][1], g12 = g[1][2], g13 = g[1][3], g22 = g[2][2], g23 = g[2][3], g33 = g[3][3];

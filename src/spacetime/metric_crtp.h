@@ -252,8 +252,8 @@ MetricKernel MetricKernel::of(const M& m) {
         }
       },
       // The packet's tests after a step: MetricSystem's own, on M with its functions inlined, lane
-      // by lane (one call per packet instead of one per lane and test), and the constraint on SIMD
-      // lanes where M has the template (the same operations: the same bits).
+      // by lane (one call per packet instead of one per lane and test), and the validity and the
+      // constraint on SIMD lanes where M has their templates (the same operations: the same bits).
       [](V p, const double* y, unsigned lanes) {
         const M& mm = *static_cast<const M*>(p);
         if constexpr (M::kSimdValid) {

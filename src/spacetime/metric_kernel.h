@@ -45,7 +45,7 @@ struct PacketStepChecks {
   alignas(64) double constraint[kPacketLanes];
   alignas(64) double constraint_scale[kPacketLanes];
   alignas(64) double escape_radius[kPacketLanes];  ///< of the escaped lanes
-  unsigned escaped = 0, captured = 0;               ///< bit l: lane l
+  unsigned escaped = 0, captured = 0;              ///< bit l: lane l
 };
 
 struct MetricKernelOps {

@@ -195,7 +195,8 @@ HWY_INLINE void packet_constraint_simd(const MetricTensor& metric_tensor, const 
     Mat4T<SimdD> g;
     metric_tensor(x, g);
     SimdD v, s;
-    HWY_NAMESPACE::geodesic_constraint(g, k, target, [&] { return no_observer_norm(x, g, k); }, v, s);  // this target's copy
+    // This target's copy (geovis::geodesic_constraint is the scalar one).
+    HWY_NAMESPACE::geodesic_constraint(g, k, target, [&] { return no_observer_norm(x, g, k); }, v, s);
     v.store(value + l);
     s.store(scale + l);
   }
@@ -207,8 +208,10 @@ HWY_INLINE void packet_constraint_simd(const MetricTensor& metric_tensor, const 
                                        double* scale, size_t stride) {
   packet_constraint_simd(
       metric_tensor,
-      [](const Vec4T<SimdD>&, const Mat4T<SimdD>& g, const Vec4T<SimdD>& k) { return HWY_NAMESPACE::abs_quadratic_form(g, k); }, y,
-      target, value, scale, stride);
+      [](const Vec4T<SimdD>&, const Mat4T<SimdD>& g, const Vec4T<SimdD>& k) {
+        return HWY_NAMESPACE::abs_quadratic_form(g, k);
+      },
+      y, target, value, scale, stride);
 }
 
 }  // namespace HWY_NAMESPACE

@@ -118,7 +118,8 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
   /// H = 0 exactly √(−g_tt) between rest at x and rest far away, the Majumdar–Papapetrou limit), so
   /// its intensity falls like 1/Ω⁴: below the margin (1/Ω < 10⁻² at the default 10⁻⁴) nothing
   /// visible comes from there, as at the break radius r_s (1 + horizon_eps) of Schwarzschild.
-  /// (kastor_traschen_accel.h, a template for SIMD lanes as well).
+  /// The test is kastor_traschen_valid (kastor_traschen_accel.h), a template that packets of rays
+  /// run on SIMD lanes.
   bool is_valid(const Vec4& x) const override {
     return scalar::kastor_traschen_valid(prm_, r_break1_, r_break2_, horizon_eps_, x);
   }

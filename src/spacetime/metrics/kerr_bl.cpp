@@ -317,8 +317,8 @@ void kerr_bl_packet_acceleration(double rs, double a, double a2, const double* y
 void kerr_bl_packet_constraint(double rs, double a, double a2, const double* y, double target, double* value,
                                double* scale) {
   packet_constraint_simd(
-      [rs, a, a2](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { kerr_bl_metric_tensor(rs, a, a2, x, g); }, y, target,
-      value, scale, kPacketLanes);
+      [rs, a, a2](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { kerr_bl_metric_tensor(rs, a, a2, x, g); }, y, target, value,
+      scale, kPacketLanes);
 }
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
