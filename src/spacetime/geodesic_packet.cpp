@@ -371,7 +371,11 @@ struct Lane {
 ///   tolerance_inv(eps_abs, eps_rel, y, inv)   for a system with tolerance scales of its own: the
 ///                                       1/D_i of set_tolerance at state y on every lane (SoA);
 ///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
-///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies.
+///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies;
+///   valid_lanes(y, lanes), step_checks(cfg, y, lanes, out) (optional)   the scalar system's valid,
+///                                       and its constraint, escaped and captured (PacketStepChecks),
+///                                       of all lanes' states at once;
+///   accepted_states_change(cfg) (optional)   false where the system never changes an accepted state.
 template <class Tab, class PS>
 void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   constexpr int W = kPacketLanes, N = PS::N;
@@ -381,6 +385,16 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     s.param_per_affine(p);
   };
   constexpr bool kScaledTol = requires(const Sys& s, const double* p, double* q) { s.tolerance_inv_scale(p, q); };
+  // A packet system that tests the states of its lanes at once (PS::valid_lanes, PS::step_checks);
+  // the others are tested lane by lane through system(l).
+  constexpr bool kLaneChecks = requires(PS& p, const double* yy, PacketStepChecks& out) {
+    p.valid_lanes(yy, 0u);
+    p.step_checks(cfg, yy, 0u, out);
+  };
+  // Whether an accepted state may change before it is taken (reproject, project_invariants,
+  // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it.
+  bool accepted_states_change = true;
+  if constexpr (requires { ps.accepted_states_change(cfg); }) accepted_states_change = ps.accepted_states_change(cfg);
   auto affine = [](const Sys& s, const double* yy, double sv) {
     if constexpr (kOwnAffine) return s.affine(yy);
     return sv;
@@ -518,6 +532,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       need_tol = 0;
     }
     ps.attempt(cfg.kind, ready, tol, y, dy, hv, y1, dy1, attempt_err);
+    unsigned valid = 0;
+    if constexpr (kLaneChecks) valid = ps.valid_lanes(y1, ready & attempt_err.finite);
     unsigned accepted = 0, need_dy1 = 0;
     for (int l = 0; l < W; ++l) {
       if (!(ready >> l & 1u)) continue;
@@ -525,11 +541,15 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       auto& sys = ps.system(l);
       ln.res.rhs_evals += Tab::S - 1;
       double yl1[N];
-      get(y1, l, yl1);
+      if (!kLaneChecks || kOwnAffine || accepted_states_change) get(y1, l, yl1);
       ln.err = attempt_err.err[l];
       ln.root = attempt_err.root[l];
       const bool finite = attempt_err.finite >> l & 1u;
-      const bool in_domain = finite && sys.valid(yl1);
+      bool in_domain;
+      if constexpr (kLaneChecks)
+        in_domain = valid >> l & 1u;
+      else
+        in_domain = finite && sys.valid(yl1);
       if (!in_domain || (adaptive && !(ln.err <= 1.0))) {
         ready &= ~(1u << l);
         if (!adaptive) {
@@ -577,11 +597,13 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         ln.affine_retries = 0;
         ln.clipped = dl >= ln.remaining * (1.0 - 1e-12);
       }
-      if (cfg.reproject) sys.reproject(yl1, cfg.type);
       bool changed = false;
-      if constexpr (requires { sys.project_invariants(yl1); }) changed = sys.project_invariants(yl1);
-      if constexpr (requires { sys.rescale(yl1, cfg.type); }) changed = sys.rescale(yl1, cfg.type) || changed;
-      put(y1, l, yl1);
+      if (accepted_states_change) {
+        if (cfg.reproject) sys.reproject(yl1, cfg.type);
+        if constexpr (requires { sys.project_invariants(yl1); }) changed = sys.project_invariants(yl1);
+        if constexpr (requires { sys.rescale(yl1, cfg.type); }) changed = sys.rescale(yl1, cfg.type) || changed;
+        put(y1, l, yl1);
+      }
       accepted |= 1u << l;
       if (!Tab::kFsal || cfg.reproject || changed) need_dy1 |= 1u << l;
     }
@@ -599,6 +621,18 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     } else {
       ps.rhs(y1, dy1, need_dy1);
     }
+    PacketStepChecks checks;
+    if constexpr (kLaneChecks) ps.step_checks(cfg, y1, accepted, checks);
+    // MetricSystem::escaped of lane l's new state, which sets `radius` where the ray escaped.
+    auto escaped = [&](int l, const double* yl1, double& radius) {
+      if constexpr (kLaneChecks) {
+        if (!(checks.escaped >> l & 1u)) return false;
+        radius = checks.escape_radius[l];
+        return true;
+      } else {
+        return ps.system(l).escaped(cfg, yl1, radius);
+      }
+    };
     for (int l = 0; l < W; ++l) {
       if (!(accepted >> l & 1u)) continue;
       Lane<Tab, N>& ln = lane[l];
@@ -611,7 +645,12 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       get(dy, l, dyl);
       get(dy1, l, dyl1);
       double c, scale;
-      sys.constraint(yl1, cfg.type, c, scale);
+      if constexpr (kLaneChecks) {
+        c = checks.constraint[l];
+        scale = checks.constraint_scale[l];
+      } else {
+        sys.constraint(yl1, cfg.type, c, scale);
+      }
       if (!(std::fabs(c) <= cfg.constraint_tol * scale)) {
         finish(l, StopReason::Constraint);
         refill(l);
@@ -633,9 +672,9 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         stop = StopReason::BoundingBox;
       else if (ln.clipped)
         stop = StopReason::LambdaMax;
-      else if (sys.escaped(cfg, yl1, ln.res.escape_radius))
+      else if (escaped(l, yl1, ln.res.escape_radius))
         stop = StopReason::Escaped;
-      else if (sys.captured(cfg, yl1))
+      else if (kLaneChecks ? (checks.captured >> l & 1u) != 0 : sys.captured(cfg, yl1))
         stop = StopReason::Invalid;
       if (stop != StopReason::None) {
         finish(l, stop);
@@ -671,6 +710,16 @@ struct CoordinatePacket {
                const double* h, double* y1, double* dy1, AttemptError& err) const {
     // Looked up per call: before the first dispatch the table entry is Highway's target chooser.
     HWY_DYNAMIC_DISPATCH(rk_attempt)(kind, metric, lanes, tol, y, dy, h, y1, dy1, err);
+  }
+  /// MetricSystem's tests of all lanes' states at once, with the metric's functions inlined
+  /// (MetricKernel::packet_valid, packet_step_checks).
+  unsigned valid_lanes(const double* y, unsigned lanes) const { return metric.packet_valid(y, lanes); }
+  /// MetricSystem::reproject and rescale (the only ones that change an accepted state here).
+  bool accepted_states_change(const SolverConfig& c) const {
+    return c.reproject || (c.type == GeodesicType::Lightlike && metric.rescales_null_direction());
+  }
+  void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) const {
+    metric.packet_step_checks(c, y, lanes, out);
   }
   StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
   void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }

@@ -47,6 +47,8 @@
 
 namespace geovis {
 
+#include "spacetime/geodesic_constraint.h"  // geodesic_constraint: in namespace geovis
+
 // ---- ODE systems -------------------------------------------------------------------------------
 
 /// Geodesic equation in coordinates, d²x^μ/dλ² = −Γ^μ_{ab} k^a k^b (y = x, k). Uses the metric's
@@ -833,56 +835,21 @@ struct MetricSystem {
     }
     return false;
   }
-  /// value = g(k,k) − target; scale = a positive-definite size of k (never below |target|), so the
-  /// constraint test |value| <= constraint_tol·scale is relative and stays meaningful where k^0
-  /// diverges (horizons) and where the terms of g(k,k) are small or cancel (off-diagonal metrics).
-  ///
-  /// scale = h(k,k) = g(k,k) + 2 (n·k)², the Euclidean norm² of k in an orthonormal frame of the
-  /// observer n: n is the unit normal of the slices x^0 = const (the "Eulerian" observer of the
-  /// 3+1 split, n·k = −α k^0, α² = −1/g^{00} = β^T γ^{-1} β − g_00 with γ_ij = g_ij, β_i = g_0i);
-  /// for a diagonal metric this is exactly Σ_μ |g_μμ| (k^μ)², the size of the terms that cancel in
-  /// g(k,k). Where x^0 is no time coordinate (γ not positive definite, e.g. the null coordinate v
-  /// of EddFinkIn) the metric may provide `double constraint_norm(const Vec4& x, const Mat4& g,
+  /// value = g(k,k) − target and its scale (geodesic_constraint.h, which says why); where x^0 is
+  /// no time coordinate the metric may provide `double constraint_norm(const Vec4& x, const Mat4& g,
   /// const Vec4& k) const` (h for an observer of its own); otherwise Σ_{μν} |g_μν k^μ k^ν| is used.
   void constraint(const double* y, GeodesicType type, double& value, double& scale) const {
     const Vec4 x{{y[0], y[1], y[2], y[3]}};
     Mat4 g;
     m.metric_tensor_inline(x, g);
     const Vec4 k{{y[4], y[5], y[6], y[7]}};
-    double s = 0;
-    for (int i = 0; i < 4; ++i) {
-      s += g[i][i] * k[i] * k[i];
-      for (int j = i + 1; j < 4; ++j) s += 2.0 * g[i][j] * k[i] * k[j];
-    }
-    const double target = constraint_target(type);
-    value = s - target;
-    double h = -1.0;
-    const double b1 = g[0][1], b2 = g[0][2], b3 = g[0][3];
-    if (b1 == 0.0 && b2 == 0.0 && b3 == 0.0) {
-      if (g[0][0] < 0.0) h = s - 2.0 * g[0][0] * k[0] * k[0];  // α² = −g_00
-    } else {
-      // γ positive definite (Sylvester) and α² = β^T adj(γ) β / det γ − g_00.
-      const double g11 = g[1][1], g12 = g[1][2], g13 = g[1][3], g22 = g[2][2], g23 = g[2][3], g33 = g[3][3];
-      const double c11 = g22 * g33 - g23 * g23, c12 = g13 * g23 - g12 * g33, c13 = g12 * g23 - g13 * g22;
-      const double c22 = g11 * g33 - g13 * g13, c23 = g12 * g13 - g11 * g23, c33 = g11 * g22 - g12 * g12;
-      const double det = g11 * c11 + g12 * c12 + g13 * c13;
-      if (g11 > 0.0 && c33 > 0.0 && det > 0.0) {
-        const double q = b1 * (c11 * b1 + c12 * b2 + c13 * b3) + b2 * (c12 * b1 + c22 * b2 + c23 * b3) +
-                         b3 * (c13 * b1 + c23 * b2 + c33 * b3);
-        const double alpha2 = q / det - g[0][0];
-        if (alpha2 > 0.0) h = s + 2.0 * alpha2 * k[0] * k[0];
-      }
-    }
-    if (!(h > 0.0)) {
-      if constexpr (requires { m.constraint_norm(x, g, k); }) {
-        h = m.constraint_norm(x, g, k);
-      } else {
-        h = 0;
-        for (int i = 0; i < 4; ++i)
-          for (int j = 0; j < 4; ++j) h += std::fabs(g[i][j] * k[i] * k[j]);
-      }
-    }
-    scale = std::max(h, std::fabs(target));
+    auto no_observer_norm = [&] {
+      if constexpr (requires { m.constraint_norm(x, g, k); })
+        return m.constraint_norm(x, g, k);
+      else
+        return abs_quadratic_form(g, k);
+    };
+    geodesic_constraint(g, k, constraint_target(type), no_observer_norm, value, scale);
   }
   /// Motion4D's Metric::resize, called after every accepted step: a metric may rescale the
   /// direction of a light ray with `void rescale_null_direction(double* k) const`

@@ -73,13 +73,6 @@ struct KerrMinoCoeffs {
   }
 };
 
-/// cond ? x : y for a per-ray condition that is a bool (one ray, any number type); a packet's
-/// per-lane condition is a mask and takes simd.h's select.
-template <class T>
-inline T select(bool cond, const T& x, const T& y) {
-  return cond ? x : y;
-}
-
 #include "spacetime/kerr_mino_rhs.h"  // kerr_mino_rhs: in namespace geovis
 
 /// The constants of one Kerr geodesic and the derived polynomial coefficients (file comment).

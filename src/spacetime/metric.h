@@ -174,6 +174,9 @@ class Metric {
   /// True where a packet's right-hand side runs on SIMD lanes (the metric's acceleration template
   /// compiled per Highway target, metric_crtp.h), false where it runs lane by lane; for tests.
   virtual bool has_simd_packet_acceleration() const { return false; }
+  /// The same for a packet's constraint test (the metric's g_μν template compiled per Highway
+  /// target, metric_crtp.h); for tests.
+  virtual bool has_simd_packet_constraint() const { return false; }
   /// Geodesics (GeodesicSystem::Geodesic) are integrated through separated equations of the form
   /// y'' = f(y) when cfg.separable is set (KerrBL, Schwarzschild: spacetime/kerr_mino.h), which
   /// is what the RKN86 solver needs.

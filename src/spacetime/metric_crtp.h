@@ -16,6 +16,7 @@
 // the other systems and steppers through M's function table (metric_kernel.h).
 #pragma once
 
+#include <concepts>
 #include <memory>
 #include <type_traits>
 
@@ -109,6 +110,20 @@ class MetricCRTP : public Metric {
     m.packet_acceleration_simd(y, a);
   };
   bool has_simd_packet_acceleration() const override { return kSimdPacket; }
+  /// A metric with `void packet_constraint_simd(const double* y, double target, double* value,
+  /// double* scale) const` (all lanes: simd.h's packet_constraint_simd on its g_μν template) gives
+  /// packets of rays its constraint test on SIMD lanes; the others run MetricSystem::constraint
+  /// lane by lane.
+  static constexpr bool kSimdConstraint = requires(const M& m, const double* y, double* v) {
+    m.packet_constraint_simd(y, 0.0, v, v);
+  };
+  bool has_simd_packet_constraint() const override { return kSimdConstraint; }
+  /// A metric with `unsigned packet_is_valid_simd(const double* y) const` (all lanes, bit l: lane l;
+  /// simd.h's packet_position_mask_simd on its is_valid template) gives packets of rays its
+  /// validity test on SIMD lanes.
+  static constexpr bool kSimdValid = requires(const M& m, const double* y) {
+    { m.packet_is_valid_simd(y) } -> std::same_as<unsigned>;
+  };
   bool transported_screen(const Vec4& x0, const Vec4& k0, const Vec4 (&s0)[2], const Vec4& x, const Vec4& k,
                           Vec4 (&s)[2]) const override {
     if constexpr (kSeparable) {
@@ -234,6 +249,55 @@ MetricKernel MetricKernel::of(const M& m) {
           Vec4 acc;
           mm.geodesic_acceleration(x, k, acc);
           for (int i = 0; i < 4; ++i) a[i * kPacketLanes + l] = acc[i];
+        }
+      },
+      // The packet's tests after a step: MetricSystem's own, on M with its functions inlined, lane
+      // by lane (one call per packet instead of one per lane and test), and the validity and the
+      // constraint on SIMD lanes where M has their templates (the same operations: the same bits).
+      [](V p, const double* y, unsigned lanes) {
+        const M& mm = *static_cast<const M*>(p);
+        if constexpr (M::kSimdValid) {
+          // MetricSystem::valid: is_valid on SIMD lanes, then the break by direction lane by lane.
+          unsigned valid = lanes & mm.packet_is_valid_simd(y);
+          if constexpr (requires(const Vec4& v) { mm.leaves_chart(v, v); }) {
+            for (int l = 0; l < kPacketLanes; ++l) {
+              if (!(valid >> l & 1u)) continue;
+              Vec4 x, k;
+              for (int i = 0; i < 4; ++i) {
+                x[i] = y[i * kPacketLanes + l];
+                k[i] = y[(4 + i) * kPacketLanes + l];
+              }
+              if (mm.leaves_chart(x, k)) valid &= ~(1u << l);
+            }
+          }
+          return valid;
+        } else {
+          GeodesicRHS<M> f{mm};
+          const MetricSystem<M, GeodesicRHS<M>> sys{mm, f};
+          unsigned valid = 0;
+          for (int l = 0; l < kPacketLanes; ++l) {
+            if (!(lanes >> l & 1u)) continue;
+            double yl[8];
+            for (int i = 0; i < 8; ++i) yl[i] = y[i * kPacketLanes + l];
+            if (sys.valid(yl)) valid |= 1u << l;
+          }
+          return valid;
+        }
+      },
+      [](V p, const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) {
+        const M& mm = *static_cast<const M*>(p);
+        GeodesicRHS<M> f{mm};
+        const MetricSystem<M, GeodesicRHS<M>> sys{mm, f};
+        if constexpr (M::kSimdConstraint)
+          mm.packet_constraint_simd(y, constraint_target(c.type), out.constraint, out.constraint_scale);
+        out.escaped = out.captured = 0;
+        for (int l = 0; l < kPacketLanes; ++l) {
+          if (!(lanes >> l & 1u)) continue;
+          double yl[8];
+          for (int i = 0; i < 8; ++i) yl[i] = y[i * kPacketLanes + l];
+          if constexpr (!M::kSimdConstraint) sys.constraint(yl, c.type, out.constraint[l], out.constraint_scale[l]);
+          if (sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
+          if (sys.captured(c, yl)) out.captured |= 1u << l;
         }
       },
   };

@@ -15,6 +15,7 @@
 
 #include "spacetime/dual.h"
 #include "spacetime/geodesic.h"
+#include "spacetime/geodesic_packet.h"
 #include "spacetime/vec.h"
 
 namespace geovis {
@@ -36,6 +37,17 @@ struct JacobiTerms {
   double dGkk[2][4];
 };
 
+/// The tests of MetricSystem (integrators.h) after an accepted step of a packet of rays
+/// (geodesic_packet.h), for the lanes asked for: the constraint's value and scale
+/// (MetricSystem::constraint) and whether the ray escaped (with the radius MetricSystem::escaped
+/// gives) or was captured.
+struct PacketStepChecks {
+  alignas(64) double constraint[kPacketLanes];
+  alignas(64) double constraint_scale[kPacketLanes];
+  alignas(64) double escape_radius[kPacketLanes];  ///< of the escaped lanes
+  unsigned escaped = 0, captured = 0;              ///< bit l: lane l
+};
+
 struct MetricKernelOps {
   void (*metric_tensor)(const void* m, const Vec4& x, Mat4& g);
   void (*christoffel)(const void* m, const Vec4& x, Christoffel& G);
@@ -52,6 +64,13 @@ struct MetricKernelOps {
   /// −Γkk for the lanes in `lanes` (bit l: lane l) of a packet (geodesic_packet.h): y holds x and k
   /// as 8 components of kPacketLanes doubles each, a receives 4 such components.
   void (*packet_acceleration)(const void* m, const double* y, double* a, unsigned lanes);
+  /// MetricSystem::valid of the states y of a packet (SoA as packet_acceleration) on the lanes in
+  /// `lanes`: bit l set where lane l is valid.
+  unsigned (*packet_valid)(const void* m, const double* y, unsigned lanes);
+  /// MetricSystem's constraint, escape and capture tests of the states y of a packet on the lanes
+  /// in `lanes` (the constraint on SIMD lanes for a metric with a g_μν template compiled per target).
+  void (*packet_step_checks)(const void* m, const SolverConfig& c, const double* y, unsigned lanes,
+                             PacketStepChecks& out);
 };
 
 /// The view integrators.h instantiates once: it offers the member functions the ODE systems call
@@ -84,6 +103,8 @@ class MetricKernel {
       for (int j = 0; j < 4; ++j) h += std::fabs(g[i][j] * k[i] * k[j]);
     return h;
   }
+  /// Whether the metric rescales light rays' directions (rescale_null_direction).
+  bool rescales_null_direction() const { return ops_->rescale_null_direction != nullptr; }
   /// Rescales a light ray's direction when the metric asks for it; true when k changed.
   bool rescale_null_direction(double* k) const {
     if (ops_->rescale_null_direction == nullptr) return false;
@@ -93,6 +114,10 @@ class MetricKernel {
 
   void packet_acceleration(const double* y, double* a, unsigned lanes) const {
     ops_->packet_acceleration(m_, y, a, lanes);
+  }
+  unsigned packet_valid(const double* y, unsigned lanes) const { return ops_->packet_valid(m_, y, lanes); }
+  void packet_step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) const {
+    ops_->packet_step_checks(m_, c, y, lanes, out);
   }
 
   /// The table for metric type M (its members called through MetricCRTP's inline versions).

@@ -80,6 +80,7 @@ HWY_API SimdD abs(SimdD a) { return SimdD(hn::Abs(a.v)); }
 HWY_API SimdD fabs(SimdD a) { return SimdD(hn::Abs(a.v)); }
 HWY_API SimdD min(SimdD a, SimdD b) { return SimdD(hn::Min(a.v, b.v)); }
 HWY_API SimdD max(SimdD a, SimdD b) { return SimdD(hn::Max(a.v, b.v)); }
+HWY_API SimdMask isfinite(SimdD a) { return {hn::IsFinite(a.v)}; }
 
 #include "spacetime/sincos_reduced.h"  // sincos_reduced: this target's copy
 
@@ -157,6 +158,60 @@ HWY_INLINE void packet_acceleration_simd(const F& accel, const double* y, double
     accel(x, k, acc);
     for (int i = 0; i < 4; ++i) acc[i].store(a + i * stride + l);
   }
+}
+
+/// A metric's condition on the position x (a template over the number type giving a lane mask,
+/// e.g. its validity domain) on a packet of `stride` lanes in structure-of-arrays layout (y holds
+/// x^μ in its first 4 rows of `stride` doubles): bit l set where it holds on lane l.
+template <class Condition>
+HWY_INLINE unsigned packet_position_mask_simd(const Condition& condition, const double* y, size_t stride) {
+  unsigned bits = 0;
+  for (size_t l = 0; l < stride; l += SimdD::lanes()) {
+    Vec4T<SimdD> x;
+    for (int i = 0; i < 4; ++i) x[i] = SimdD::load(y + i * stride + l);
+    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(SimdTag(), condition(x).m, lane_bits);
+    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+  }
+  return bits;
+}
+
+#include "spacetime/geodesic_constraint.h"  // geodesic_constraint: this target's copy
+
+/// MetricSystem::constraint (integrators.h, geodesic_constraint) on a packet of `stride` lanes in
+/// structure-of-arrays layout, one SimdD of lanes at a time: y holds x^μ, k^μ (8 rows of `stride`
+/// doubles), value and scale receive one double per lane. metric_tensor(x, g) is the metric's
+/// g_μν template (Mat4T<SimdD>); no_observer_norm(x, g, k) its own size of k where x^0 is no time
+/// coordinate, or abs_quadratic_form's.
+template <class MetricTensor, class NoObserverNorm>
+HWY_INLINE void packet_constraint_simd(const MetricTensor& metric_tensor, const NoObserverNorm& no_observer_norm,
+                                       const double* y, double target, double* value, double* scale, size_t stride) {
+  for (size_t l = 0; l < stride; l += SimdD::lanes()) {
+    Vec4T<SimdD> x, k;
+    for (int i = 0; i < 4; ++i) {
+      x[i] = SimdD::load(y + i * stride + l);
+      k[i] = SimdD::load(y + (4 + i) * stride + l);
+    }
+    Mat4T<SimdD> g;
+    metric_tensor(x, g);
+    SimdD v, s;
+    // This target's copy (geovis::geodesic_constraint is the scalar one).
+    HWY_NAMESPACE::geodesic_constraint(g, k, target, [&] { return no_observer_norm(x, g, k); }, v, s);
+    v.store(value + l);
+    s.store(scale + l);
+  }
+}
+/// The same for a metric whose x^0 is a time coordinate wherever its rays go (no size of k of its
+/// own: abs_quadratic_form).
+template <class MetricTensor>
+HWY_INLINE void packet_constraint_simd(const MetricTensor& metric_tensor, const double* y, double target, double* value,
+                                       double* scale, size_t stride) {
+  packet_constraint_simd(
+      metric_tensor,
+      [](const Vec4T<SimdD>&, const Mat4T<SimdD>& g, const Vec4T<SimdD>& k) {
+        return HWY_NAMESPACE::abs_quadratic_form(g, k);
+      },
+      y, target, value, scale, stride);
 }
 
 }  // namespace HWY_NAMESPACE

@@ -53,6 +53,18 @@ struct Vec3 {
   constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
 };
 
+// ---- conditions on one value or on SIMD lanes ---------------------------------------------------
+// A formula written once for one ray (a bool condition) and for a packet of rays on SIMD lanes (a
+// lane mask: simd.h's select, all_of, none_of) takes these for its bool.
+
+/// cond ? x : y.
+template <class T>
+inline T select(bool cond, const T& x, const T& y) {
+  return cond ? x : y;
+}
+inline bool all_of(bool cond) { return cond; }
+inline bool none_of(bool cond) { return !cond; }
+
 // ---- Vec4 arithmetic ----------------------------------------------------------------------------
 template <class T>
 constexpr Vec4T<T> operator+(const Vec4T<T>& a, const Vec4T<T>& b) {

@@ -252,16 +252,51 @@ TEST(GeodesicPacket, KastorTraschenExpandingSameBitsAsScalar) {
   }
 }
 
-// The metrics whose acceleration is a template compiled per SIMD target: the packets of
-// PacketEveryMetric run their SIMD path (the others run the scalar acceleration lane by lane), so
-// the bit-identity above is a test of the templates, not of the scalar function twice.
+// The metrics whose acceleration and g_μν (the constraint test) are templates compiled per SIMD
+// target: the packets of PacketEveryMetric run their SIMD path (the others run the scalar
+// functions lane by lane), so the bit-identity above is a test of the templates, not of the scalar
+// function twice.
 TEST(GeodesicPacket, MetricsWithSimdAcceleration) {
   for (const char* name : {"EddFinkIn", "KerrBL", "MorrisThorne", "Schwarzschild", "KastorTraschen",
                            "ReissnerNordstrom", "Kottler", "BarriolaVilenkin", "Ernst", "SchwarzschildIsotropic",
                            "CosmicStringSchwarzschild"}) {
     EXPECT_TRUE(make_metric(name)->has_simd_packet_acceleration()) << name;
+    EXPECT_TRUE(make_metric(name)->has_simd_packet_constraint()) << name;
   }
   EXPECT_FALSE(make_metric("Minkowski")->has_simd_packet_acceleration());
+  EXPECT_FALSE(make_metric("Minkowski")->has_simd_packet_constraint());
+}
+
+// The constraint test (geodesic_constraint.h) on SIMD lanes from the metrics' g_μν templates
+// (EddFinkIn: its own size of k, x^0 being null; KerrBL: the slicing observer of an off-diagonal
+// metric; MorrisThorne, KastorTraschen: diagonal) and lane by lane (PainleveGullstrand) stops each
+// ray where the scalar test does: with a tolerance so tight that some rays of the fan stop on it
+// and others do not (the loosest of 10^-3 … 10^-14 where the scalar integrator stops some but not
+// all), every ray's steps and stop agree to the bit.
+TEST(GeodesicPacket, ConstraintStopsAsTheScalarIntegrator) {
+  for (const char* name : {"EddFinkIn", "KerrBL", "MorrisThorne", "KastorTraschen", "PainleveGullstrand"}) {
+    SCOPED_TRACE(name);
+    const auto m = make_metric(name);
+    SolverConfig cfg = packet_config();
+    const auto y0 = fan(*m, 16);
+    auto constraint_stops = [&] {
+      int n = 0;
+      for (const auto& ys : y0) {
+        double y[8];
+        std::copy(ys.begin(), ys.end(), y);
+        if (m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {}).reason == StopReason::Constraint) ++n;
+      }
+      return n;
+    };
+    int stops = 0;
+    for (cfg.constraint_tol = 1e-3; cfg.constraint_tol > 1e-15; cfg.constraint_tol *= 0.1) {
+      stops = constraint_stops();
+      if (stops > 0) break;
+    }
+    ASSERT_GT(stops, 0);
+    ASSERT_LT(stops, static_cast<int>(y0.size())) << "constraint_tol " << cfg.constraint_tol;
+    for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0); });
+  }
 }
 
 // The diagonal metrics on SIMD lanes (diagonal_metric_accel.h) with parameters away from the

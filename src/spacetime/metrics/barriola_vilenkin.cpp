@@ -47,17 +47,10 @@ class BarriolaVilenkin final : public MetricCRTP<BarriolaVilenkin> {
     on_params_changed();
   }
 
+  /// The line element (barriola_vilenkin_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::sin;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T& r = x[1];
-    const T st = sin_t(x[2]);
-    g[0][0] = T(-1.0);
-    g[1][1] = T(1.0);
-    g[2][2] = k2_ * r * r;
-    g[3][3] = k2_ * r * r * st * st;
+    scalar::barriola_vilenkin_metric_tensor(k2_, x, g);
   }
 
   /// g_μμ and their derivatives (barriola_vilenkin_accel.h).
@@ -72,6 +65,8 @@ class BarriolaVilenkin final : public MetricCRTP<BarriolaVilenkin> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::barriola_vilenkin_accel(k2_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// r > 0 (the conical singularity at the origin) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
@@ -116,6 +111,10 @@ void barriola_vilenkin_packet_acceleration(double k2, const double* y, double* a
       [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { barriola_vilenkin_accel(k2, x, k, acc); },
       y, a, kPacketLanes);
 }
+void barriola_vilenkin_packet_constraint(double k2, const double* y, double target, double* value, double* scale) {
+  packet_constraint_simd([k2](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { barriola_vilenkin_metric_tensor(k2, x, g); }, y,
+                         target, value, scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -125,6 +124,10 @@ namespace geovis {
 HWY_EXPORT(barriola_vilenkin_packet_acceleration);
 void BarriolaVilenkin::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(barriola_vilenkin_packet_acceleration)(k2_, y, a);
+}
+HWY_EXPORT(barriola_vilenkin_packet_constraint);
+void BarriolaVilenkin::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
+  HWY_DYNAMIC_DISPATCH(barriola_vilenkin_packet_constraint)(k2_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif

@@ -53,17 +53,10 @@ class CosmicStringSchwarzschild final : public MetricCRTP<CosmicStringSchwarzsch
     on_params_changed();
   }
 
+  /// The line element (cosmic_string_schwarzschild_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T& r = x[1];
-    const T f = 1.0 - rs_ / r;
-    const T st = sin_t(x[2]);
-    g[0][0] = -f;
-    g[1][1] = 1.0 / f;
-    g[2][2] = r * r;
-    g[3][3] = b2_ * r * r * st * st;
+    scalar::cosmic_string_schwarzschild_metric_tensor(rs_, b2_, x, g);
   }
 
   /// g_μμ and their derivatives (cosmic_string_schwarzschild_accel.h).
@@ -82,6 +75,8 @@ class CosmicStringSchwarzschild final : public MetricCRTP<CosmicStringSchwarzsch
   }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// Outside the horizon break radius r_s (1 + horizon_eps), off the axis (the string).
   bool is_valid(const Vec4& x) const override {
@@ -139,6 +134,12 @@ void cosmic_string_schwarzschild_packet_acceleration(double rs, double b2, const
                                Vec4T<SimdD>& acc) { cosmic_string_schwarzschild_accel(rs, b2, x, k, acc); },
                            y, a, kPacketLanes);
 }
+void cosmic_string_schwarzschild_packet_constraint(double rs, double b2, const double* y, double target, double* value,
+                                                   double* scale) {
+  packet_constraint_simd(
+      [rs, b2](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { cosmic_string_schwarzschild_metric_tensor(rs, b2, x, g); }, y,
+      target, value, scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -148,6 +149,11 @@ namespace geovis {
 HWY_EXPORT(cosmic_string_schwarzschild_packet_acceleration);
 void CosmicStringSchwarzschild::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(cosmic_string_schwarzschild_packet_acceleration)(rs_, b2_, y, a);
+}
+HWY_EXPORT(cosmic_string_schwarzschild_packet_constraint);
+void CosmicStringSchwarzschild::packet_constraint_simd(const double* y, double target, double* value,
+                                                       double* scale) const {
+  HWY_DYNAMIC_DISPATCH(cosmic_string_schwarzschild_packet_constraint)(rs_, b2_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif

@@ -44,17 +44,10 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
     on_params_changed();
   }
 
+  /// The line element in the file comment (edd_fink_in_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::sin;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T& r = x[1];
-    const T st = sin_t(x[2]);
-    g[0][0] = -(1.0 - rs_ / r);
-    g[0][1] = g[1][0] = T(1.0);
-    g[2][2] = r * r;
-    g[3][3] = r * r * st * st;
+    scalar::edd_fink_in_metric_tensor(rs_, x, g);
   }
 
   /// Non-zero symbols (Catalogue of Spacetimes, Eddington-Finkelstein coordinates):
@@ -84,6 +77,8 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::edd_fink_in_accel(rs_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// The chart is regular across the horizon: valid for r > 0 (curvature singularity; small
   /// margin) and off the polar axis.
@@ -118,9 +113,7 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
   /// u_μ = (−1, 1/(1 + w), 0, 0), so its energy is E = −u·k = k^v − k^r/(1 + w), and
   /// h(k,k) = g(k,k) + 2E² is the Euclidean norm² of k in u's orthonormal frame.
   double constraint_norm(const Vec4& x, const Mat4& g, const Vec4& k) const {
-    const double w = std::sqrt(rs_ / x[1]);
-    const double E = k[0] - k[1] / (1.0 + w);
-    return dot(g, k, k) + 2.0 * E * E;
+    return scalar::edd_fink_in_constraint_norm(rs_, x, g, k);
   }
 
   /// Static observer (r > r_s), as Motion4D's m4dMetricEddFinkIn: with w = sqrt(1 − r_s/r),
@@ -186,6 +179,13 @@ void edd_fink_in_packet_acceleration(double rs, const double* y, double* a) {
       [rs](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { edd_fink_in_accel(rs, x, k, acc); }, y,
       a, kPacketLanes);
 }
+void edd_fink_in_packet_constraint(double rs, const double* y, double target, double* value, double* scale) {
+  packet_constraint_simd([rs](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { edd_fink_in_metric_tensor(rs, x, g); },
+                         [rs](const Vec4T<SimdD>& x, const Mat4T<SimdD>& g, const Vec4T<SimdD>& k) {
+                           return edd_fink_in_constraint_norm(rs, x, g, k);
+                         },
+                         y, target, value, scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -195,6 +195,10 @@ namespace geovis {
 HWY_EXPORT(edd_fink_in_packet_acceleration);
 void EddFinkIn::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(edd_fink_in_packet_acceleration)(rs_, y, a);
+}
+HWY_EXPORT(edd_fink_in_packet_constraint);
+void EddFinkIn::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
+  HWY_DYNAMIC_DISPATCH(edd_fink_in_packet_constraint)(rs_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif

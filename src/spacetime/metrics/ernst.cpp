@@ -47,20 +47,10 @@ class Ernst final : public MetricCRTP<Ernst> {
     on_params_changed();
   }
 
+  /// The line element (ernst_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::sin;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T& r = x[1];
-    const T st = sin_t(x[2]);
-    const T f = 1.0 - rs_ / r;
-    const T L = 1.0 + B2_ * r * r * st * st;
-    const T L2 = L * L;
-    g[0][0] = -L2 * f;
-    g[1][1] = L2 / f;
-    g[2][2] = L2 * r * r;
-    g[3][3] = r * r * st * st / L2;
+    scalar::ernst_metric_tensor(B2_, rs_, x, g);
   }
 
   /// g_μμ and their derivatives (ernst_accel.h).
@@ -75,6 +65,8 @@ class Ernst final : public MetricCRTP<Ernst> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::ernst_accel(B2_, rs_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// Outside the horizon r = 2M and off the polar axis.
   bool is_valid(const Vec4& x) const override {
@@ -119,6 +111,10 @@ void ernst_packet_acceleration(double B2, double rs, const double* y, double* a)
       [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { ernst_accel(B2, rs, x, k, acc); }, y, a,
       kPacketLanes);
 }
+void ernst_packet_constraint(double B2, double rs, const double* y, double target, double* value, double* scale) {
+  packet_constraint_simd([B2, rs](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { ernst_metric_tensor(B2, rs, x, g); }, y,
+                         target, value, scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -128,6 +124,10 @@ namespace geovis {
 HWY_EXPORT(ernst_packet_acceleration);
 void Ernst::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(ernst_packet_acceleration)(B2_, rs_, y, a);
+}
+HWY_EXPORT(ernst_packet_constraint);
+void Ernst::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
+  HWY_DYNAMIC_DISPATCH(ernst_packet_constraint)(B2_, rs_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif

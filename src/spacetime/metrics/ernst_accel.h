@@ -5,6 +5,23 @@
 // same bits. No include guard: each inclusion defines the templates in the namespace it is
 // included in.
 
+/// g_μν of Ernst (ernst.cpp): Ernst::g_tmpl on every number type, and on SIMD lanes the packet
+/// integrator's constraint test.
+template <class T>
+GEOVIS_HOT_INLINE void ernst_metric_tensor(double B2, double rs, const Vec4T<T>& x, Mat4T<T>& g) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+  const T& r = x[1];
+  const T st = sin_t(x[2]);
+  const T f = 1.0 - rs / r;
+  const T L = 1.0 + B2 * r * r * st * st;
+  const T L2 = L * L;
+  g[0][0] = -L2 * f;
+  g[1][1] = L2 / f;
+  g[2][2] = L2 * r * r;
+  g[3][3] = r * r * st * st / L2;
+}
+
 /// g_μμ of ds² = Λ² [−f dt² + dr²/f + r² dθ²] + r² sin²θ / Λ² dφ² (Catalogue of Spacetimes,
 /// "Ernst spacetime") and their derivatives, with Λ_r = 2B² r sin²θ, Λ_θ = 2B² r² sinθ cosθ,
 /// f_r = 2M/r² (product and quotient rule on the line element).

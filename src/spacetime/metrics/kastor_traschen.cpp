@@ -62,21 +62,10 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
     on_params_changed();
   }
 
+  /// The line element in the file comment (kastor_traschen_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::sqrt;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T a = exp_t(h_ * x[0]);
-    const T d1 = x[3] - z1_, d2 = x[3] - z2_;
-    const T rho2 = x[1] * x[1] + x[2] * x[2];
-    const T r1 = sqrt(rho2 + d1 * d1), r2 = sqrt(rho2 + d2 * d2);
-    const T Om = 1.0 + (m1_ / r1 + m2_ / r2) / a;
-    g[0][0] = -1.0 / (Om * Om);
-    const T s = a * a * Om * Om;
-    g[1][1] = s;
-    g[2][2] = s;
-    g[3][3] = s;
+    scalar::kastor_traschen_metric_tensor(prm_, x, g);
   }
 
   void christoffel_closed(const Vec4& x, Christoffel& G) const {
@@ -116,6 +105,8 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::kastor_traschen_accel(prm_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// Stops at the black holes, with Motion4D's relative margin 1e-6 about the points r_i = 0, and
   /// where the squared redshift factor −g_tt = 1/Ω² falls below horizon_eps (Metric::horizon_eps;
@@ -127,18 +118,13 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
   /// H = 0 exactly √(−g_tt) between rest at x and rest far away, the Majumdar–Papapetrou limit), so
   /// its intensity falls like 1/Ω⁴: below the margin (1/Ω < 10⁻² at the default 10⁻⁴) nothing
   /// visible comes from there, as at the break radius r_s (1 + horizon_eps) of Schwarzschild.
+  /// The test is kastor_traschen_valid (kastor_traschen_accel.h), a template that packets of rays
+  /// run on SIMD lanes.
   bool is_valid(const Vec4& x) const override {
-    for (int i = 0; i < 4; ++i)
-      if (!std::isfinite(x[i])) return false;
-    const double rho2 = x[1] * x[1] + x[2] * x[2];
-    const double d1 = x[3] - z1_, d2 = x[3] - z2_;
-    const double q1 = rho2 + d1 * d1, q2 = rho2 + d2 * d2;
-    if (m1_ > 0 && !(q1 > r_break1_ * r_break1_)) return false;
-    if (m2_ > 0 && !(q2 > r_break2_ * r_break2_)) return false;
-    const double sum = (m1_ > 0 ? m1_ / std::sqrt(q1) : 0.0) + (m2_ > 0 ? m2_ / std::sqrt(q2) : 0.0);
-    const double Om = 1.0 + sum / fast_exp(h_ * x[0]);
-    return 1.0 / (Om * Om) > horizon_eps_;
+    return scalar::kastor_traschen_valid(prm_, r_break1_, r_break2_, horizon_eps_, x);
   }
+  /// The same on every lane of a packet (geodesic_packet.h), SIMD: bit l set where lane l is valid.
+  unsigned packet_is_valid_simd(const double* y) const;
 
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
@@ -190,6 +176,17 @@ void kastor_traschen_packet_acceleration(const KastorTraschenParams& p, const do
       [&p](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { kastor_traschen_accel(p, x, k, acc); },
       y, a, kPacketLanes);
 }
+unsigned kastor_traschen_packet_is_valid(const KastorTraschenParams& p, double r_break1, double r_break2,
+                                         double horizon_eps, const double* y) {
+  return packet_position_mask_simd(
+      [&](const Vec4T<SimdD>& x) { return kastor_traschen_valid(p, r_break1, r_break2, horizon_eps, x); }, y,
+      kPacketLanes);
+}
+void kastor_traschen_packet_constraint(const KastorTraschenParams& p, const double* y, double target, double* value,
+                                       double* scale) {
+  packet_constraint_simd([&p](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { kastor_traschen_metric_tensor(p, x, g); }, y,
+                         target, value, scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -199,6 +196,14 @@ namespace geovis {
 HWY_EXPORT(kastor_traschen_packet_acceleration);
 void KastorTraschen::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(kastor_traschen_packet_acceleration)(prm_, y, a);
+}
+HWY_EXPORT(kastor_traschen_packet_is_valid);
+unsigned KastorTraschen::packet_is_valid_simd(const double* y) const {
+  return HWY_DYNAMIC_DISPATCH(kastor_traschen_packet_is_valid)(prm_, r_break1_, r_break2_, horizon_eps_, y);
+}
+HWY_EXPORT(kastor_traschen_packet_constraint);
+void KastorTraschen::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
+  HWY_DYNAMIC_DISPATCH(kastor_traschen_packet_constraint)(prm_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif

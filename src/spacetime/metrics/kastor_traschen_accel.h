@@ -12,6 +12,44 @@
 //   a^i = Ω_i (k^t)²/(Ω⁵a²) − 2(Ω_t/Ω + H) k^t k^i − (2 k^i Ω·k − Ω_i |k|²)/Ω,
 // the last term being Σ_j Γ^i_jj (k^j)² + 2 Σ_{j≠i} Γ^i_ij k^i k^j = (Ω_i(2(k^i)² − |k|²) +
 // 2k^i(Ω·k − Ω_i k^i))/Ω.
+/// ds² = −dt²/Ω² + a² Ω² (dx² + dy² + dz²) (kastor_traschen.cpp); KastorTraschen::g_tmpl on every
+/// number type, and on SIMD lanes the packet's constraint test.
+template <class T>
+GEOVIS_HOT_INLINE void kastor_traschen_metric_tensor(const KastorTraschenParams& p, const Vec4T<T>& x, Mat4T<T>& g) {
+  using std::sqrt;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+  const T a = exp_t(p.h * x[0]);
+  const T d1 = x[3] - p.z1, d2 = x[3] - p.z2;
+  const T rho2 = x[1] * x[1] + x[2] * x[2];
+  const T r1 = sqrt(rho2 + d1 * d1), r2 = sqrt(rho2 + d2 * d2);
+  const T Om = 1.0 + (p.m1 / r1 + p.m2 / r2) / a;
+  g[0][0] = -1.0 / (Om * Om);
+  const T s = a * a * Om * Om;
+  g[1][1] = s;
+  g[2][2] = s;
+  g[3][3] = s;
+}
+
+/// KastorTraschen::is_valid (kastor_traschen.cpp, which says why) on any number type: the
+/// validity domain without the black holes' break margins (r_break1, r_break2) and where the
+/// squared redshift factor 1/Ω² falls below horizon_eps; a bool on doubles, a lane mask on SimdD.
+template <class T>
+GEOVIS_HOT_INLINE auto kastor_traschen_valid(const KastorTraschenParams& p, double r_break1, double r_break2,
+                                             double horizon_eps, const Vec4T<T>& x) {
+  using std::isfinite;
+  using std::sqrt;
+  auto valid = isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2]) && isfinite(x[3]);
+  const T rho2 = x[1] * x[1] + x[2] * x[2];
+  const T d1 = x[3] - p.z1, d2 = x[3] - p.z2;
+  const T q1 = rho2 + d1 * d1, q2 = rho2 + d2 * d2;
+  if (p.m1 > 0) valid = valid && q1 > T(r_break1 * r_break1);
+  if (p.m2 > 0) valid = valid && q2 > T(r_break2 * r_break2);
+  const T sum = (p.m1 > 0 ? p.m1 / sqrt(q1) : T(0.0)) + (p.m2 > 0 ? p.m2 / sqrt(q2) : T(0.0));
+  const T Om = 1.0 + sum / exp_t(p.h * x[0]);
+  return valid && 1.0 / (Om * Om) > T(horizon_eps);
+}
+
 template <class T>
 GEOVIS_HOT_INLINE void kastor_traschen_accel(const KastorTraschenParams& p, const Vec4T<T>& x, const Vec4T<T>& k,
                                              Vec4T<T>& acc) {

@@ -112,24 +112,10 @@ class KerrBL final : public MetricCRTP<KerrBL> {
     on_params_changed();
   }
 
+  /// The line element (kerr_bl_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::cos;
-    using std::sin;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T& r = x[1];
-    T st, ct;
-    sincos_t(x[2], st, ct);
-    const T st2 = st * st;
-    const T sigma = r * r + a2_ * (ct * ct);
-    const T delta = r * r - rs_ * r + a2_;
-    const T u = rs_ * r / sigma;  // one division (the constraint test evaluates g every step)
-    g[0][0] = u - 1.0;
-    g[0][3] = g[3][0] = -a_ * st2 * u;
-    g[1][1] = sigma / delta;
-    g[2][2] = sigma;
-    g[3][3] = (r * r + a2_ + a2_ * st2 * u) * st2;
+    scalar::kerr_bl_metric_tensor(rs_, a_, a2_, x, g);
   }
 
   /// Γ^μ_{ab} in closed form, on doubles or on dual numbers (MetricCRTP::christoffel_inline,
@@ -221,6 +207,8 @@ class KerrBL final : public MetricCRTP<KerrBL> {
   }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// Outside the outer horizon r_+ = M + √(M² − a²) with the break margin r_+ (1 + horizon_eps)
   /// (Metric::horizon_eps) and off the polar axis, where BL coordinates are singular (sin θ == 0
@@ -326,6 +314,12 @@ void kerr_bl_packet_acceleration(double rs, double a, double a2, const double* y
                                        Vec4T<SimdD>& out) { kerr_bl_accel(rs, a, a2, x[1], x[2], k[0], k[1], k[2], k[3], out); },
                            y, acc, kPacketLanes);
 }
+void kerr_bl_packet_constraint(double rs, double a, double a2, const double* y, double target, double* value,
+                               double* scale) {
+  packet_constraint_simd(
+      [rs, a, a2](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { kerr_bl_metric_tensor(rs, a, a2, x, g); }, y, target, value,
+      scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -335,6 +329,10 @@ namespace geovis {
 HWY_EXPORT(kerr_bl_packet_acceleration);
 void KerrBL::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(kerr_bl_packet_acceleration)(rs_, a_, a2_, y, a);
+}
+HWY_EXPORT(kerr_bl_packet_constraint);
+void KerrBL::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
+  HWY_DYNAMIC_DISPATCH(kerr_bl_packet_constraint)(rs_, a_, a2_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif

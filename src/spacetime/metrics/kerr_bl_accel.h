@@ -1,9 +1,28 @@
-// −Γ^μ_{ab} k^a k^b of Kerr in Boyer–Lindquist coordinates through the derivatives of g (see
-// KerrBL::accel_closed in kerr_bl.cpp for the method), written once as a template over the number
-// type: kerr_bl.cpp includes this file once for doubles (the scalar integrator) and once per SIMD
-// target for SimdD (spacetime/simd.h, the packet integrator), so both run the same operations and
-// give the same bits. No include guard: each inclusion defines the template in the namespace it is
-// included in.
+// g_μν and −Γ^μ_{ab} k^a k^b of Kerr in Boyer–Lindquist coordinates, the latter through the
+// derivatives of g (see KerrBL::accel_closed in kerr_bl.cpp for the method), written once as
+// templates over the number type: kerr_bl.cpp includes this file once for doubles and dual numbers
+// (the scalar integrator, g_tmpl) and once per SIMD target for SimdD (spacetime/simd.h, the packet
+// integrator), so both run the same operations and give the same bits. No include guard: each
+// inclusion defines the templates in the namespace it is included in.
+
+/// The Kerr line element in Boyer–Lindquist coordinates (kerr_bl.cpp), r_s = 2M.
+template <class T>
+GEOVIS_HOT_INLINE void kerr_bl_metric_tensor(double rs, double a, double a2, const Vec4T<T>& x, Mat4T<T>& g) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+  const T& r = x[1];
+  T st, ct;
+  sincos_t(x[2], st, ct);
+  const T st2 = st * st;
+  const T sigma = r * r + a2 * (ct * ct);
+  const T delta = r * r - rs * r + a2;
+  const T u = rs * r / sigma;  // one division (the constraint test evaluates g every step)
+  g[0][0] = u - 1.0;
+  g[0][3] = g[3][0] = -a * st2 * u;
+  g[1][1] = sigma / delta;
+  g[2][2] = sigma;
+  g[3][3] = (r * r + a2 + a2 * st2 * u) * st2;
+}
 //
 // The position (r, θ) and the direction k may have different number types T and K: doubles, SIMD
 // lanes (T = K = SimdD), or dual numbers in r and θ with a plain k (KerrBL::jacobi_terms_closed: the

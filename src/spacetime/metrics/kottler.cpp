@@ -49,18 +49,10 @@ class Kottler final : public MetricCRTP<Kottler> {
     on_params_changed();
   }
 
+  /// The line element (kottler_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::sin;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T& r = x[1];
-    const T f = 1.0 - 2.0 * M_ / r - (L_ / 3.0) * r * r;
-    const T st = sin_t(x[2]);
-    g[0][0] = -f;
-    g[1][1] = 1.0 / f;
-    g[2][2] = r * r;
-    g[3][3] = r * r * st * st;
+    scalar::kottler_metric_tensor(M_, L_, x, g);
   }
 
   double f_of(double r) const { return 1.0 - 2.0 * M_ / r - (L_ / 3.0) * r * r; }
@@ -77,6 +69,8 @@ class Kottler final : public MetricCRTP<Kottler> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::kottler_accel(M_, L_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// Inside the static region f > 0 (between the horizons), r > 0, off the polar axis. The
   /// margin 1e-8 on f corresponds to Schwarzschild's r > r_s (1 + 1e-8).
@@ -139,6 +133,10 @@ void kottler_packet_acceleration(double M, double L, const double* y, double* a)
       [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { kottler_accel(M, L, x, k, acc); }, y, a,
       kPacketLanes);
 }
+void kottler_packet_constraint(double M, double L, const double* y, double target, double* value, double* scale) {
+  packet_constraint_simd([M, L](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { kottler_metric_tensor(M, L, x, g); }, y,
+                         target, value, scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -148,6 +146,10 @@ namespace geovis {
 HWY_EXPORT(kottler_packet_acceleration);
 void Kottler::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(kottler_packet_acceleration)(M_, L_, y, a);
+}
+HWY_EXPORT(kottler_packet_constraint);
+void Kottler::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
+  HWY_DYNAMIC_DISPATCH(kottler_packet_constraint)(M_, L_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif

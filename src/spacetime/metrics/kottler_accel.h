@@ -5,6 +5,21 @@
 // same bits. No include guard: each inclusion defines the templates in the namespace it is
 // included in.
 
+/// g_μν of Kottler (kottler.cpp): Kottler::g_tmpl on every number type, and on SIMD lanes the
+/// packet integrator's constraint test.
+template <class T>
+GEOVIS_HOT_INLINE void kottler_metric_tensor(double M, double L, const Vec4T<T>& x, Mat4T<T>& g) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+  const T& r = x[1];
+  const T f = 1.0 - 2.0 * M / r - (L / 3.0) * r * r;
+  const T st = sin_t(x[2]);
+  g[0][0] = -f;
+  g[1][1] = 1.0 / f;
+  g[2][2] = r * r;
+  g[3][3] = r * r * st * st;
+}
+
 /// f = 1 − 2M/r − Λr²/3, f' = 2M/r² − 2Λr/3, (1/f)' = −f'/f² (Catalogue of Spacetimes, "Kottler").
 template <class T>
 GEOVIS_HOT_INLINE void kottler_diagonal(double M, double L, const Vec4T<T>& x, DiagonalMetricT<T>& d) {

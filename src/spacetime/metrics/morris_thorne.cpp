@@ -51,17 +51,10 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
     on_params_changed();
   }
 
+  /// The line element in the file comment (morris_thorne_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::sin;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T r2 = b02_ + x[1] * x[1];
-    const T st = sin_t(x[2]);
-    g[0][0] = T(-1.0);
-    g[1][1] = T(1.0);
-    g[2][2] = r2;
-    g[3][3] = r2 * st * st;
+    scalar::morris_thorne_metric_tensor(b02_, x, g);
   }
 
   /// Catalogue of Spacetimes, "Morris-Thorne": Γ^l_θθ = −l, Γ^l_φφ = −l sin²θ,
@@ -84,6 +77,8 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::morris_thorne_accel(b02_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// The spacetime is regular everywhere; only the polar axis is a coordinate singularity.
   bool is_valid(const Vec4& x) const override {
@@ -155,6 +150,10 @@ void morris_thorne_packet_acceleration(double b02, const double* y, double* a) {
       [b02](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { morris_thorne_accel(b02, x, k, acc); },
       y, a, kPacketLanes);
 }
+void morris_thorne_packet_constraint(double b02, const double* y, double target, double* value, double* scale) {
+  packet_constraint_simd([b02](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { morris_thorne_metric_tensor(b02, x, g); }, y,
+                         target, value, scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -164,6 +163,10 @@ namespace geovis {
 HWY_EXPORT(morris_thorne_packet_acceleration);
 void MorrisThorne::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(morris_thorne_packet_acceleration)(b02_, y, a);
+}
+HWY_EXPORT(morris_thorne_packet_constraint);
+void MorrisThorne::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
+  HWY_DYNAMIC_DISPATCH(morris_thorne_packet_constraint)(b02_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif

@@ -50,18 +50,10 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
     on_params_changed();
   }
 
+  /// The line element (reissner_nordstrom_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::sin;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T& r = x[1];
-    const T f = 1.0 - 2.0 * M_ / r + Q2_ / (r * r);
-    const T st = sin_t(x[2]);
-    g[0][0] = -f;
-    g[1][1] = 1.0 / f;
-    g[2][2] = r * r;
-    g[3][3] = r * r * st * st;
+    scalar::reissner_nordstrom_metric_tensor(M_, Q2_, x, g);
   }
 
   /// g_μμ and their derivatives (reissner_nordstrom_accel.h).
@@ -76,6 +68,8 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::reissner_nordstrom_accel(M_, Q2_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// Outside the outer horizon (or r > 0 for a naked singularity) and off the polar axis.
   bool is_valid(const Vec4& x) const override {
@@ -150,6 +144,12 @@ void reissner_nordstrom_packet_acceleration(double M, double Q2, const double* y
                                Vec4T<SimdD>& acc) { reissner_nordstrom_accel(M, Q2, x, k, acc); },
                            y, a, kPacketLanes);
 }
+void reissner_nordstrom_packet_constraint(double M, double Q2, const double* y, double target, double* value,
+                                          double* scale) {
+  packet_constraint_simd(
+      [M, Q2](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { reissner_nordstrom_metric_tensor(M, Q2, x, g); }, y, target,
+      value, scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -159,6 +159,10 @@ namespace geovis {
 HWY_EXPORT(reissner_nordstrom_packet_acceleration);
 void ReissnerNordstrom::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(reissner_nordstrom_packet_acceleration)(M_, Q2_, y, a);
+}
+HWY_EXPORT(reissner_nordstrom_packet_constraint);
+void ReissnerNordstrom::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
+  HWY_DYNAMIC_DISPATCH(reissner_nordstrom_packet_constraint)(M_, Q2_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif

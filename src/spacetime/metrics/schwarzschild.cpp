@@ -41,18 +41,10 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
     on_params_changed();
   }
 
+  /// The line element (schwarzschild_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::sin;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T& r = x[1];
-    const T f = 1.0 - rs_ / r;
-    const T st = sin_t(x[2]);
-    g[0][0] = -f;
-    g[1][1] = 1.0 / f;
-    g[2][2] = r * r;
-    g[3][3] = r * r * st * st;
+    scalar::schwarzschild_metric_tensor(rs_, x, g);
   }
 
   /// Γ^μ_{ab} in closed form, on doubles or on dual numbers (MetricCRTP::christoffel_inline,
@@ -83,6 +75,8 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
   }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// Outside the horizon break radius r_s (1 + horizon_eps) and off the polar axis (where the
   /// coordinates are singular). For a finite double θ, sin θ == 0 exactly iff θ == 0 (no other
@@ -155,6 +149,10 @@ void schwarzschild_packet_acceleration(double rs, const double* y, double* a) {
       [rs](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { schwarzschild_accel(rs, x, k, acc); },
       y, a, kPacketLanes);
 }
+void schwarzschild_packet_constraint(double rs, const double* y, double target, double* value, double* scale) {
+  packet_constraint_simd([rs](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { schwarzschild_metric_tensor(rs, x, g); }, y,
+                         target, value, scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -164,6 +162,10 @@ namespace geovis {
 HWY_EXPORT(schwarzschild_packet_acceleration);
 void Schwarzschild::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(schwarzschild_packet_acceleration)(rs_, y, a);
+}
+HWY_EXPORT(schwarzschild_packet_constraint);
+void Schwarzschild::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
+  HWY_DYNAMIC_DISPATCH(schwarzschild_packet_constraint)(rs_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif

@@ -46,17 +46,10 @@ class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
     on_params_changed();
   }
 
+  /// The line element (schwarzschild_isotropic_accel.h).
   template <class T>
   void g_tmpl(const Vec4T<T>& x, Mat4T<T>& g) const {
-    using std::sqrt;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-    const T rho = sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
-    const T alpha = (rho - rho_s_) / (rho + rho_s_);  // (1 − ρ_s/ρ)/(1 + ρ_s/ρ)
-    const T psi = 1.0 + rho_s_ / rho;
-    const T psi2 = psi * psi;
-    g[0][0] = -alpha * alpha;
-    g[1][1] = g[2][2] = g[3][3] = psi2 * psi2;
+    scalar::schwarzschild_isotropic_metric_tensor(rho_s_, x, g);
   }
 
   /// g_μμ and their derivatives (schwarzschild_isotropic_accel.h).
@@ -73,6 +66,8 @@ class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
   }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
+  void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
   /// Outside the horizon ρ = ρ_s (margin 1e-8 as Schwarzschild). The isotropic chart also covers
   /// the second exterior ρ < ρ_s, which a ray cannot reach without crossing the horizon.
@@ -133,6 +128,12 @@ void schwarzschild_isotropic_packet_acceleration(double rho_s, const double* y, 
                                Vec4T<SimdD>& acc) { schwarzschild_isotropic_accel(rho_s, x, k, acc); },
                            y, a, kPacketLanes);
 }
+void schwarzschild_isotropic_packet_constraint(double rho_s, const double* y, double target, double* value,
+                                               double* scale) {
+  packet_constraint_simd(
+      [rho_s](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { schwarzschild_isotropic_metric_tensor(rho_s, x, g); }, y,
+      target, value, scale, kPacketLanes);
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -142,6 +143,11 @@ namespace geovis {
 HWY_EXPORT(schwarzschild_isotropic_packet_acceleration);
 void SchwarzschildIsotropic::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(schwarzschild_isotropic_packet_acceleration)(rho_s_, y, a);
+}
+HWY_EXPORT(schwarzschild_isotropic_packet_constraint);
+void SchwarzschildIsotropic::packet_constraint_simd(const double* y, double target, double* value,
+                                                    double* scale) const {
+  HWY_DYNAMIC_DISPATCH(schwarzschild_isotropic_packet_constraint)(rho_s_, y, target, value, scale);
 }
 }  // namespace geovis
 #endif

@@ -6,6 +6,21 @@
 // same bits. No include guard: each inclusion defines the templates in the namespace it is
 // included in.
 
+/// g_μν of SchwarzschildIsotropic (schwarzschild_isotropic.cpp): SchwarzschildIsotropic::g_tmpl on
+/// every number type, and on SIMD lanes the packet integrator's constraint test.
+template <class T>
+GEOVIS_HOT_INLINE void schwarzschild_isotropic_metric_tensor(double rho_s, const Vec4T<T>& x, Mat4T<T>& g) {
+  using std::sqrt;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+  const T rho = sqrt(x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+  const T alpha = (rho - rho_s) / (rho + rho_s);  // (1 − ρ_s/ρ)/(1 + ρ_s/ρ)
+  const T psi = 1.0 + rho_s / rho;
+  const T psi2 = psi * psi;
+  g[0][0] = -alpha * alpha;
+  g[1][1] = g[2][2] = g[3][3] = psi2 * psi2;
+}
+
 /// ∂_j g_tt = −2α α' n_j with α' = 2ρ_s/(ρ + ρ_s)²; ∂_j g_ii = 4ψ³ ψ' n_j with ψ' = −ρ_s/ρ²,
 /// n_j = x_j/ρ (α = (ρ − ρ_s)/(ρ + ρ_s), ψ = 1 + ρ_s/ρ: Catalogue of Spacetimes, "Schwarzschild
 /// spacetime / Isotropic coordinates").
