@@ -123,20 +123,6 @@ StepView KerrMinoRay::bl_step(const StepView& s) {
   return report(s);
 }
 
-StepView KerrMinoRay::bl_step_with_end(const StepView& s) {
-  if (!have0_) to_bl(s.y0, s.dy0, end_[start_]);
-  track_axis(s);
-  return report(s);
-}
-
-StepView KerrMinoRay::report(const StepView& s) {
-  // The BL view of this step's end is the start of the next one.
-  const EndView &v0 = end_[start_], &v1 = next_end();
-  start_ ^= 1;
-  have0_ = true;
-  return StepView{s.lambda0, s.lambda1, v0.bl, v1.bl, v0.dbl, v1.dbl, 8, s.step_index, v0.p, v1.p};
-}
-
 void KerrMinoRay::to_bl_state(const double* y, double* y_bl) const {
   double dy[KerrMinoRHS::N];
   sys(y, dy);

@@ -438,15 +438,26 @@ struct KerrMinoRay {
   /// packet integrator, for all its lanes at once) on the branch_after that step:
   /// bl_step_with_end then reports it instead of converting s.y1.
   EndView& next_end() { return end_[start_ ^ 1]; }
-  /// bl_step(s) with the view of s's end already in next_end().
-  StepView bl_step_with_end(const StepView& s);
+  /// bl_step(s) with the view of s's end already in next_end(). (Inline: the packet integrator
+  /// calls it for every accepted step of every lane.)
+  StepView bl_step_with_end(const StepView& s) {
+    if (!have0_) to_bl(s.y0, s.dy0, end_[start_]);
+    track_axis(s);
+    return report(s);
+  }
   /// The BL (x, k) of Mino state y (after the last step) to y_bl[0..7].
   void to_bl_state(const double* y, double* y_bl) const;
 
  private:
   void to_bl(const double* y, const double* dy, EndView& v) const;
-  /// The step between the views end_[start_] and next_end(), which becomes the next start.
-  StepView report(const StepView& s);
+  /// The step between the views end_[start_] and next_end(); the view of its end is the start of
+  /// the next one.
+  StepView report(const StepView& s) {
+    const EndView &v0 = end_[start_], &v1 = next_end();
+    start_ ^= 1;
+    have0_ = true;
+    return StepView{s.lambda0, s.lambda1, v0.bl, v1.bl, v0.dbl, v1.dbl, 8, s.step_index, v0.p, v1.p};
+  }
   /// The views of the step's start (end_[start_], the previous step's end once have0_) and end.
   EndView end_[2];
   int start_ = 0;
