@@ -1,4 +1,4 @@
-// Inline sine/cosine (and, below, the exponential) for the geodesic hot path. Every
+// Inline sine/cosine (and, below, the exponential and the arcsine) for the geodesic hot path. Every
 // right-hand-side evaluation of a metric in spherical-type coordinates needs sin θ and cos θ;
 // glibc's sincos is an out-of-line call of ~110 instructions with its own range reduction for
 // huge arguments, which was a third of the integration time (docs/PERFORMANCE.md). θ is a polar
@@ -18,8 +18,16 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "spacetime/vec.h"  // select: the templates written for doubles and SIMD lanes choose with it
+
 namespace geovis {
 
+/// x with the low 32 bits of its significand cleared (asin_core.h: a part whose square is exact).
+inline double clear_low_word(double x) {
+  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) & 0xffffffff00000000ull);
+}
+
+#include "spacetime/asin_core.h"       // asin_core: in namespace geovis
 #include "spacetime/exp_reduced.h"     // exp_reduced: in namespace geovis
 #include "spacetime/sincos_reduced.h"  // sincos_reduced: in namespace geovis
 
@@ -103,5 +111,20 @@ inline T exp_t(const T& x) {
     return exp(x);
   }
 }
+
+/// asin x, inlined, for the Boyer–Lindquist view of Mino-time states (θ = 2 asin √((1 ∓ cos θ)/2),
+/// kerr_mino_bl.h): the same function on doubles and on SIMD lanes (simd.h), so the scalar and
+/// packet integrators report the same bits, where glibc's asin has no SIMD twin. fdlibm's method
+/// (asin_core.h), within 1 ulp of glibc's asin on [−1, 1] (test FastMath.AsinWithinOneUlpOfLibm).
+#if defined(__GNUC__)
+[[gnu::always_inline]]
+#endif
+inline double
+fast_asin(double x) {
+  return asin_core(x);
+}
+
+/// asin x for the templates written once for doubles and SIMD lanes (SimdD: simd.h's asin_t).
+inline double asin_t(double x) { return fast_asin(x); }
 
 }  // namespace geovis

@@ -49,6 +49,16 @@ struct MinoLaneCoeffs {
   alignas(64) double v[kRows][kPacketLanes] = {};
 };
 
+/// The Boyer–Lindquist views of the step ends of a packet's lanes (KerrMinoRay::EndView, SoA: x,
+/// k, dk/dλ and the pseudo-Cartesian position, one row per component) and what they are computed
+/// from besides the state: the θ branch (sign, offset) of each lane after its step, and which
+/// lanes have a step (active: 1, else 0).
+struct MinoEndViews {
+  enum { X = 0, K = 4, DK = 8, P = 12, kRows = 15 };
+  alignas(64) double sign[kPacketLanes] = {}, offset[kPacketLanes] = {}, active[kPacketLanes] = {};
+  alignas(64) double v[kRows][kPacketLanes];
+};
+
 /// The error tolerance of a packet's lanes (ErrorScale): eps_abs, eps_rel and, for a system with
 /// tolerance scales of its own, the 1/D_i of every lane (N rows of kPacketLanes, SoA; else null).
 struct LaneTolerance {
@@ -92,6 +102,7 @@ constexpr bool kCombinedEstimate = requires {
 HWY_BEFORE_NAMESPACE();
 namespace geovis {
 namespace HWY_NAMESPACE {
+#include "spacetime/kerr_mino_bl.h"
 #include "spacetime/kerr_mino_rhs.h"
 
 /// ExplicitRK<Tab>::attempt (integrators.h; DOP853::attempt for DOP853's tableau) on all lanes
@@ -307,6 +318,39 @@ void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance&
   });
 }
 
+/// kerr_mino_bl_view (kerr_mino_bl.h) on every lane: the BL views of the Mino states y with
+/// σ-derivatives dy (SoA) on the lanes' θ branches, into out.v. A lane without a step (its y may
+/// be a rejected attempt, NaN) is viewed at φ = 0, which keeps sincos_t off its lane-by-lane route
+/// for arguments it cannot reduce.
+void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, MinoEndViews& out) {
+  using R = MinoLaneCoeffs;
+  using V = MinoEndViews;
+  constexpr int N = KerrMinoRHS::N, W = kPacketLanes;
+  const SimdTag d;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
+    KerrMinoCoeffs<SimdD> k{at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
+                            at(R::MU2), at(R::C),      at(R::K),  at(R::A), at(R::B)};
+    const SimdMask axis{hn::Ne(at(R::AXIS).v, hn::Zero(d))};
+    const SimdMask active{hn::Ne(SimdD::load(out.active + l).v, hn::Zero(d))};
+    SimdD ys[N], dys[N];
+    for (int i = 0; i < N; ++i) {
+      ys[i] = SimdD::load(y + i * W + l);
+      dys[i] = SimdD::load(dy + i * W + l);
+    }
+    ys[KerrMinoRHS::PHI] = select(active, ys[KerrMinoRHS::PHI], SimdD(0.0));
+    SimdD x[4], kk[4], dk[4], p[3];
+    HWY_NAMESPACE::kerr_mino_bl_view(k, axis, at(R::POLE), SimdD::load(out.sign + l), SimdD::load(out.offset + l), ys,
+                                     dys, x, kk, dk, p);  // this target's copy
+    for (int i = 0; i < 4; ++i) {
+      x[i].store(out.v[V::X + i] + l);
+      kk[i].store(out.v[V::K + i] + l);
+      dk[i].store(out.v[V::DK + i] + l);
+    }
+    for (int i = 0; i < 3; ++i) p[i].store(out.v[V::P + i] + l);
+  }
+}
+
 /// integrate_with's set_tolerance (integrators.h) for the Mino-time system on every lane: the 1/D_i
 /// of ErrorScale from the system's scales (kerr_mino_tolerance_inv_scale) at state y, SoA.
 void mino_tolerance(const MinoLaneCoeffs& c, double eps_abs, double eps_rel, const double* y, double* inv) {
@@ -339,6 +383,7 @@ HWY_EXPORT(rk_attempt);
 HWY_EXPORT(mino_rhs);
 HWY_EXPORT(mino_attempt);
 HWY_EXPORT(mino_tolerance);
+HWY_EXPORT(mino_end_views);
 
 namespace {
 
@@ -371,6 +416,8 @@ struct Lane {
 ///   tolerance_inv(eps_abs, eps_rel, y, inv)   for a system with tolerance scales of its own: the
 ///                                       1/D_i of set_tolerance at state y on every lane (SoA);
 ///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
+///   before_steps(lanes, y, y1, dy1) (optional)   once per round, before the steps of the accepted
+///                                       lanes (bits of `lanes`: y → y1) are handed to step;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies;
 ///   valid_lanes(y, lanes), step_checks(cfg, y, lanes, out) (optional)   the scalar system's valid,
 ///                                       and its constraint, escaped and captured (PacketStepChecks),
@@ -633,6 +680,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         return ps.system(l).escaped(cfg, yl1, radius);
       }
     };
+    if constexpr (requires { ps.before_steps(accepted, y, y1, dy1); }) ps.before_steps(accepted, y, y1, dy1);
     for (int l = 0; l < W; ++l) {
       if (!(accepted >> l & 1u)) continue;
       Lane<Tab, N>& ln = lane[l];
@@ -735,6 +783,7 @@ struct MinoPacket {
   const PacketRays& rays;
   std::optional<KerrMinoRay> ray[kPacketLanes];
   MinoLaneCoeffs coeffs;
+  MinoEndViews ends;
 
   KerrMinoSystem& system(int l) { return ray[l]->sys; }
   /// The ray from BL (x, k); one that starts outside the metric's validity domain goes to
@@ -764,10 +813,34 @@ struct MinoPacket {
                double* y1, double* dy1, AttemptError& err) const {
     HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
   }
+  /// The BL views of the accepted steps' ends (y1, dy1: SoA), all lanes at once on SIMD lanes
+  /// (kerr_mino_bl_view, the function KerrMinoRay::step evaluates per ray), on the branch each ray
+  /// has after its step; step hands them to the rays. Without a step callback none are needed.
+  void before_steps(unsigned lanes, const double* y, const double* y1, const double* dy1) {
+    if (!rays.on_step) return;
+    using I = KerrMinoRHS;
+    constexpr int W = kPacketLanes;
+    for (int l = 0; l < W; ++l) {
+      const bool active = lanes >> l & 1u;
+      ends.active[l] = active ? 1.0 : 0.0;
+      if (!active) continue;
+      const ThetaBranch b = ray[l]->branch_after(y[I::DZ * W + l], y1[I::Z * W + l], y1[I::DZ * W + l]);
+      ends.sign[l] = b.sign;
+      ends.offset[l] = b.offset;
+    }
+    HWY_DYNAMIC_DISPATCH(mino_end_views)(coeffs, y1, dy1, ends);
+  }
   StepAction step(int l, const StepView& s) {
     if (!rays.on_step) return ray[l]->step(s, {});
-    auto cb = [&](const StepView& bl) { return rays.on_step(l, bl); };
-    return ray[l]->step(s, cb);
+    using V = MinoEndViews;
+    KerrMinoRay::EndView& e = ray[l]->next_end();
+    for (int i = 0; i < 4; ++i) {
+      e.bl[i] = ends.v[V::X + i][l];
+      e.bl[4 + i] = e.dbl[i] = ends.v[V::K + i][l];
+      e.dbl[4 + i] = ends.v[V::DK + i][l];
+    }
+    for (int i = 0; i < 3; ++i) e.p[i] = ends.v[V::P + i][l];
+    return rays.on_step(l, ray[l]->bl_step_with_end(s));
   }
   void rebase(int l, double* y) {
     ray[l]->sys.rebase(y);
@@ -803,7 +876,7 @@ void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole
                                 const PacketRays& rays) {
   require_packet_solver(cfg);
   const SolverConfig mino_cfg = KerrMinoRay::config(cfg);
-  MinoPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}};
+  MinoPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}, {}};
   with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, mino_cfg, rays); });
 }
 

@@ -175,7 +175,7 @@ void to_bl_jacobi(const KerrMinoConstants& c, const PolarOffset& polar, const Th
   L::value(y, v);
   L::value(dy, dv);
   Vec4 x, k, acc;
-  kerr_mino_to_bl(c, polar, v, dv, b, x, k, &acc);
+  kerr_mino_to_bl(c, polar, v, dv, b, x, k, &acc, p);
   for (int i = 0; i < kJacobiDim; ++i) out[i] = dout[i] = kNaN;
   for (int i = 0; i < 4; ++i) {
     out[kJacobiX + i] = x[i];
@@ -183,7 +183,6 @@ void to_bl_jacobi(const KerrMinoConstants& c, const PolarOffset& polar, const Th
     dout[kJacobiX + i] = k[i];
     dout[kJacobiK + i] = acc[i];
   }
-  if (p) kerr_mino_pseudo_cartesian(polar, b, v, x[1], x[3], p);
   const double w = v[I::W], r = 1.0 / w, z = polar.z(v[I::Z]), dw = v[I::DW], dz = v[I::DZ];
   const double st = std::sqrt(std::max(0.0, polar.sin2(v[I::Z]))), ist = 1.0 / st;
   const double isig = 1.0 / (r * r + c.a2 * z * z);

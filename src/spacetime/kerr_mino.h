@@ -46,6 +46,7 @@
 #include <cmath>
 
 #include "spacetime/capture.h"
+#include "spacetime/fast_math.h"
 #include "spacetime/integrators.h"
 
 namespace geovis {
@@ -73,6 +74,7 @@ struct KerrMinoCoeffs {
   }
 };
 
+#include "spacetime/kerr_mino_bl.h"   // kerr_mino_bl_view: in namespace geovis
 #include "spacetime/kerr_mino_rhs.h"  // kerr_mino_rhs: in namespace geovis
 
 /// The constants of one Kerr geodesic and the derived polynomial coefficients (file comment).
@@ -198,13 +200,8 @@ struct PolarOffset {
   double z(double zeta) const { return pole + zeta; }
   /// sin²θ = 1 − z² = −ζ(2p + ζ), without cancellation near the pole.
   double sin2(double zeta) const { return -zeta * (2.0 * pole + zeta); }
-  /// acos z ∈ [0, π], accurate near the poles: 1 ∓ z = 2 sin²(θ/2) resp. 2 cos²(θ/2) (clamped,
-  /// for the L = 0 rays that overshoot the pole by the integration error).
-  double acos_z(double zeta) const {
-    constexpr double kPi = 3.14159265358979323846;
-    const double half = 2.0 * std::asin(std::sqrt(std::clamp(-pole * zeta * 0.5, 0.0, 1.0)));
-    return pole > 0.0 ? half : kPi - half;
-  }
+  /// acos z ∈ [0, π], accurate near the poles (kerr_mino_acos_z, kerr_mino_bl.h).
+  double acos_z(double zeta) const { return kerr_mino_acos_z(pole, zeta); }
   /// The offset through z (the nearer pole) and ζ for θ, with 1 ∓ cos θ from sin²(θ/2) / cos²(θ/2).
   static PolarOffset through(double theta, double& zeta) {
     PolarOffset o;
@@ -273,11 +270,16 @@ struct KerrMinoSystem {
   /// to the accumulated integration error, which for small |L| (θ_min ≲ 1e-4) exceeds L² itself —
   /// the ray then misses its turning point, runs into the axis where φ' = L/sin²θ diverges, and
   /// stalls (test RaysPassingCloseToTheAxisDoNotStall). Applied within sin²θ < 0.1 of the axis, to
-  /// rays with L ≠ 0; returns true when it changed y.
-  bool project_invariants(double* y) const {
+  /// rays with L ≠ 0; returns true when it changed y. (Inlined up to the test of sin²θ, which
+  /// most steps fail: it is called after every accepted step.)
+  GEOVIS_HOT_INLINE bool project_invariants(double* y) const {
     if (k.axis) return false;
     const double s2 = f.polar.sin2(y[I::Z]);
     if (!(s2 < 0.1)) return false;
+    return project_near_axis(y, s2);
+  }
+  /// project_invariants at sin²θ = s2 < 0.1.
+  bool project_near_axis(double* y, double s2) const {
     const double v = y[I::DZ], z = f.polar.z(y[I::Z]);
     const double inv = v * v - k.Z_of_sin2(s2);                      // z'² − Z
     const double gz = 2.0 * z * (k.B + 2.0 * k.A - 2.0 * k.A * s2);  // ∂(z'² − Z)/∂ζ = −dZ/ds2·ds2/dζ
@@ -338,7 +340,7 @@ struct KerrMinoSystem {
     theta_boxed = c.box_ll[2] > -1e6 || c.box_ur[2] < 1e6;
     branch = &b;
   }
-  bool inside(const SolverConfig& c, const double* y) const {
+  GEOVIS_HOT_INLINE bool inside(const SolverConfig& c, const double* y) const {
     const double w = y[I::W];
     if (!(w >= w_lo && w <= w_hi && y[I::T] >= c.box_ll[0] && y[I::T] <= c.box_ur[0] && y[I::PHI] >= c.box_ll[3] &&
           y[I::PHI] <= c.box_ur[3]))
@@ -379,16 +381,13 @@ struct KerrMinoSystem {
 KerrMinoConstants kerr_mino_constants(double M, double a, const Vec4& x, const Vec4& k, double mu2);
 /// BL (x, k) → Mino state (w, ζ, w', z', t, φ, λ) and the pole ζ is measured from.
 PolarOffset kerr_mino_from_bl(const KerrMinoConstants& c, const Vec4& x, const Vec4& k, double lambda, double* y);
-/// Mino state (ζ relative to `polar`) and its derivative → BL (x, k) on θ branch b, and dk/dλ
-/// (the geodesic acceleration, from the Mino derivatives) when dk is given.
+/// Mino state (ζ relative to `polar`) and its derivative → BL (x, k) on θ branch b, dk/dλ (the
+/// geodesic acceleration, from the Mino derivatives) when dk is given, and the pseudo-Cartesian
+/// position (Metric::to_pseudo_cartesian: StepView::p0/p1 of the Mino paths) when p is given:
+/// kerr_mino_bl_view (kerr_mino_bl.h) on doubles, the function the packet integrator evaluates
+/// on SIMD lanes.
 void kerr_mino_to_bl(const KerrMinoConstants& c, const PolarOffset& polar, const double* y, const double* dy,
-                     const ThetaBranch& b, Vec4& x, Vec4& k, Vec4* dk = nullptr);
-
-/// The pseudo-Cartesian position (Metric::to_pseudo_cartesian) of Mino state y (ζ relative to
-/// `polar`) on θ branch b, with r and φ of its BL view, from z = cos θ and sin²θ (one sine and
-/// cosine, of φ): StepView::p0/p1 of the Mino paths.
-void kerr_mino_pseudo_cartesian(const PolarOffset& polar, const ThetaBranch& b, const double* y, double r, double phi,
-                                double* p);
+                     const ThetaBranch& b, Vec4& x, Vec4& k, Vec4* dk = nullptr, double* p = nullptr);
 
 /// One ray integrated in Mino time as its caller sees it (integrate_kerr_mino, and each lane of the
 /// packet integrator, geodesic_packet.h): the constants and the system of the ray, its θ branch
@@ -411,16 +410,57 @@ struct KerrMinoRay {
   ThetaBranch branch;
   KerrMinoSystem sys;
 
-  /// Follows a passage through the axis (L = 0: z turns at ±1) inside the accepted step s.
-  void track_axis(const StepView& s);
-  /// The accepted Mino step s: track_axis, then cb (when given) with the step in BL terms.
+  /// The BL view of one step end as the callback sees it: (x, k), (k, dk/dλ) and the
+  /// pseudo-Cartesian position.
+  struct EndView {
+    double bl[8], dbl[8], p[3];
+  };
+
+  /// The θ branch after an accepted step from a state with z' = dz0 to one with ζ = zeta1,
+  /// z' = dz1 (relative to the current pole): a turning point of z at the axis (L = 0) inside the
+  /// step is a passage through the pole (ThetaBranch::cross_axis).
+  ThetaBranch branch_after(double dz0, double zeta1, double dz1) const {
+    const double z1 = sys.f.polar.z(zeta1);
+    ThetaBranch b = branch;
+    if (c.axis && dz0 * dz1 < 0.0 && z1 * dz1 < 0.0) b.cross_axis(z1);
+    return b;
+  }
+  /// Follows the accepted step s through the axis: branch ← branch_after(s).
+  void track_axis(const StepView& s) {
+    branch = branch_after(s.y0[KerrMinoRHS::DZ], s.y1[KerrMinoRHS::Z], s.y1[KerrMinoRHS::DZ]);
+  }
+  /// The accepted Mino step s: track_axis, then cb (when given) with the step in BL terms (bl_step).
   StepAction step(const StepView& s, StepCallback cb);
+  /// The accepted Mino step s in BL terms, after track_axis: the view of its start (the previous
+  /// step's end) and of its end, converted here; valid until the next step.
+  StepView bl_step(const StepView& s);
+  /// The slot for the BL view of the next step's end, for a caller that computes it itself (the
+  /// packet integrator, for all its lanes at once) on the branch_after that step:
+  /// bl_step_with_end then reports it instead of converting s.y1.
+  EndView& next_end() { return end_[start_ ^ 1]; }
+  /// bl_step(s) with the view of s's end already in next_end(). (Inline: the packet integrator
+  /// calls it for every accepted step of every lane.)
+  StepView bl_step_with_end(const StepView& s) {
+    if (!have0_) to_bl(s.y0, s.dy0, end_[start_]);
+    track_axis(s);
+    return report(s);
+  }
   /// The BL (x, k) of Mino state y (after the last step) to y_bl[0..7].
   void to_bl_state(const double* y, double* y_bl) const;
 
  private:
-  void to_bl(const double* y, const double* dy, double* bl, double* dbl, double* p) const;
-  double bl0_[8], dbl0_[8], p0_[3], bl1_[8], dbl1_[8], p1_[3];
+  void to_bl(const double* y, const double* dy, EndView& v) const;
+  /// The step between the views end_[start_] and next_end(); the view of its end is the start of
+  /// the next one.
+  StepView report(const StepView& s) {
+    const EndView &v0 = end_[start_], &v1 = next_end();
+    start_ ^= 1;
+    have0_ = true;
+    return StepView{s.lambda0, s.lambda1, v0.bl, v1.bl, v0.dbl, v1.dbl, 8, s.step_index, v0.p, v1.p};
+  }
+  /// The views of the step's start (end_[start_], the previous step's end once have0_) and end.
+  EndView end_[2];
+  int start_ = 0;
   bool have0_ = false;
 };
 

@@ -10,9 +10,9 @@
 //
 // Bit-identical to the scalar path: every operator is one IEEE operation per lane (Highway's
 // Mul, Add, Div, Sqrt; no fused multiply-add: files that include this header are compiled with
-// -ffp-contract=off, CMakeLists.txt), and sin/cos and exp are fast_math.h's polynomials, the same
-// templates (sincos_reduced.h, exp_reduced.h), so a formula written once as a template gives
-// the same bits per lane as on doubles.
+// -ffp-contract=off, CMakeLists.txt), and sin/cos, exp and asin are fast_math.h's polynomials, the
+// same templates (sincos_reduced.h, exp_reduced.h, asin_core.h), so a formula written once as a
+// template gives the same bits per lane as on doubles.
 #if defined(GEOVIS_SPACETIME_SIMD_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef GEOVIS_SPACETIME_SIMD_H_
 #undef GEOVIS_SPACETIME_SIMD_H_
@@ -81,6 +81,14 @@ HWY_API SimdD fabs(SimdD a) { return SimdD(hn::Abs(a.v)); }
 HWY_API SimdD min(SimdD a, SimdD b) { return SimdD(hn::Min(a.v, b.v)); }
 HWY_API SimdD max(SimdD a, SimdD b) { return SimdD(hn::Max(a.v, b.v)); }
 HWY_API SimdMask isfinite(SimdD a) { return {hn::IsFinite(a.v)}; }
+/// std::copysign lane by lane: |a| with the sign bit of b.
+HWY_API SimdD copysign(SimdD a, SimdD b) { return SimdD(hn::CopySign(a.v, b.v)); }
+/// The lanes with the low 32 bits of their significands cleared (fast_math.h's clear_low_word).
+HWY_API SimdD clear_low_word(SimdD x) {
+  const SimdTag d;
+  const hn::RebindToUnsigned<SimdTag> du;
+  return SimdD(hn::BitCast(d, hn::And(hn::BitCast(du, x.v), hn::Set(du, 0xffffffff00000000ull))));
+}
 
 #include "spacetime/sincos_reduced.h"  // sincos_reduced: this target's copy
 
@@ -123,6 +131,12 @@ HWY_API SimdD cos(SimdD x) {
   sincos_t(x, s, c);
   return c;
 }
+
+#include "spacetime/asin_core.h"  // asin_core: this target's copy
+
+/// fast_asin (fast_math.h) lane by lane: the same operations (asin_core), so each lane equals
+/// fast_asin of that lane to the bit.
+HWY_API SimdD asin_t(SimdD x) { return asin_core(x); }
 
 #include "spacetime/exp_reduced.h"  // exp_reduced: this target's copy
 

@@ -1,7 +1,7 @@
 // The packet integrator (spacetime/geodesic_packet.h) against the scalar one (Metric::integrate,
 // CashKarp45, separable equations off), on every SIMD target this machine runs (Highway's
 // SupportedAndGeneratedTargets: AVX-512, AVX2, SSE4, scalar emulation), and SimdD's sine and
-// cosine and exponential (spacetime/simd.h) against fast_sincos and fast_exp.
+// cosine, exponential and arcsine (spacetime/simd.h) against fast_sincos, fast_exp and fast_asin.
 //
 // Bit identity is the expectation everywhere here: the packet's right-hand side is each metric's
 // own scalar geodesic_acceleration, called lane by lane (MetricKernel::of), or a template of the
@@ -18,7 +18,7 @@
 
 #include "spacetime/simd.h"
 
-// SimdD's sin/cos and exp on a batch of arguments, compiled per target.
+// SimdD's sin/cos, exp and asin on a batch of arguments, compiled per target.
 HWY_BEFORE_NAMESPACE();
 namespace geovis {
 namespace HWY_NAMESPACE {
@@ -34,6 +34,10 @@ void simd_sincos(const double* x, double* s, double* c, size_t n) {
 void simd_exp(const double* x, double* e, size_t n) {
   const size_t L = SimdD::lanes();
   for (size_t i = 0; i + L <= n; i += L) exp_t(SimdD::load(x + i)).store(e + i);
+}
+void simd_asin(const double* x, double* a, size_t n) {
+  const size_t L = SimdD::lanes();
+  for (size_t i = 0; i + L <= n; i += L) asin_t(SimdD::load(x + i)).store(a + i);
 }
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
@@ -59,6 +63,7 @@ HWY_AFTER_NAMESPACE();
 namespace geovis {
 HWY_EXPORT(simd_sincos);
 HWY_EXPORT(simd_exp);
+HWY_EXPORT(simd_asin);
 }
 
 using namespace geovis;
@@ -447,6 +452,26 @@ TEST(Simd, ExpIsFastExpLaneByLane) {
     for (size_t i = 0; i < x.size(); ++i) {
       const double f = fast_exp(x[i]);
       ASSERT_TRUE(same_bits(e[i], f) || (std::isnan(e[i]) && std::isnan(f))) << x[i];
+    }
+  });
+}
+
+// SimdD's asin_t is fast_asin lane by lane, to the bit, on every target: both of its ranges
+// (|x| < 1/2, 1/2 ≤ |x| ≤ 0.975 and beyond) in the lanes of one vector, tiny and subnormal
+// arguments, ±1, ±0 and the NaN of arguments outside [−1, 1].
+TEST(Simd, AsinIsFastAsinLaneByLane) {
+  std::vector<double> x;
+  for (int i = -3000; i <= 3000; ++i) x.push_back(i / 3000.0 + (i % 3) * 1.234e-5);
+  for (double v : {0.0, -0.0, 1.0, -1.0, 0.5, -0.5, 0.975, -0.975, 1e-9, -3e-200, 4.9e-324, 1.0000000000000002,
+                   -2.0, double(NAN), double(INFINITY)})
+    x.push_back(v);
+  while (x.size() % 8) x.push_back(0.25);
+  std::vector<double> a(x.size());
+  for_every_target([&] {
+    HWY_DYNAMIC_DISPATCH(simd_asin)(x.data(), a.data(), x.size());
+    for (size_t i = 0; i < x.size(); ++i) {
+      const double f = fast_asin(x[i]);
+      ASSERT_TRUE(same_bits(a[i], f) || (std::isnan(a[i]) && std::isnan(f))) << x[i];
     }
   });
 }
