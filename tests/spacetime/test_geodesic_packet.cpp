@@ -421,6 +421,36 @@ TEST(GeodesicPacket, RejectsOtherSolvers) {
   EXPECT_THROW(m->integrate_packet(cfg, PacketRays{next, {}, done}), Error);
 }
 
+// EddFinkIn and MorrisThorne test the validity and the escape of a packet's states on SIMD lanes
+// (packet_is_valid_simd, packet_escapes_simd): the packet must stop, locate the boundary and
+// give the escape radius as the scalar integrator does, traced forwards and backwards. Rays from
+// r = 3 M in EddFinkIn fall through the horizon to r_min (StopReason::Invalid, the r > r_min
+// test) or escape; MorrisThorne's rays escape on either side of the throat (s = ±1).
+TEST(GeodesicPacket, SimdValidityAndEscapeAsTheScalarTests) {
+  for (const char* name : {"EddFinkIn", "MorrisThorne"}) {
+    for (const int direction : {1, -1}) {
+      SCOPED_TRACE(std::string(name) + (direction > 0 ? " forwards" : " backwards"));
+      const auto m = make_metric(name);
+      SolverConfig cfg = packet_config();
+      cfg.max_steps = 3000;
+      cfg.lambda_max = 300.0;
+      cfg.direction = direction;
+      const auto rays = fan(*m, 24, Vec4{{0.0, 3.0, 1.2, 0.0}});
+      int invalid = 0, escaped = 0;
+      for (const auto& r : rays) {
+        double y[8];
+        std::copy(r.begin(), r.end(), y);
+        const StopReason reason = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {}).reason;
+        invalid += reason == StopReason::Invalid;
+        escaped += reason == StopReason::Escaped;
+      }
+      EXPECT_GT(escaped, 0) << "no ray escapes";
+      if (std::string(name) == "EddFinkIn" && direction > 0) EXPECT_GT(invalid, 0) << "no ray reaches r_min";
+      for_every_target([&] { expect_packet_equals_scalar(*m, cfg, rays); });
+    }
+  }
+}
+
 // The packet driver's step control after accepted steps (packet_accepted_step_control, SIMD
 // lanes) is the scalar StepController::next_with_root with integrate_with's clamp to
 // [hmin, hmax], lane by lane and to the bit, on every target: the next step and the controller's
