@@ -372,6 +372,70 @@ void mino_tolerance(const MinoLaneCoeffs& c, double eps_abs, double eps_rel, con
   }
 }
 
+/// packet_accepted_step_control (geodesic_packet.h) on SIMD lanes: StepController::next_with_root
+/// (integrators.h) for an accepted step, each branch as a select and every std::min/max/clamp as
+/// the select its libstdc++ definition is (min(a, b): b < a ? b : a; max(a, b): a < b ? b : a;
+/// clamp(v, lo, hi): v < lo ? lo : hi < v ? hi : v), so NaNs go the same way; the divisions and
+/// products are single IEEE operations in the scalar order, so every lane equals the scalar
+/// controller to the bit (test GeodesicPacket.AcceptedStepControlIsTheScalarController). Why:
+/// three dependent divisions per lane and step, scalar, were a third of the driver's cycles
+/// (perf annotate of integrate_lanes on fallEddFinkIn, issue 13); here one division serves a
+/// vector of lanes. Its inputs are all stored well before the call (vector loads of fresh scalar
+/// stores would stall on store forwarding: a first version that gathered them per lane in the
+/// accept loop was 4 % slower than the scalar controller).
+void accepted_step_control(unsigned lanes, const double* hs, const double* err, const double* root,
+                           PacketStepControl& c) {
+  using Ctl = StepController<5>;  // the constants do not depend on the exponent
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  const SimdD zero(0.0), one(1.0), grow(Ctl::kMaxGrow), shrink(Ctl::kMaxShrink);
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const uint8_t bits = static_cast<uint8_t>(lanes >> l);
+    const SimdMask on{hn::LoadMaskBits(d, &bits)};
+    const SimdD h = fabs(SimdD::load(hs + l)), e = SimdD::load(err + l), q_root = SimdD::load(root + l);
+    const SimdD h_old = SimdD::load(c.h_old + l), q_old = SimdD::load(c.q_old + l);
+    const SimdMask positive = e > zero;
+    const SimdMask finite = positive && SimdMask{hn::IsFinite(e.v)};
+    // err > 0 finite: fac = kSafety/q, Gustafsson's proposal where there is an old step, clamped.
+    SimdD fac = SimdD(Ctl::kSafety) / q_root;
+    const SimdD predictive = fac * (h / h_old) * (q_old / q_root);
+    fac = select(h_old > zero && q_old > zero && predictive < fac, predictive, fac);
+    fac = select(fac < shrink, shrink, select(grow < fac, grow, fac));
+    // err <= 0 or NaN: ×kMaxGrow; err = inf: ×kMaxShrink.
+    fac = select(!positive, grow, select(finite, fac, shrink));
+    const SimdD q = select(finite, q_root, zero);
+    const SimdMask after_reject = SimdD::load(c.after_reject + l) != zero;
+    fac = select(after_reject && one < fac, one, fac);
+    const SimdD proposal = h * fac;
+    const SimdD hmin = SimdD::load(c.hmin + l), hmax = SimdD::load(c.hmax + l);
+    const SimdD at_least = select(proposal < hmin, hmin, proposal);
+    select(at_least < hmax, at_least, hmax).store(c.h_next + l);
+    select(on, h, h_old).store(c.h_old + l);
+    select(on, q, q_old).store(c.q_old + l);
+  }
+}
+
+/// MetricSystem::inside (integrators.h: ll_i <= x^i <= ur_i for i = 0..3, false where x^i is NaN)
+/// of the states y (SoA) of all lanes at once, bit l: lane l. The same comparisons as the scalar
+/// test, so the same answer; the scalar test of each lane cost ~20 instructions per step in the
+/// driver's accept loop (callgrind, issue 13).
+unsigned inside_box_lanes(const double* box, const double* y) {
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  unsigned bits = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    SimdMask in{hn::Not(hn::FirstN(d, 0))};
+    for (int i = 0; i < 4; ++i) {
+      const SimdD x = SimdD::load(y + i * W + l);
+      in = in && x >= SimdD(box[i]) && x <= SimdD(box[4 + i]);
+    }
+    uint8_t b[8] = {};
+    hn::StoreMaskBits(d, in.m, b);
+    bits |= static_cast<unsigned>(b[0]) << l;
+  }
+  return bits;
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -384,6 +448,8 @@ HWY_EXPORT(mino_rhs);
 HWY_EXPORT(mino_attempt);
 HWY_EXPORT(mino_tolerance);
 HWY_EXPORT(mino_end_views);
+HWY_EXPORT(accepted_step_control);
+HWY_EXPORT(inside_box_lanes);
 
 namespace {
 
@@ -396,7 +462,7 @@ struct Lane {
   int affine_retries = 0;
   double root = 0;  ///< root_q(err) of the last attempt (AttemptError)
   bool after_reject = false, clipped = false;
-  StepController<Tab::kErrExp> control;  ///< ExplicitRK::control
+  // ExplicitRK::control's state is the lane's h_old, q_old in the driver's PacketStepControl.
   GeodesicResult res;
 };
 
@@ -438,6 +504,10 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     p.valid_lanes(yy, 0u);
     p.step_checks(cfg, yy, 0u, out);
   };
+  // A packet system that tests Sys::inside of all lanes' accepted states at once
+  // (PS::inside_lanes); it must not change a state between the test and the step (rebase).
+  constexpr bool kLaneInside = requires(PS& p, const double* yy) { p.inside_lanes(cfg, yy); };
+  static_assert(!kLaneInside || !requires(double* yy) { ps.rebase(0, yy); });
   // Whether an accepted state may change before it is taken (reproject, project_invariants,
   // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it.
   bool accepted_states_change = true;
@@ -465,6 +535,11 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   const LaneTolerance tol{cfg.eps_abs, cfg.eps_rel, kScaledTol ? inv_tol : nullptr};
   AttemptError attempt_err;
   Lane<Tab, N> lane[W];
+  // The lanes' step controllers (ExplicitRK::control: their state h_old, q_old) and the inputs of
+  // the step control after accepted steps (after_reject, hmin, hmax: copies of the lanes' own),
+  // done for all accepted lanes at once before their steps are handed on
+  // (packet_accepted_step_control).
+  PacketStepControl ctl{};
   bool exhausted = false;
   unsigned need_dy = 0;  // lanes whose dy = f(y) is still to be evaluated (fresh rays)
   unsigned ready = 0;    // lanes whose next trial step is set up (hv)
@@ -509,12 +584,13 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       put(y, l, yl);
       Lane<Tab, N>& ln = lane[l];
       ln = Lane<Tab, N>{};
+      ctl.h_old[l] = ctl.q_old[l] = ctl.after_reject[l] = 0.0;  // a fresh StepController
       ln.live = true;
       const Sys& sys = ps.system(l);
       set_tolerance(l);
       const double ppa = per_affine(sys, yl);
-      ln.hmax = hmax_affine * ppa;
-      ln.hmin = cfg.step_min * ppa;
+      ln.hmax = ctl.hmax[l] = hmax_affine * ppa;
+      ln.hmin = ctl.hmin[l] = cfg.step_min * ppa;
       ln.h = std::max(std::min(std::fabs(cfg.step_size), hmax_affine) * ppa, ln.hmin);
       ln.affine0 = affine(sys, yl, 0.0);
       if (!sys.valid(yl)) {
@@ -561,8 +637,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         ln.clipped = false;
         const double ppa = per_affine(sys, yl);
         if constexpr (kOwnAffine) {
-          ln.hmax = hmax_affine * ppa;
-          ln.hmin = cfg.step_min * ppa;
+          ln.hmax = ctl.hmax[l] = hmax_affine * ppa;
+          ln.hmin = ctl.hmin[l] = cfg.step_min * ppa;
         }
         if (ln.hstep >= ln.remaining * ppa) {
           ln.hstep = ln.remaining * ppa;
@@ -614,8 +690,11 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
           }
         }
         ln.h =
-            in_domain ? ln.control.next_with_root(ln.hstep, ln.err, ln.root, false, ln.after_reject) : 0.5 * ln.hstep;
+            in_domain ? StepController<Tab::kErrExp>{ctl.h_old[l], ctl.q_old[l]}.next_with_root(
+                            ln.hstep, ln.err, ln.root, false, ln.after_reject)  // leaves h_old, q_old
+                      : 0.5 * ln.hstep;
         ln.after_reject = true;
+        ctl.after_reject[l] = 1.0;
         if (ln.h < ln.hmin || ln.h <= 4 * DBL_EPSILON * std::fabs(ln.lambda)) {
           finish(l, !finite ? StopReason::NotFinite : (!in_domain ? StopReason::Invalid : StopReason::StepUnderflow));
           refill(l);
@@ -670,6 +749,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     }
     PacketStepChecks checks;
     if constexpr (kLaneChecks) ps.step_checks(cfg, y1, accepted, checks);
+    unsigned inside = 0;  // bit l: lane l's y1 (as the step hands it on) inside the box
+    if constexpr (kLaneInside) inside = ps.inside_lanes(cfg, y1);
     // MetricSystem::escaped of lane l's new state, which sets `radius` where the ray escaped.
     auto escaped = [&](int l, const double* yl1, double& radius) {
       if constexpr (kLaneChecks) {
@@ -681,6 +762,10 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
     };
     if constexpr (requires { ps.before_steps(accepted, y, y1, dy1); }) ps.before_steps(accepted, y, y1, dy1);
+    // ln.h = min(hmax, max(control.next_with_root(hstep, err, root, true, after_reject), hmin)) of
+    // every accepted lane (err and root: attempt_err's ln.err, ln.root; hstep = |hv|), taken below
+    // by those that go on. A lane that stops here is refilled with a fresh controller or stays idle.
+    if (adaptive) HWY_DYNAMIC_DISPATCH(accepted_step_control)(accepted, hv, attempt_err.err, attempt_err.root, ctl);
     for (int l = 0; l < W; ++l) {
       if (!(accepted >> l & 1u)) continue;
       Lane<Tab, N>& ln = lane[l];
@@ -716,7 +801,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       StopReason stop = StopReason::None;
       if (act == StepAction::Stop)
         stop = StopReason::Callback;
-      else if (!sys.inside(cfg, yl1))
+      else if (kLaneInside ? !(inside >> l & 1u) : !sys.inside(cfg, yl1))
         stop = StopReason::BoundingBox;
       else if (ln.clipped)
         stop = StopReason::LambdaMax;
@@ -729,12 +814,11 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         refill(l);
         continue;
       }
-      if (adaptive)
-        ln.h = std::min(ln.hmax,
-                        std::max(ln.control.next_with_root(ln.hstep, ln.err, ln.root, true, ln.after_reject), ln.hmin));
+      if (adaptive) ln.h = ctl.h_next[l];
       if (!adaptive && kOwnAffine) ln.h = std::fabs(cfg.step_size) * per_affine(sys, yl1);
       if (!ln.after_reject) ln.h_cross = 0.0;
       ln.after_reject = false;
+      ctl.after_reject[l] = 0.0;
     }
   }
 }
@@ -762,6 +846,12 @@ struct CoordinatePacket {
   /// MetricSystem's tests of all lanes' states at once, with the metric's functions inlined
   /// (MetricKernel::packet_valid, packet_step_checks).
   unsigned valid_lanes(const double* y, unsigned lanes) const { return metric.packet_valid(y, lanes); }
+  /// MetricSystem::inside of all lanes' states at once (inside_box_lanes).
+  static unsigned inside_lanes(const SolverConfig& c, const double* y) {
+    const double box[8] = {c.box_ll[0], c.box_ll[1], c.box_ll[2], c.box_ll[3],
+                           c.box_ur[0], c.box_ur[1], c.box_ur[2], c.box_ur[3]};
+    return HWY_DYNAMIC_DISPATCH(inside_box_lanes)(box, y);
+  }
   /// MetricSystem::reproject and rescale (the only ones that change an accepted state here).
   bool accepted_states_change(const SolverConfig& c) const {
     return c.reproject || (c.type == GeodesicType::Lightlike && metric.rescales_null_direction());
@@ -860,6 +950,11 @@ void require_packet_solver(const SolverConfig& cfg) {
 }
 
 }  // namespace
+
+void packet_accepted_step_control(unsigned lanes, const double* h, const double* err, const double* root,
+                                  PacketStepControl& c) {
+  HWY_DYNAMIC_DISPATCH(accepted_step_control)(lanes, h, err, root, c);
+}
 
 bool packet_solver(SolverKind kind) {
   return kind == SolverKind::CashKarp45 || kind == SolverKind::Fehlberg45 || kind == SolverKind::DormandPrince54 ||

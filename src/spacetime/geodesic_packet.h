@@ -48,6 +48,26 @@ struct PacketRays {
 /// DormandPrince853).
 bool packet_solver(SolverKind kind);
 
+/// The step-size control after the accepted steps of a packet's lanes (the driver's
+/// std::min(hmax, std::max(StepController::next_with_root(h, err, root, true, after_reject), hmin))
+/// of integrate_with, integrators.h), with each lane's controller state (StepController's h_old,
+/// q_old), SoA: one row per quantity, lane l at index l.
+struct PacketStepControl {
+  alignas(64) double after_reject[kPacketLanes];  ///< 1 where the step followed a rejection, else 0
+  alignas(64) double hmin[kPacketLanes];
+  alignas(64) double hmax[kPacketLanes];
+  alignas(64) double h_old[kPacketLanes];   ///< StepController::h_old (0: no step accepted yet)
+  alignas(64) double q_old[kPacketLanes];   ///< StepController::q_old
+  alignas(64) double h_next[kPacketLanes];  ///< the next step sizes (out)
+};
+
+/// For the lanes in `lanes` (bit l: lane l) with accepted steps h (signed), error norms err and
+/// their roots root = root_q<q̂>(err) (meaningful where err > 0 is finite): h_next, h_old and q_old
+/// as the scalar controller leaves them, to the bit (on SIMD lanes; h_old and q_old of the other
+/// lanes are left as they are, their h_next is undefined).
+void packet_accepted_step_control(unsigned lanes, const double* h, const double* err, const double* root,
+                                  PacketStepControl& c);
+
 /// Integrates light-ray geodesics (packet_solver(cfg.kind) must hold; the geodesic system in the
 /// metric's coordinates, not the separated Mino-time form) from `rays.next` until it has no more,
 /// starting each at λ = 0. Allocates nothing.

@@ -46,9 +46,11 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <string>
@@ -57,6 +59,7 @@ HWY_AFTER_NAMESPACE();
 #include "core/error.h"
 #include "spacetime/fast_math.h"
 #include "spacetime/geodesic_packet.h"
+#include "spacetime/integrators.h"
 #include "spacetime/metric.h"
 #include "spacetime/metric_registry.h"
 
@@ -416,6 +419,102 @@ TEST(GeodesicPacket, RejectsOtherSolvers) {
   auto next = [](int, double*) { return false; };
   auto done = [](int, const double*, const GeodesicResult&) {};
   EXPECT_THROW(m->integrate_packet(cfg, PacketRays{next, {}, done}), Error);
+}
+
+// EddFinkIn and MorrisThorne test the validity and the escape of a packet's states on SIMD lanes
+// (packet_is_valid_simd, packet_escapes_simd): the packet must stop, locate the boundary and
+// give the escape radius as the scalar integrator does, traced forwards and backwards. Rays from
+// r = 3 M in EddFinkIn fall through the horizon to r_min (StopReason::Invalid, the r > r_min
+// test) or escape; MorrisThorne's rays escape on either side of the throat (s = ±1).
+TEST(GeodesicPacket, SimdValidityAndEscapeAsTheScalarTests) {
+  for (const char* name : {"EddFinkIn", "MorrisThorne"}) {
+    for (const int direction : {1, -1}) {
+      SCOPED_TRACE(std::string(name) + (direction > 0 ? " forwards" : " backwards"));
+      const auto m = make_metric(name);
+      SolverConfig cfg = packet_config();
+      cfg.max_steps = 3000;
+      cfg.lambda_max = 300.0;
+      cfg.direction = direction;
+      const auto rays = fan(*m, 24, Vec4{{0.0, 3.0, 1.2, 0.0}});
+      int invalid = 0, escaped = 0;
+      for (const auto& r : rays) {
+        double y[8];
+        std::copy(r.begin(), r.end(), y);
+        const StopReason reason = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {}).reason;
+        invalid += reason == StopReason::Invalid;
+        escaped += reason == StopReason::Escaped;
+      }
+      EXPECT_GT(escaped, 0) << "no ray escapes";
+      if (std::string(name) == "EddFinkIn" && direction > 0) EXPECT_GT(invalid, 0) << "no ray reaches r_min";
+      for_every_target([&] { expect_packet_equals_scalar(*m, cfg, rays); });
+    }
+  }
+}
+
+// The packet driver's step control after accepted steps (packet_accepted_step_control, SIMD
+// lanes) is the scalar StepController::next_with_root with integrate_with's clamp to
+// [hmin, hmax], lane by lane and to the bit, on every target: the next step and the controller's
+// state (h_old, q_old), through every branch (err 0, NaN, inf, tiny and large; no old step;
+// growth and shrink limits; after a rejection; negative steps), for q̂ = 5, 7 and 8.
+template <int q>
+void expect_accepted_step_control_is_scalar() {
+  constexpr int W = kPacketLanes;
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const double errs[] = {0.0, nan, inf, 1e-300, 1e-12, 3e-5, 0.01, 0.5, 0.9999, 1.0, 2.0, 1e5};
+  const double hs[] = {0.01, -0.37, 1e-7, 2.5, 40.0};
+  const double olds[][2] = {{0.0, 0.0}, {0.02, 0.3}, {0.5, 0.0}, {1e-6, 2.0}, {3.0, 1e-3}};
+  const double bounds[][2] = {{1e-10, 1e10}, {0.05, 0.2}, {1e-3, 1.0}};
+  std::vector<std::array<double, 8>> cases;  // h, err, after_reject, h_old, q_old, hmin, hmax, lane on
+  int i = 0;
+  for (double e : errs)
+    for (double h : hs)
+      for (const auto& o : olds)
+        for (const auto& b : bounds) {
+          cases.push_back({h, e, static_cast<double>(i % 3 == 0), o[0], o[1], b[0], b[1], i % 5 != 4 ? 1.0 : 0.0});
+          ++i;
+        }
+  for_every_target([&] {
+    for (size_t c0 = 0; c0 < cases.size(); c0 += W) {
+      PacketStepControl ctl{};
+      alignas(64) double h[W] = {}, err[W] = {}, root[W] = {};
+      unsigned lanes = 0;
+      for (int l = 0; l < W; ++l) {
+        const auto& c = cases[(c0 + l) % cases.size()];
+        h[l] = c[0];
+        err[l] = c[1];
+        root[l] = err[l] > 0.0 && std::isfinite(err[l]) ? root_q<q>(err[l]) : 0.0;
+        ctl.after_reject[l] = c[2];
+        ctl.h_old[l] = c[3];
+        ctl.q_old[l] = c[4];
+        ctl.hmin[l] = c[5];
+        ctl.hmax[l] = c[6];
+        if (c[7] != 0.0) lanes |= 1u << l;
+      }
+      const PacketStepControl before = ctl;
+      packet_accepted_step_control(lanes, h, err, root, ctl);
+      for (int l = 0; l < W; ++l) {
+        SCOPED_TRACE("case " + std::to_string((c0 + l) % cases.size()));
+        if (!(lanes >> l & 1u)) {
+          EXPECT_TRUE(same_bits(ctl.h_old[l], before.h_old[l]));
+          EXPECT_TRUE(same_bits(ctl.q_old[l], before.q_old[l]));
+          continue;
+        }
+        StepController<q> scalar{before.h_old[l], before.q_old[l]};
+        const double next = std::min(
+            before.hmax[l],
+            std::max(scalar.next_with_root(h[l], err[l], root[l], true, before.after_reject[l] != 0.0), before.hmin[l]));
+        EXPECT_TRUE(same_bits(ctl.h_next[l], next)) << ctl.h_next[l] << " vs " << next;
+        EXPECT_TRUE(same_bits(ctl.h_old[l], scalar.h_old)) << ctl.h_old[l] << " vs " << scalar.h_old;
+        EXPECT_TRUE(same_bits(ctl.q_old[l], scalar.q_old)) << ctl.q_old[l] << " vs " << scalar.q_old;
+      }
+    }
+  });
+}
+
+TEST(GeodesicPacket, AcceptedStepControlIsTheScalarController) {
+  expect_accepted_step_control_is_scalar<5>();
+  expect_accepted_step_control_is_scalar<7>();
+  expect_accepted_step_control_is_scalar<8>();
 }
 
 // SimdD's sincos_t is fast_sincos lane by lane, to the bit, on every target, including the
