@@ -43,9 +43,10 @@ inline void packet_rhs(const MetricKernel& m, const double* y, double* dy, unsig
 
 /// The constants of the rays in a packet's lanes (KerrMinoCoeffs, one row per coefficient; the
 /// pole ζ is measured from; axis: all bits set where L = 0; the floor of sin²θ in the tolerance
-/// scales), for the SIMD right-hand side and tolerance scales.
+/// scales; 1/r_break, KerrMinoSystem::w_break), for the SIMD right-hand side, tolerance scales
+/// and state checks.
 struct MinoLaneCoeffs {
-  enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, POLE, AXIS, SIN2_FLOOR, kRows };
+  enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, POLE, AXIS, SIN2_FLOOR, W_BREAK, kRows };
   alignas(64) double v[kRows][kPacketLanes] = {};
 };
 
@@ -351,6 +352,48 @@ void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, 
   }
 }
 
+/// KerrMinoSystem::valid of the states y (SoA) on every lane in `lanes`: bit l set where lane l's
+/// state is valid — 0 < w < w_break and, on the axis branch (L = 0), |z| <= 1 + 1e-3, else
+/// sin²θ > 0 — with the scalar test's operations, all lanes at once.
+unsigned mino_valid(const MinoLaneCoeffs& c, const double* y, unsigned lanes) {
+  using R = MinoLaneCoeffs;
+  using I = KerrMinoRHS;
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  unsigned bits = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
+    const SimdD w = SimdD::load(y + I::W * W + l), zeta = SimdD::load(y + I::Z * W + l), pole = at(R::POLE);
+    const SimdMask axis{hn::Ne(at(R::AXIS).v, hn::Zero(d))};
+    const SimdMask near_pole = fabs(pole + zeta) <= SimdD(1.0 + 1e-3);  // PolarOffset::z
+    const SimdMask off_axis = -zeta * (2.0 * pole + zeta) > SimdD(0.0);  // PolarOffset::sin2
+    const SimdMask ok =
+        w > SimdD(0.0) && w < at(R::W_BREAK) && ((axis && near_pole) || (!axis && off_axis));
+    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(d, ok.m, lane_bits);
+    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+  }
+  return bits & lanes;
+}
+
+/// KerrMinoSystem::constraint of the states y (SoA) on every lane (kerr_mino_constraint, the
+/// scalar system's formula): value and scale, one double per lane.
+void mino_constraint(const MinoLaneCoeffs& c, const double* y, double* value, double* scale) {
+  using R = MinoLaneCoeffs;
+  constexpr int W = kPacketLanes;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
+    KerrMinoCoeffs<SimdD> k{at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
+                            at(R::MU2), at(R::C),      at(R::K),  at(R::A), at(R::B)};
+    SimdD ys[4];
+    for (int i = 0; i < 4; ++i) ys[i] = SimdD::load(y + i * W + l);
+    SimdD v, s;
+    HWY_NAMESPACE::kerr_mino_constraint(k, at(R::POLE), ys, v, s);  // this target's copy
+    v.store(value + l);
+    s.store(scale + l);
+  }
+}
+
 /// integrate_with's set_tolerance (integrators.h) for the Mino-time system on every lane: the 1/D_i
 /// of ErrorScale from the system's scales (kerr_mino_tolerance_inv_scale) at state y, SoA.
 void mino_tolerance(const MinoLaneCoeffs& c, double eps_abs, double eps_rel, const double* y, double* inv) {
@@ -384,6 +427,8 @@ HWY_EXPORT(mino_rhs);
 HWY_EXPORT(mino_attempt);
 HWY_EXPORT(mino_tolerance);
 HWY_EXPORT(mino_end_views);
+HWY_EXPORT(mino_valid);
+HWY_EXPORT(mino_constraint);
 
 namespace {
 
@@ -801,7 +846,8 @@ struct MinoPacket {
     using R = MinoLaneCoeffs;
     const KerrMinoConstants& c = r.c;
     const double row[R::kRows] = {
-        c.M, c.a, c.a2, c.E, c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0, c.sin2_floor};
+        c.M,   c.a,  c.a2, c.E,  c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0,
+        c.sin2_floor, r.sys.w_break};
     for (int i = 0; i < R::kRows; ++i) coeffs.v[i][l] = row[i];
     return true;
   }
@@ -812,6 +858,25 @@ struct MinoPacket {
   void attempt(SolverKind kind, unsigned, const LaneTolerance& tol, const double* y, const double* dy, const double* h,
                double* y1, double* dy1, AttemptError& err) const {
     HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
+  }
+  /// KerrMinoSystem::valid of all lanes' states at once (mino_valid, SIMD).
+  unsigned valid_lanes(const double* y, unsigned lanes) const { return HWY_DYNAMIC_DISPATCH(mino_valid)(coeffs, y, lanes); }
+  /// KerrMinoSystem's constraint (on SIMD lanes: mino_constraint, kerr_mino_constraint's bits),
+  /// escaped and captured of the accepted states y (SoA) of the lanes in `lanes`. Escape and
+  /// capture are tested lane by lane, and the costly part of each (the turning-point and
+  /// Bernstein tests of the radial potential) only where its radius and direction admit it.
+  void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) {
+    constexpr int W = kPacketLanes;
+    HWY_DYNAMIC_DISPATCH(mino_constraint)(coeffs, y, out.constraint, out.constraint_scale);
+    out.escaped = out.captured = 0;
+    for (int l = 0; l < W; ++l) {
+      if (!(lanes >> l & 1u)) continue;
+      double yl[N];
+      for (int i = 0; i < N; ++i) yl[i] = y[i * W + l];
+      const KerrMinoSystem& sys = system(l);
+      if (sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
+      if (sys.captured(c, yl)) out.captured |= 1u << l;
+    }
   }
   /// The BL views of the accepted steps' ends (y1, dy1: SoA), all lanes at once on SIMD lanes
   /// (kerr_mino_bl_view, the function KerrMinoRay::step evaluates per ray), on the branch each ray

@@ -353,20 +353,9 @@ struct KerrMinoSystem {
   ///   Σ (g(k,k) + μ²) = (w'² − W)/(w² D) + (z'² − Z)/(1 − z²),
   /// scale = the same with the absolute values of the terms that cancel (the radial and polar
   /// kinetic and potential terms; the constraint test is relative to it, as MetricSystem's).
+  /// (kerr_mino_constraint, kerr_mino_rhs.h: the same formula on a packet's lanes.)
   void constraint(const double* y, GeodesicType, double& value, double& scale) const {
-    const double w = y[I::W], z = f.polar.z(y[I::Z]), dw = y[I::DW], dz = y[I::DZ];
-    const double w2 = w * w, z2 = z * z;
-    const double D = 1.0 - 2.0 * k.M * w + k.a2 * w2, P = k.E + k.c * w2;
-    const double Wv = k.W(w), Zv = k.Z(z);
-    const double s2 = std::max(f.polar.sin2(y[I::Z]), 1e-300);
-    const double wD = w2 * std::fabs(D);
-    // One division: 1/(w²|D| (1 − z²) Σ), w²Σ = 1 + a²z²w².
-    const double inv = w2 / (wD * s2 * (1.0 + k.a2 * z2 * w2));
-    value = ((dw * dw - Wv) * s2 + (dz * dz - Zv) * wD) * inv;
-    scale = ((dw * dw + P * P + std::fabs(D) * (k.mu2 + k.K * w2)) * s2 +
-             (dz * dz + std::fabs(k.Q) + std::fabs(k.B) * z2 + std::fabs(k.A) * z2 * z2) * wD) *
-                inv +
-            k.mu2;
+    kerr_mino_constraint(k, f.polar.pole, y, value, scale);
   }
   /// Re-projection onto the first integrals: |w'| = √W, |z'| = √Z (signs kept).
   void reproject(double* y, GeodesicType) const {
