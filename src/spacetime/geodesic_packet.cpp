@@ -871,11 +871,17 @@ struct MinoPacket {
     out.escaped = out.captured = 0;
     for (int l = 0; l < W; ++l) {
       if (!(lanes >> l & 1u)) continue;
+      // The first test of each (KerrMinoSystem::escaped: beyond escape_radius; captured: below
+      // capture_radius), which most steps fail, on w alone; the state is gathered and the
+      // function called only past it.
+      const double w = y[KerrMinoRHS::W * W + l];
+      const bool may_escape = w * c.escape_radius < 1.0, may_be_captured = w * c.capture_radius > 1.0;
+      if (!may_escape && !may_be_captured) continue;
       double yl[N];
       for (int i = 0; i < N; ++i) yl[i] = y[i * W + l];
       const KerrMinoSystem& sys = system(l);
-      if (sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
-      if (sys.captured(c, yl)) out.captured |= 1u << l;
+      if (may_escape && sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
+      if (may_be_captured && sys.captured(c, yl)) out.captured |= 1u << l;
     }
   }
   /// The BL views of the accepted steps' ends (y1, dy1: SoA), all lanes at once on SIMD lanes
@@ -900,9 +906,9 @@ struct MinoPacket {
     using V = MinoEndViews;
     KerrMinoRay::EndView& e = ray[l]->next_end();
     for (int i = 0; i < 4; ++i) {
-      e.bl[i] = ends.v[V::X + i][l];
-      e.bl[4 + i] = e.dbl[i] = ends.v[V::K + i][l];
-      e.dbl[4 + i] = ends.v[V::DK + i][l];
+      e.xk[i] = ends.v[V::X + i][l];
+      e.xk[4 + i] = ends.v[V::K + i][l];
+      e.xk[8 + i] = ends.v[V::DK + i][l];
     }
     for (int i = 0; i < 3; ++i) e.p[i] = ends.v[V::P + i][l];
     return rays.on_step(l, ray[l]->bl_step_with_end(s));

@@ -399,10 +399,13 @@ struct KerrMinoRay {
   ThetaBranch branch;
   KerrMinoSystem sys;
 
-  /// The BL view of one step end as the callback sees it: (x, k), (k, dk/dλ) and the
-  /// pseudo-Cartesian position.
+  /// The BL view of one step end as the callback sees it: xk = (x, k, dk/dλ), so that the
+  /// StepView's state (x, k) is xk[0..8) and its derivative (k, dk/dλ) is xk[4..12) — k stored
+  /// once for both — and the pseudo-Cartesian position.
   struct EndView {
-    double bl[8], dbl[8], p[3];
+    double xk[12], p[3];
+    const double* y() const { return xk; }
+    const double* dy() const { return xk + 4; }
   };
 
   /// The θ branch after an accepted step from a state with z' = dz0 to one with ζ = zeta1,
@@ -445,7 +448,7 @@ struct KerrMinoRay {
     const EndView &v0 = end_[start_], &v1 = next_end();
     start_ ^= 1;
     have0_ = true;
-    return StepView{s.lambda0, s.lambda1, v0.bl, v1.bl, v0.dbl, v1.dbl, 8, s.step_index, v0.p, v1.p};
+    return StepView{s.lambda0, s.lambda1, v0.y(), v1.y(), v0.dy(), v1.dy(), 8, s.step_index, v0.p, v1.p};
   }
   /// The views of the step's start (end_[start_], the previous step's end once have0_) and end.
   EndView end_[2];
