@@ -156,14 +156,16 @@ GEOVIS_HOT_INLINE RayState::ChordEnd transformed_end(const Metric& m, const Vec4
   return {p, dot(p, p), chart, true};
 }
 
-/// The end at metric coordinates x (the integrator's pseudo-Cartesian point `given`, chart 0, where
-/// it has one): only its chart and radius where the metric gives them without transforming x
-/// (Metric::pseudo_cartesian_radius), else the transformed point.
-GEOVIS_HOT_INLINE RayState::ChordEnd chord_end(const Metric& m, const Vec4& x, const double* given) {
+/// The end at metric coordinates x = y[0..4) (the integrator's pseudo-Cartesian point `given`,
+/// chart 0, where it has one): only its chart and radius where the metric gives them without
+/// transforming x (Metric::pseudo_cartesian_radius), else the transformed point. x is read only
+/// without `given` (as a Vec4 argument it was copied to the stack on every step, used or not).
+GEOVIS_HOT_INLINE RayState::ChordEnd chord_end(const Metric& m, const double* y, const double* given) {
   if (given) {
     const Vec3 p{given[0], given[1], given[2]};
     return {p, dot(p, p), 0, true};
   }
+  const Vec4 x = vec4_at(y);
   double radius;
   int chart;
   if (m.pseudo_cartesian_radius(x, radius, chart)) return {Vec3{}, radius * radius, chart, false};
@@ -205,8 +207,8 @@ GEOVIS_HOT_INLINE RayState::ChordEnd chord_end(const Metric& m, const Vec4& x, c
 StepAction test_step(RayState& rs, const StepView& st) {
   if (!rs.scene) return StepAction::Continue;
   const Metric& mm = *rs.metric;
-  RayState::ChordEnd e0 = rs.have_prev ? rs.prev : chord_end(mm, vec4_at(st.y0), st.p0);
-  RayState::ChordEnd e1 = chord_end(mm, vec4_at(st.y1), st.p1);
+  RayState::ChordEnd e0 = rs.have_prev ? rs.prev : chord_end(mm, st.y0, st.p0);
+  RayState::ChordEnd e1 = chord_end(mm, st.y1, st.p1);
   rs.have_prev = true;
   rs.prev = e1;
   const SegmentCull& cull = *rs.cull;

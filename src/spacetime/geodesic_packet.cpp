@@ -16,6 +16,7 @@
 
 #ifndef GEOVIS_SPACETIME_GEODESIC_PACKET_ONCE_
 #define GEOVIS_SPACETIME_GEODESIC_PACKET_ONCE_
+#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -377,10 +378,18 @@ unsigned mino_valid(const MinoLaneCoeffs& c, const double* y, unsigned lanes) {
 }
 
 /// KerrMinoSystem::constraint of the states y (SoA) on every lane (kerr_mino_constraint, the
-/// scalar system's formula): value and scale, one double per lane.
-void mino_constraint(const MinoLaneCoeffs& c, const double* y, double* value, double* scale) {
+/// scalar system's formula): value and scale, one double per lane. Returns the lanes past the
+/// first tests of KerrMinoSystem::escaped (bit l: beyond escape_radius, w·r_esc < 1, moving
+/// outward) and captured (bit 8 + l: below capture_radius, w·r_cap > 1, moving inward), with
+/// their expressions; `outward` is −1 for integration forward in λ, +1 backward (the sign
+/// of w' that escaped takes for outward).
+unsigned mino_constraint(const MinoLaneCoeffs& c, const double* y, double escape_radius, double capture_radius,
+                         double outward, double* value, double* scale) {
   using R = MinoLaneCoeffs;
+  using I = KerrMinoRHS;
   constexpr int W = kPacketLanes;
+  const SimdTag d;
+  unsigned bits = 0;
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
     auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
     KerrMinoCoeffs<SimdD> k{at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
@@ -391,7 +400,15 @@ void mino_constraint(const MinoLaneCoeffs& c, const double* y, double* value, do
     HWY_NAMESPACE::kerr_mino_constraint(k, at(R::POLE), ys, v, s);  // this target's copy
     v.store(value + l);
     s.store(scale + l);
+    const SimdD w = ys[I::W], dw = ys[I::DW];
+    const SimdMask may_escape = w * SimdD(escape_radius) < SimdD(1.0) && SimdD(outward) * dw > SimdD(0.0);
+    const SimdMask may_be_captured = w * SimdD(capture_radius) > SimdD(1.0) && SimdD(-outward) * dw > SimdD(0.0);
+    uint8_t esc[8] = {}, cap[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(d, may_escape.m, esc);
+    hn::StoreMaskBits(d, may_be_captured.m, cap);
+    bits |= static_cast<unsigned>(esc[0]) << l | static_cast<unsigned>(cap[0]) << (8 + l);
   }
+  return bits;
 }
 
 /// integrate_with's set_tolerance (integrators.h) for the Mino-time system on every lane: the 1/D_i
@@ -867,21 +884,21 @@ struct MinoPacket {
   /// Bernstein tests of the radial potential) only where its radius and direction admit it.
   void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) {
     constexpr int W = kPacketLanes;
-    HWY_DYNAMIC_DISPATCH(mino_constraint)(coeffs, y, out.constraint, out.constraint_scale);
+    static_assert(W <= 8, "mino_constraint's candidate bits: 8 per test");
+    // The lanes past the first tests of escaped and captured, which most steps fail (SIMD, with
+    // their expressions); only those are gathered and tested here.
+    const unsigned candidates =
+        HWY_DYNAMIC_DISPATCH(mino_constraint)(coeffs, y, c.escape_radius, c.capture_radius,
+                                              c.direction >= 0 ? -1.0 : 1.0, out.constraint, out.constraint_scale);
+    const unsigned may_escape = candidates & lanes, may_be_captured = candidates >> 8 & lanes;
     out.escaped = out.captured = 0;
-    for (int l = 0; l < W; ++l) {
-      if (!(lanes >> l & 1u)) continue;
-      // The first test of each (KerrMinoSystem::escaped: beyond escape_radius; captured: below
-      // capture_radius), which most steps fail, on w alone; the state is gathered and the
-      // function called only past it.
-      const double w = y[KerrMinoRHS::W * W + l];
-      const bool may_escape = w * c.escape_radius < 1.0, may_be_captured = w * c.capture_radius > 1.0;
-      if (!may_escape && !may_be_captured) continue;
+    for (unsigned todo = may_escape | may_be_captured; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
       double yl[N];
       for (int i = 0; i < N; ++i) yl[i] = y[i * W + l];
       const KerrMinoSystem& sys = system(l);
-      if (may_escape && sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
-      if (may_be_captured && sys.captured(c, yl)) out.captured |= 1u << l;
+      if ((may_escape >> l & 1u) && sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
+      if ((may_be_captured >> l & 1u) && sys.captured(c, yl)) out.captured |= 1u << l;
     }
   }
   /// The BL views of the accepted steps' ends (y1, dy1: SoA), all lanes at once on SIMD lanes
