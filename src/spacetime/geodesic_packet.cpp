@@ -51,14 +51,13 @@ struct MinoLaneCoeffs {
   alignas(64) double v[kRows][kPacketLanes] = {};
 };
 
-/// The Boyer–Lindquist views of the step ends of a packet's lanes (KerrMinoRay::EndView, SoA: x,
-/// k, dk/dλ and the pseudo-Cartesian position, one row per component) and what they are computed
-/// from besides the state: the θ branch (sign, offset) of each lane after its step, and which
-/// lanes have a step (active: 1, else 0).
+/// Where the Boyer–Lindquist views of the step ends of a packet's lanes go (each lane's
+/// KerrMinoRay::EndView: x, k, dk/dλ and the pseudo-Cartesian position; a lane without a step
+/// writes to a scratch view) and what they are computed from besides the state: the θ branch
+/// (sign, offset) of each lane after its step, and which lanes have a step (active: 1, else 0).
 struct MinoEndViews {
-  enum { X = 0, K = 4, DK = 8, P = 12, kRows = 15 };
   alignas(64) double sign[kPacketLanes] = {}, offset[kPacketLanes] = {}, active[kPacketLanes] = {};
-  alignas(64) double v[kRows][kPacketLanes];
+  KerrMinoRay::EndView* dst[kPacketLanes] = {};
 };
 
 /// The error tolerance of a packet's lanes (ErrorScale): eps_abs, eps_rel and, for a system with
@@ -321,15 +320,15 @@ void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance&
 }
 
 /// kerr_mino_bl_view (kerr_mino_bl.h) on every lane: the BL views of the Mino states y with
-/// σ-derivatives dy (SoA) on the lanes' θ branches, into out.v. A lane without a step (its y may
-/// be a rejected attempt, NaN) is viewed at φ = 0, which keeps sincos_t off its lane-by-lane route
-/// for arguments it cannot reduce.
-void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, MinoEndViews& out) {
+/// σ-derivatives dy (SoA) on the lanes' θ branches, written to each lane's view (out.dst). A lane
+/// without a step (its y may be a rejected attempt, NaN) is viewed at φ = 0, which keeps sincos_t
+/// off its lane-by-lane route for arguments it cannot reduce.
+void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, const MinoEndViews& out) {
   using R = MinoLaneCoeffs;
-  using V = MinoEndViews;
   constexpr int N = KerrMinoRHS::N, W = kPacketLanes;
   const SimdTag d;
-  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+  const size_t L = SimdD::lanes();
+  for (size_t l = 0; l < static_cast<size_t>(W); l += L) {
     auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
     KerrMinoCoeffs<SimdD> k{at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
                             at(R::MU2), at(R::C),      at(R::K),  at(R::A), at(R::B)};
@@ -341,15 +340,34 @@ void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, 
       dys[i] = SimdD::load(dy + i * W + l);
     }
     ys[KerrMinoRHS::PHI] = select(active, ys[KerrMinoRHS::PHI], SimdD(0.0));
-    SimdD x[4], kk[4], dk[4], p[3];
+    // v = (x, k, dk/dλ, p, 0): the rows of the views in EndView's order (xk, then p and its pad).
+    SimdD v[16];
     HWY_NAMESPACE::kerr_mino_bl_view(k, axis, at(R::POLE), SimdD::load(out.sign + l), SimdD::load(out.offset + l), ys,
-                                     dys, x, kk, dk, p);  // this target's copy
-    for (int i = 0; i < 4; ++i) {
-      x[i].store(out.v[V::X + i] + l);
-      kk[i].store(out.v[V::K + i] + l);
-      dk[i].store(out.v[V::DK + i] + l);
+                                     dys, v, v + 4, v + 8, v + 12);  // this target's copy
+    v[15] = SimdD(0.0);
+#if HWY_TARGET == HWY_AVX2
+    // Four lanes: each group of four rows transposed (4×4: two rounds of shuffles) and stored as
+    // four consecutive doubles of each lane's view, instead of 16 scalar copies per lane.
+    for (int g = 0; g < 4; ++g) {
+      const SimdVec r0 = v[4 * g].v, r1 = v[4 * g + 1].v, r2 = v[4 * g + 2].v, r3 = v[4 * g + 3].v;
+      const SimdVec t0 = hn::InterleaveLower(d, r0, r1), t1 = hn::InterleaveUpper(d, r0, r1);  // [a0 b0 a2 b2], [a1 b1 a3 b3]
+      const SimdVec t2 = hn::InterleaveLower(d, r2, r3), t3 = hn::InterleaveUpper(d, r2, r3);  // [c0 d0 c2 d2], [c1 d1 c3 d3]
+      const SimdVec lane_rows[4] = {hn::ConcatLowerLower(d, t2, t0), hn::ConcatLowerLower(d, t3, t1),
+                                    hn::ConcatUpperUpper(d, t2, t0), hn::ConcatUpperUpper(d, t3, t1)};
+      for (size_t j = 0; j < 4; ++j) {
+        KerrMinoRay::EndView& e = *out.dst[l + j];
+        hn::StoreU(lane_rows[j], d, g < 3 ? e.xk + 4 * g : e.p);
+      }
     }
-    for (int i = 0; i < 3; ++i) p[i].store(out.v[V::P + i] + l);
+#else
+    HWY_ALIGN double rows[15][HWY_MAX_BYTES / sizeof(double)];
+    for (int i = 0; i < 15; ++i) v[i].store(rows[i]);
+    for (size_t j = 0; j < L; ++j) {
+      KerrMinoRay::EndView& e = *out.dst[l + j];
+      for (int i = 0; i < 12; ++i) e.xk[i] = rows[i][j];
+      for (int i = 0; i < 3; ++i) e.p[i] = rows[12 + i][j];
+    }
+#endif
   }
 }
 
@@ -846,6 +864,7 @@ struct MinoPacket {
   std::optional<KerrMinoRay> ray[kPacketLanes];
   MinoLaneCoeffs coeffs;
   MinoEndViews ends;
+  KerrMinoRay::EndView scratch_end;  ///< where the views of lanes without a step go
 
   KerrMinoSystem& system(int l) { return ray[l]->sys; }
   /// The ray from BL (x, k); one that starts outside the metric's validity domain goes to
@@ -903,7 +922,8 @@ struct MinoPacket {
   }
   /// The BL views of the accepted steps' ends (y1, dy1: SoA), all lanes at once on SIMD lanes
   /// (kerr_mino_bl_view, the function KerrMinoRay::step evaluates per ray), on the branch each ray
-  /// has after its step; step hands them to the rays. Without a step callback none are needed.
+  /// has after its step, written straight into each ray's next_end() (mino_end_views), which step
+  /// then reports. Without a step callback none are needed.
   void before_steps(unsigned lanes, const double* y, const double* y1, const double* dy1) {
     if (!rays.on_step) return;
     using I = KerrMinoRHS;
@@ -911,6 +931,8 @@ struct MinoPacket {
     for (int l = 0; l < W; ++l) {
       const bool active = lanes >> l & 1u;
       ends.active[l] = active ? 1.0 : 0.0;
+      // The view of the step's end goes to the slot bl_step_with_end reports (next_end).
+      ends.dst[l] = active ? &ray[l]->next_end() : &scratch_end;
       if (!active) continue;
       const ThetaBranch b = ray[l]->branch_after(y[I::DZ * W + l], y1[I::Z * W + l], y1[I::DZ * W + l]);
       ends.sign[l] = b.sign;
@@ -918,16 +940,9 @@ struct MinoPacket {
     }
     HWY_DYNAMIC_DISPATCH(mino_end_views)(coeffs, y1, dy1, ends);
   }
+  /// The accepted step of lane l in BL terms, the view of its end written by before_steps.
   StepAction step(int l, const StepView& s) {
     if (!rays.on_step) return ray[l]->step(s, {});
-    using V = MinoEndViews;
-    KerrMinoRay::EndView& e = ray[l]->next_end();
-    for (int i = 0; i < 4; ++i) {
-      e.xk[i] = ends.v[V::X + i][l];
-      e.xk[4 + i] = ends.v[V::K + i][l];
-      e.xk[8 + i] = ends.v[V::DK + i][l];
-    }
-    for (int i = 0; i < 3; ++i) e.p[i] = ends.v[V::P + i][l];
     return rays.on_step(l, ray[l]->bl_step_with_end(s));
   }
   void rebase(int l, double* y) {
@@ -964,7 +979,7 @@ void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole
                                 const PacketRays& rays) {
   require_packet_solver(cfg);
   const SolverConfig mino_cfg = KerrMinoRay::config(cfg);
-  MinoPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}, {}};
+  MinoPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}, {}, {}};
   with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, mino_cfg, rays); });
 }
 

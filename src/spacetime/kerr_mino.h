@@ -403,7 +403,7 @@ struct KerrMinoRay {
   /// StepView's state (x, k) is xk[0..8) and its derivative (k, dk/dλ) is xk[4..12) — k stored
   /// once for both — and the pseudo-Cartesian position.
   struct EndView {
-    double xk[12], p[3];
+    double xk[12], p[4];  ///< p[3]: padding, for the packet's stores of four lanes' rows at once
     const double* y() const { return xk; }
     const double* dy() const { return xk + 4; }
   };
