@@ -156,14 +156,16 @@ GEOVIS_HOT_INLINE RayState::ChordEnd transformed_end(const Metric& m, const Vec4
   return {p, dot(p, p), chart, true};
 }
 
-/// The end at metric coordinates x (the integrator's pseudo-Cartesian point `given`, chart 0, where
-/// it has one): only its chart and radius where the metric gives them without transforming x
-/// (Metric::pseudo_cartesian_radius), else the transformed point.
-GEOVIS_HOT_INLINE RayState::ChordEnd chord_end(const Metric& m, const Vec4& x, const double* given) {
+/// The end at metric coordinates x = y[0..4) (the integrator's pseudo-Cartesian point `given`,
+/// chart 0, where it has one): only its chart and radius where the metric gives them without
+/// transforming x (Metric::pseudo_cartesian_radius), else the transformed point. x is read only
+/// without `given` (as a Vec4 argument it was copied to the stack on every step, used or not).
+GEOVIS_HOT_INLINE RayState::ChordEnd chord_end(const Metric& m, const double* y, const double* given) {
   if (given) {
     const Vec3 p{given[0], given[1], given[2]};
     return {p, dot(p, p), 0, true};
   }
+  const Vec4 x = vec4_at(y);
   double radius;
   int chart;
   if (m.pseudo_cartesian_radius(x, radius, chart)) return {Vec3{}, radius * radius, chart, false};
@@ -198,15 +200,12 @@ GEOVIS_HOT_INLINE RayState::ChordEnd chord_end(const Metric& m, const Vec4& x, c
   return StepAction::Stop;
 }
 
-/// The hit search's test of one accepted step: its chord (pseudo-Cartesian segment, paper §2.3)
-/// against the scene (test_chord), unless the chord lies in the scene's empty ball of its chart
-/// or beyond its bounding box (SegmentCull: a few compares, before the ends are transformed where
-/// the ball already excludes the chord).
-StepAction test_step(RayState& rs, const StepView& st) {
-  if (!rs.scene) return StepAction::Continue;
+/// test_step in general: either end may still have to be transformed (Metric calls), or be the
+/// ray's first. Not inlined: its frame and saved registers stay off test_step's common path.
+[[gnu::noinline]] StepAction test_step_general(RayState& rs, const StepView& st) {
   const Metric& mm = *rs.metric;
-  RayState::ChordEnd e0 = rs.have_prev ? rs.prev : chord_end(mm, vec4_at(st.y0), st.p0);
-  RayState::ChordEnd e1 = chord_end(mm, vec4_at(st.y1), st.p1);
+  RayState::ChordEnd e0 = rs.have_prev ? rs.prev : chord_end(mm, st.y0, st.p0);
+  RayState::ChordEnd e1 = chord_end(mm, st.y1, st.p1);
   rs.have_prev = true;
   rs.prev = e1;
   const SegmentCull& cull = *rs.cull;
@@ -220,6 +219,25 @@ StepAction test_step(RayState& rs, const StepView& st) {
   }
   if (cull.outside_bounds(e0.p, e1.p)) return StepAction::Continue;
   return test_chord(rs, st, e0.p, e1.p, e0.chart, e1.chart);
+}
+
+/// The hit search's test of one accepted step: its chord (pseudo-Cartesian segment, paper §2.3)
+/// against the scene (test_chord), unless the chord lies in the scene's empty ball of its chart
+/// or beyond its bounding box (SegmentCull: a few compares, before the ends are transformed where
+/// the ball already excludes the chord). The common case of an integrator that gives each step's
+/// pseudo-Cartesian end (StepView::p1: the Mino-time paths), after a first step whose end was
+/// such a point too, here: test_step_general's steps with both ends known (chart 0), no Metric
+/// call.
+StepAction test_step(RayState& rs, const StepView& st) {
+  if (!rs.scene) return StepAction::Continue;
+  if (!(st.p1 && rs.have_prev && rs.prev.have_p)) return test_step_general(rs, st);
+  const RayState::ChordEnd e0 = rs.prev;
+  const Vec3 p1{st.p1[0], st.p1[1], st.p1[2]};
+  rs.prev = RayState::ChordEnd{p1, dot(p1, p1), 0, true};
+  const SegmentCull& cull = *rs.cull;
+  if (cull.inside_empty_ball(e0.chart, e0.radius2, 0, rs.prev.radius2)) return StepAction::Continue;
+  if (cull.outside_bounds(e0.p, p1)) return StepAction::Continue;
+  return test_chord(rs, st, e0.p, p1, e0.chart, 0);
 }
 
 /// Hit search: integrates the ray (integrate_ray) and tests every accepted step (test_step).

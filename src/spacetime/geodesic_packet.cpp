@@ -16,6 +16,7 @@
 
 #ifndef GEOVIS_SPACETIME_GEODESIC_PACKET_ONCE_
 #define GEOVIS_SPACETIME_GEODESIC_PACKET_ONCE_
+#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -43,20 +44,20 @@ inline void packet_rhs(const MetricKernel& m, const double* y, double* dy, unsig
 
 /// The constants of the rays in a packet's lanes (KerrMinoCoeffs, one row per coefficient; the
 /// pole ζ is measured from; axis: all bits set where L = 0; the floor of sin²θ in the tolerance
-/// scales), for the SIMD right-hand side and tolerance scales.
+/// scales; 1/r_break, KerrMinoSystem::w_break), for the SIMD right-hand side, tolerance scales
+/// and state checks.
 struct MinoLaneCoeffs {
-  enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, POLE, AXIS, SIN2_FLOOR, kRows };
+  enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, POLE, AXIS, SIN2_FLOOR, W_BREAK, kRows };
   alignas(64) double v[kRows][kPacketLanes] = {};
 };
 
-/// The Boyer–Lindquist views of the step ends of a packet's lanes (KerrMinoRay::EndView, SoA: x,
-/// k, dk/dλ and the pseudo-Cartesian position, one row per component) and what they are computed
-/// from besides the state: the θ branch (sign, offset) of each lane after its step, and which
-/// lanes have a step (active: 1, else 0).
+/// Where the Boyer–Lindquist views of the step ends of a packet's lanes go (each lane's
+/// KerrMinoRay::EndView: x, k, dk/dλ and the pseudo-Cartesian position; a lane without a step
+/// writes to a scratch view) and what they are computed from besides the state: the θ branch
+/// (sign, offset) of each lane after its step, and which lanes have a step (active: 1, else 0).
 struct MinoEndViews {
-  enum { X = 0, K = 4, DK = 8, P = 12, kRows = 15 };
   alignas(64) double sign[kPacketLanes] = {}, offset[kPacketLanes] = {}, active[kPacketLanes] = {};
-  alignas(64) double v[kRows][kPacketLanes];
+  KerrMinoRay::EndView* dst[kPacketLanes] = {};
 };
 
 /// The error tolerance of a packet's lanes (ErrorScale): eps_abs, eps_rel and, for a system with
@@ -319,15 +320,15 @@ void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance&
 }
 
 /// kerr_mino_bl_view (kerr_mino_bl.h) on every lane: the BL views of the Mino states y with
-/// σ-derivatives dy (SoA) on the lanes' θ branches, into out.v. A lane without a step (its y may
-/// be a rejected attempt, NaN) is viewed at φ = 0, which keeps sincos_t off its lane-by-lane route
-/// for arguments it cannot reduce.
-void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, MinoEndViews& out) {
+/// σ-derivatives dy (SoA) on the lanes' θ branches, written to each lane's view (out.dst). A lane
+/// without a step (its y may be a rejected attempt, NaN) is viewed at φ = 0, which keeps sincos_t
+/// off its lane-by-lane route for arguments it cannot reduce.
+void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, const MinoEndViews& out) {
   using R = MinoLaneCoeffs;
-  using V = MinoEndViews;
   constexpr int N = KerrMinoRHS::N, W = kPacketLanes;
   const SimdTag d;
-  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+  const size_t L = SimdD::lanes();
+  for (size_t l = 0; l < static_cast<size_t>(W); l += L) {
     auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
     KerrMinoCoeffs<SimdD> k{at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
                             at(R::MU2), at(R::C),      at(R::K),  at(R::A), at(R::B)};
@@ -339,16 +340,93 @@ void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, 
       dys[i] = SimdD::load(dy + i * W + l);
     }
     ys[KerrMinoRHS::PHI] = select(active, ys[KerrMinoRHS::PHI], SimdD(0.0));
-    SimdD x[4], kk[4], dk[4], p[3];
+    // v = (x, k, dk/dλ, p, 0): the rows of the views in EndView's order (xk, then p and its pad).
+    SimdD v[16];
     HWY_NAMESPACE::kerr_mino_bl_view(k, axis, at(R::POLE), SimdD::load(out.sign + l), SimdD::load(out.offset + l), ys,
-                                     dys, x, kk, dk, p);  // this target's copy
-    for (int i = 0; i < 4; ++i) {
-      x[i].store(out.v[V::X + i] + l);
-      kk[i].store(out.v[V::K + i] + l);
-      dk[i].store(out.v[V::DK + i] + l);
+                                     dys, v, v + 4, v + 8, v + 12);  // this target's copy
+    v[15] = SimdD(0.0);
+#if HWY_TARGET == HWY_AVX2
+    // Four lanes: each group of four rows transposed (4×4: two rounds of shuffles) and stored as
+    // four consecutive doubles of each lane's view, instead of 16 scalar copies per lane.
+    for (int g = 0; g < 4; ++g) {
+      const SimdVec r0 = v[4 * g].v, r1 = v[4 * g + 1].v, r2 = v[4 * g + 2].v, r3 = v[4 * g + 3].v;
+      const SimdVec t0 = hn::InterleaveLower(d, r0, r1), t1 = hn::InterleaveUpper(d, r0, r1);  // [a0 b0 a2 b2], [a1 b1 a3 b3]
+      const SimdVec t2 = hn::InterleaveLower(d, r2, r3), t3 = hn::InterleaveUpper(d, r2, r3);  // [c0 d0 c2 d2], [c1 d1 c3 d3]
+      const SimdVec lane_rows[4] = {hn::ConcatLowerLower(d, t2, t0), hn::ConcatLowerLower(d, t3, t1),
+                                    hn::ConcatUpperUpper(d, t2, t0), hn::ConcatUpperUpper(d, t3, t1)};
+      for (size_t j = 0; j < 4; ++j) {
+        KerrMinoRay::EndView& e = *out.dst[l + j];
+        hn::StoreU(lane_rows[j], d, g < 3 ? e.xk + 4 * g : e.p);
+      }
     }
-    for (int i = 0; i < 3; ++i) p[i].store(out.v[V::P + i] + l);
+#else
+    HWY_ALIGN double rows[15][HWY_MAX_BYTES / sizeof(double)];
+    for (int i = 0; i < 15; ++i) v[i].store(rows[i]);
+    for (size_t j = 0; j < L; ++j) {
+      KerrMinoRay::EndView& e = *out.dst[l + j];
+      for (int i = 0; i < 12; ++i) e.xk[i] = rows[i][j];
+      for (int i = 0; i < 3; ++i) e.p[i] = rows[12 + i][j];
+    }
+#endif
   }
+}
+
+/// KerrMinoSystem::valid of the states y (SoA) on every lane in `lanes`: bit l set where lane l's
+/// state is valid — 0 < w < w_break and, on the axis branch (L = 0), |z| <= 1 + 1e-3, else
+/// sin²θ > 0 — with the scalar test's operations, all lanes at once.
+unsigned mino_valid(const MinoLaneCoeffs& c, const double* y, unsigned lanes) {
+  using R = MinoLaneCoeffs;
+  using I = KerrMinoRHS;
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  unsigned bits = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
+    const SimdD w = SimdD::load(y + I::W * W + l), zeta = SimdD::load(y + I::Z * W + l), pole = at(R::POLE);
+    const SimdMask axis{hn::Ne(at(R::AXIS).v, hn::Zero(d))};
+    const SimdMask near_pole = fabs(pole + zeta) <= SimdD(1.0 + 1e-3);  // PolarOffset::z
+    const SimdMask off_axis = -zeta * (2.0 * pole + zeta) > SimdD(0.0);  // PolarOffset::sin2
+    const SimdMask ok =
+        w > SimdD(0.0) && w < at(R::W_BREAK) && ((axis && near_pole) || (!axis && off_axis));
+    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(d, ok.m, lane_bits);
+    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+  }
+  return bits & lanes;
+}
+
+/// KerrMinoSystem::constraint of the states y (SoA) on every lane (kerr_mino_constraint, the
+/// scalar system's formula): value and scale, one double per lane. Returns the lanes past the
+/// first tests of KerrMinoSystem::escaped (bit l: beyond escape_radius, w·r_esc < 1, moving
+/// outward) and captured (bit 8 + l: below capture_radius, w·r_cap > 1, moving inward), with
+/// their expressions; `outward` is −1 for integration forward in λ, +1 backward (the sign
+/// of w' that escaped takes for outward).
+unsigned mino_constraint(const MinoLaneCoeffs& c, const double* y, double escape_radius, double capture_radius,
+                         double outward, double* value, double* scale) {
+  using R = MinoLaneCoeffs;
+  using I = KerrMinoRHS;
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  unsigned bits = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
+    KerrMinoCoeffs<SimdD> k{at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
+                            at(R::MU2), at(R::C),      at(R::K),  at(R::A), at(R::B)};
+    SimdD ys[4];
+    for (int i = 0; i < 4; ++i) ys[i] = SimdD::load(y + i * W + l);
+    SimdD v, s;
+    HWY_NAMESPACE::kerr_mino_constraint(k, at(R::POLE), ys, v, s);  // this target's copy
+    v.store(value + l);
+    s.store(scale + l);
+    const SimdD w = ys[I::W], dw = ys[I::DW];
+    const SimdMask may_escape = w * SimdD(escape_radius) < SimdD(1.0) && SimdD(outward) * dw > SimdD(0.0);
+    const SimdMask may_be_captured = w * SimdD(capture_radius) > SimdD(1.0) && SimdD(-outward) * dw > SimdD(0.0);
+    uint8_t esc[8] = {}, cap[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(d, may_escape.m, esc);
+    hn::StoreMaskBits(d, may_be_captured.m, cap);
+    bits |= static_cast<unsigned>(esc[0]) << l | static_cast<unsigned>(cap[0]) << (8 + l);
+  }
+  return bits;
 }
 
 /// integrate_with's set_tolerance (integrators.h) for the Mino-time system on every lane: the 1/D_i
@@ -450,6 +528,8 @@ HWY_EXPORT(mino_tolerance);
 HWY_EXPORT(mino_end_views);
 HWY_EXPORT(accepted_step_control);
 HWY_EXPORT(inside_box_lanes);
+HWY_EXPORT(mino_valid);
+HWY_EXPORT(mino_constraint);
 
 namespace {
 
@@ -874,6 +954,7 @@ struct MinoPacket {
   std::optional<KerrMinoRay> ray[kPacketLanes];
   MinoLaneCoeffs coeffs;
   MinoEndViews ends;
+  KerrMinoRay::EndView scratch_end;  ///< where the views of lanes without a step go
 
   KerrMinoSystem& system(int l) { return ray[l]->sys; }
   /// The ray from BL (x, k); one that starts outside the metric's validity domain goes to
@@ -891,7 +972,8 @@ struct MinoPacket {
     using R = MinoLaneCoeffs;
     const KerrMinoConstants& c = r.c;
     const double row[R::kRows] = {
-        c.M, c.a, c.a2, c.E, c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0, c.sin2_floor};
+        c.M,   c.a,  c.a2, c.E,  c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0,
+        c.sin2_floor, r.sys.w_break};
     for (int i = 0; i < R::kRows; ++i) coeffs.v[i][l] = row[i];
     return true;
   }
@@ -903,9 +985,35 @@ struct MinoPacket {
                double* y1, double* dy1, AttemptError& err) const {
     HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
   }
+  /// KerrMinoSystem::valid of all lanes' states at once (mino_valid, SIMD).
+  unsigned valid_lanes(const double* y, unsigned lanes) const { return HWY_DYNAMIC_DISPATCH(mino_valid)(coeffs, y, lanes); }
+  /// KerrMinoSystem's constraint (on SIMD lanes: mino_constraint, kerr_mino_constraint's bits),
+  /// escaped and captured of the accepted states y (SoA) of the lanes in `lanes`. Escape and
+  /// capture are tested lane by lane, and the costly part of each (the turning-point and
+  /// Bernstein tests of the radial potential) only where its radius and direction admit it.
+  void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) {
+    constexpr int W = kPacketLanes;
+    static_assert(W <= 8, "mino_constraint's candidate bits: 8 per test");
+    // The lanes past the first tests of escaped and captured, which most steps fail (SIMD, with
+    // their expressions); only those are gathered and tested here.
+    const unsigned candidates =
+        HWY_DYNAMIC_DISPATCH(mino_constraint)(coeffs, y, c.escape_radius, c.capture_radius,
+                                              c.direction >= 0 ? -1.0 : 1.0, out.constraint, out.constraint_scale);
+    const unsigned may_escape = candidates & lanes, may_be_captured = candidates >> 8 & lanes;
+    out.escaped = out.captured = 0;
+    for (unsigned todo = may_escape | may_be_captured; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      double yl[N];
+      for (int i = 0; i < N; ++i) yl[i] = y[i * W + l];
+      const KerrMinoSystem& sys = system(l);
+      if ((may_escape >> l & 1u) && sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
+      if ((may_be_captured >> l & 1u) && sys.captured(c, yl)) out.captured |= 1u << l;
+    }
+  }
   /// The BL views of the accepted steps' ends (y1, dy1: SoA), all lanes at once on SIMD lanes
   /// (kerr_mino_bl_view, the function KerrMinoRay::step evaluates per ray), on the branch each ray
-  /// has after its step; step hands them to the rays. Without a step callback none are needed.
+  /// has after its step, written straight into each ray's next_end() (mino_end_views), which step
+  /// then reports. Without a step callback none are needed.
   void before_steps(unsigned lanes, const double* y, const double* y1, const double* dy1) {
     if (!rays.on_step) return;
     using I = KerrMinoRHS;
@@ -913,6 +1021,8 @@ struct MinoPacket {
     for (int l = 0; l < W; ++l) {
       const bool active = lanes >> l & 1u;
       ends.active[l] = active ? 1.0 : 0.0;
+      // The view of the step's end goes to the slot bl_step_with_end reports (next_end).
+      ends.dst[l] = active ? &ray[l]->next_end() : &scratch_end;
       if (!active) continue;
       const ThetaBranch b = ray[l]->branch_after(y[I::DZ * W + l], y1[I::Z * W + l], y1[I::DZ * W + l]);
       ends.sign[l] = b.sign;
@@ -920,16 +1030,9 @@ struct MinoPacket {
     }
     HWY_DYNAMIC_DISPATCH(mino_end_views)(coeffs, y1, dy1, ends);
   }
+  /// The accepted step of lane l in BL terms, the view of its end written by before_steps.
   StepAction step(int l, const StepView& s) {
     if (!rays.on_step) return ray[l]->step(s, {});
-    using V = MinoEndViews;
-    KerrMinoRay::EndView& e = ray[l]->next_end();
-    for (int i = 0; i < 4; ++i) {
-      e.bl[i] = ends.v[V::X + i][l];
-      e.bl[4 + i] = e.dbl[i] = ends.v[V::K + i][l];
-      e.dbl[4 + i] = ends.v[V::DK + i][l];
-    }
-    for (int i = 0; i < 3; ++i) e.p[i] = ends.v[V::P + i][l];
     return rays.on_step(l, ray[l]->bl_step_with_end(s));
   }
   void rebase(int l, double* y) {
@@ -971,7 +1074,7 @@ void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole
                                 const PacketRays& rays) {
   require_packet_solver(cfg);
   const SolverConfig mino_cfg = KerrMinoRay::config(cfg);
-  MinoPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}, {}};
+  MinoPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}, {}, {}};
   with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, mino_cfg, rays); });
 }
 

@@ -100,10 +100,9 @@ void KerrMinoRay::to_bl(const double* ym, const double* dym, EndView& v) const {
   Vec4 x, kk, acc;
   kerr_mino_to_bl(c, sys.f.polar, ym, dym, branch, x, kk, &acc, v.p);
   for (int i = 0; i < 4; ++i) {
-    v.bl[i] = x[i];
-    v.bl[4 + i] = kk[i];
-    v.dbl[i] = kk[i];
-    v.dbl[4 + i] = acc[i];
+    v.xk[i] = x[i];
+    v.xk[4 + i] = kk[i];
+    v.xk[8 + i] = acc[i];
   }
 }
 

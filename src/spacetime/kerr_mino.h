@@ -353,20 +353,9 @@ struct KerrMinoSystem {
   ///   Σ (g(k,k) + μ²) = (w'² − W)/(w² D) + (z'² − Z)/(1 − z²),
   /// scale = the same with the absolute values of the terms that cancel (the radial and polar
   /// kinetic and potential terms; the constraint test is relative to it, as MetricSystem's).
+  /// (kerr_mino_constraint, kerr_mino_rhs.h: the same formula on a packet's lanes.)
   void constraint(const double* y, GeodesicType, double& value, double& scale) const {
-    const double w = y[I::W], z = f.polar.z(y[I::Z]), dw = y[I::DW], dz = y[I::DZ];
-    const double w2 = w * w, z2 = z * z;
-    const double D = 1.0 - 2.0 * k.M * w + k.a2 * w2, P = k.E + k.c * w2;
-    const double Wv = k.W(w), Zv = k.Z(z);
-    const double s2 = std::max(f.polar.sin2(y[I::Z]), 1e-300);
-    const double wD = w2 * std::fabs(D);
-    // One division: 1/(w²|D| (1 − z²) Σ), w²Σ = 1 + a²z²w².
-    const double inv = w2 / (wD * s2 * (1.0 + k.a2 * z2 * w2));
-    value = ((dw * dw - Wv) * s2 + (dz * dz - Zv) * wD) * inv;
-    scale = ((dw * dw + P * P + std::fabs(D) * (k.mu2 + k.K * w2)) * s2 +
-             (dz * dz + std::fabs(k.Q) + std::fabs(k.B) * z2 + std::fabs(k.A) * z2 * z2) * wD) *
-                inv +
-            k.mu2;
+    kerr_mino_constraint(k, f.polar.pole, y, value, scale);
   }
   /// Re-projection onto the first integrals: |w'| = √W, |z'| = √Z (signs kept).
   void reproject(double* y, GeodesicType) const {
@@ -410,10 +399,13 @@ struct KerrMinoRay {
   ThetaBranch branch;
   KerrMinoSystem sys;
 
-  /// The BL view of one step end as the callback sees it: (x, k), (k, dk/dλ) and the
-  /// pseudo-Cartesian position.
+  /// The BL view of one step end as the callback sees it: xk = (x, k, dk/dλ), so that the
+  /// StepView's state (x, k) is xk[0..8) and its derivative (k, dk/dλ) is xk[4..12) — k stored
+  /// once for both — and the pseudo-Cartesian position.
   struct EndView {
-    double bl[8], dbl[8], p[3];
+    double xk[12], p[4];  ///< p[3]: padding, for the packet's stores of four lanes' rows at once
+    const double* y() const { return xk; }
+    const double* dy() const { return xk + 4; }
   };
 
   /// The θ branch after an accepted step from a state with z' = dz0 to one with ζ = zeta1,
@@ -456,7 +448,7 @@ struct KerrMinoRay {
     const EndView &v0 = end_[start_], &v1 = next_end();
     start_ ^= 1;
     have0_ = true;
-    return StepView{s.lambda0, s.lambda1, v0.bl, v1.bl, v0.dbl, v1.dbl, 8, s.step_index, v0.p, v1.p};
+    return StepView{s.lambda0, s.lambda1, v0.y(), v1.y(), v0.dy(), v1.dy(), 8, s.step_index, v0.p, v1.p};
   }
   /// The views of the step's start (end_[start_], the previous step's end once have0_) and end.
   EndView end_[2];

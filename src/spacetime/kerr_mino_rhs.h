@@ -54,3 +54,31 @@ GEOVIS_HOT_INLINE void kerr_mino_tolerance_inv_scale(const T& a2, const T& sin2_
   is[DW] = q * w2 * st;
   is[DZ] = q * w2 * w2;
 }
+
+/// KerrMinoSystem::constraint (kerr_mino.h, where the terms are derived) on any number type T: the
+/// value g(k,k) + μ² of the Boyer–Lindquist tangent that state y (ζ relative to `pole`) stands for,
+///   Σ (g(k,k) + μ²) = (w'² − W)/(w² D) + (z'² − Z)/(1 − z²),
+/// and its scale (the absolute values of the terms that cancel), with one division. One formula
+/// for one ray and for a packet's lanes (MinoPacket::step_checks, geodesic_packet.cpp): the same
+/// operations in the same order, so a lane gives the scalar system's bits and stops where it does.
+template <class T>
+GEOVIS_HOT_INLINE void kerr_mino_constraint(const KerrMinoCoeffs<T>& k, const T& pole, const T* y, T& value,
+                                            T& scale) {
+  using std::fabs;
+  enum { W = 0, Z = 1, DW = 2, DZ = 3 };
+  const T w = y[W], z = pole + y[Z], dw = y[DW], dz = y[DZ];
+  const T w2 = w * w, z2 = z * z;
+  const T D = 1.0 - 2.0 * k.M * w + k.a2 * w2, P = k.E + k.c * w2;
+  const T Wv = P * P - (1.0 - 2.0 * k.M * w + k.a2 * w2) * (k.mu2 + k.K * w2);  // W(w) (KerrMinoConstants::W)
+  const T Zv = k.Q - k.B * z2 - k.A * z2 * z2;                                  // Z(z) (KerrMinoConstants::Z)
+  const T s2_raw = -y[Z] * (2.0 * pole + y[Z]);                                // sin²θ (PolarOffset::sin2)
+  const T s2 = select(s2_raw < 1e-300, T(1e-300), s2_raw);                      // std::max(s2_raw, 1e-300)
+  const T aD = fabs(D), wD = w2 * aD;
+  // One division: 1/(w²|D| (1 − z²) Σ), w²Σ = 1 + a²z²w².
+  const T inv = w2 / (wD * s2 * (1.0 + k.a2 * z2 * w2));
+  value = ((dw * dw - Wv) * s2 + (dz * dz - Zv) * wD) * inv;
+  scale = ((dw * dw + P * P + aD * (k.mu2 + k.K * w2)) * s2 +
+           (dz * dz + fabs(k.Q) + fabs(k.B) * z2 + fabs(k.A) * z2 * z2) * wD) *
+              inv +
+          k.mu2;
+}

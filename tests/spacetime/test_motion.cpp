@@ -135,7 +135,11 @@ TEST(Motion, FrameCompletedFromTheEventIsTheFullSample) {
   const MotionPtr motion = make_motion(paper_orbit_params(), m, paper_solver());
   const auto& sampled = static_cast<const SampledMotion&>(*motion);
   const size_t last = sampled.nodes().size() - 1;
-  for (double tau : {-10.0, -3.21, 0.0, 0.05, 17.777, motion->samples()[400].tau, 69.99, 70.0}) {
+  // (Also τ inside the interval before a hint, and at that interval's first node: the look-up's
+  // second shortcut, SampledMotion::interval.)
+  const auto& s = motion->samples();
+  for (double tau : {-10.0, -3.21, 0.0, 0.05, 17.777, s[400].tau, 69.99, 70.0, 0.5 * (s[399].tau + s[400].tau),
+                     s[399].tau, 0.5 * (s[0].tau + s[1].tau), 0.5 * (s[last - 1].tau + s[last].tau)}) {
     const MotionSample full = motion->at_proper_time(tau);
     for (size_t hint : {size_t{0}, size_t{1}, size_t{399}, size_t{400}, last - 1, last, last + 5}) {
       WorldlineEvent ev;
