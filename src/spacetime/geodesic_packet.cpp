@@ -285,17 +285,29 @@ void rk_attempt(SolverKind kind, const MetricKernel& m, unsigned lanes, const La
   });
 }
 
+/// The coefficients of Carter's equations (KerrMinoCoeffs) of the lanes l … l + SimdD::lanes() − 1.
+HWY_INLINE KerrMinoCoeffs<SimdD> mino_coeffs_at(const MinoLaneCoeffs& c, size_t l) {
+  using R = MinoLaneCoeffs;
+  auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
+  return {at(R::M), at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
+          at(R::MU2), at(R::C), at(R::K), at(R::A), at(R::B)};
+}
+
+/// The lanes l … l + SimdD::lanes() − 1 whose rays can pass through the polar axis (L = 0).
+HWY_INLINE SimdMask mino_axis_at(const MinoLaneCoeffs& c, size_t l) {
+  const SimdTag d;
+  return {hn::Ne(SimdD::load(c.v[MinoLaneCoeffs::AXIS] + l).v, hn::Zero(d))};
+}
+
 /// kerr_mino_rhs (kerr_mino.h) on every lane: the Mino-time right-hand side, SoA (KerrMinoRHS's
 /// components, kPacketLanes per row).
 HWY_INLINE void mino_rhs_lanes(const MinoLaneCoeffs& c, const double* y, double* dy) {
   using R = MinoLaneCoeffs;
   constexpr int N = KerrMinoRHS::N, W = kPacketLanes;
-  const SimdTag d;
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
     auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
-    KerrMinoCoeffs<SimdD> k{at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
-                            at(R::MU2), at(R::C),      at(R::K),  at(R::A), at(R::B)};
-    const SimdMask axis{hn::Ne(at(R::AXIS).v, hn::Zero(d))};
+    const KerrMinoCoeffs<SimdD> k = mino_coeffs_at(c, l);
+    const SimdMask axis = mino_axis_at(c, l);
     SimdD ys[N], dys[N];
     for (int i = 0; i < N; ++i) ys[i] = SimdD::load(y + i * W + l);
     HWY_NAMESPACE::kerr_mino_rhs(k, axis, at(R::POLE), ys, dys);  // this target's copy
@@ -330,9 +342,8 @@ void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, 
   const size_t L = SimdD::lanes();
   for (size_t l = 0; l < static_cast<size_t>(W); l += L) {
     auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
-    KerrMinoCoeffs<SimdD> k{at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
-                            at(R::MU2), at(R::C),      at(R::K),  at(R::A), at(R::B)};
-    const SimdMask axis{hn::Ne(at(R::AXIS).v, hn::Zero(d))};
+    const KerrMinoCoeffs<SimdD> k = mino_coeffs_at(c, l);
+    const SimdMask axis = mino_axis_at(c, l);
     const SimdMask active{hn::Ne(SimdD::load(out.active + l).v, hn::Zero(d))};
     SimdD ys[N], dys[N];
     for (int i = 0; i < N; ++i) {
@@ -383,7 +394,7 @@ unsigned mino_valid(const MinoLaneCoeffs& c, const double* y, unsigned lanes) {
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
     auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
     const SimdD w = SimdD::load(y + I::W * W + l), zeta = SimdD::load(y + I::Z * W + l), pole = at(R::POLE);
-    const SimdMask axis{hn::Ne(at(R::AXIS).v, hn::Zero(d))};
+    const SimdMask axis = mino_axis_at(c, l);
     const SimdMask near_pole = fabs(pole + zeta) <= SimdD(1.0 + 1e-3);  // PolarOffset::z
     const SimdMask off_axis = -zeta * (2.0 * pole + zeta) > SimdD(0.0);  // PolarOffset::sin2
     const SimdMask ok =
@@ -410,8 +421,7 @@ unsigned mino_constraint(const MinoLaneCoeffs& c, const double* y, double escape
   unsigned bits = 0;
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
     auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
-    KerrMinoCoeffs<SimdD> k{at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
-                            at(R::MU2), at(R::C),      at(R::K),  at(R::A), at(R::B)};
+    const KerrMinoCoeffs<SimdD> k = mino_coeffs_at(c, l);
     SimdD ys[4];
     for (int i = 0; i < 4; ++i) ys[i] = SimdD::load(y + i * W + l);
     SimdD v, s;

@@ -281,30 +281,34 @@ TEST(GeodesicPacket, MetricsWithSimdAcceleration) {
 // ray where the scalar test does: with a tolerance so tight that some rays of the fan stop on it
 // and others do not (the loosest of 10^-3 … 10^-14 where the scalar integrator stops some but not
 // all), every ray's steps and stop agree to the bit.
-TEST(GeodesicPacket, ConstraintStopsAsTheScalarIntegrator) {
-  for (const char* name : {"EddFinkIn", "KerrBL", "MorrisThorne", "KastorTraschen", "PainleveGullstrand"}) {
-    SCOPED_TRACE(name);
-    const auto m = make_metric(name);
-    SolverConfig cfg = packet_config();
-    const auto y0 = fan(*m, 16);
-    auto constraint_stops = [&] {
-      int n = 0;
-      for (const auto& ys : y0) {
-        double y[8];
-        std::copy(ys.begin(), ys.end(), y);
-        if (m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {}).reason == StopReason::Constraint) ++n;
-      }
-      return n;
-    };
-    int stops = 0;
-    for (cfg.constraint_tol = 1e-3; cfg.constraint_tol > 1e-15; cfg.constraint_tol *= 0.1) {
-      stops = constraint_stops();
-      if (stops > 0) break;
+static void expect_constraint_stops_as_scalar(const char* name, bool separable, double tol_floor) {
+  SCOPED_TRACE(name);
+  const auto m = make_metric(name);
+  SolverConfig cfg = packet_config();
+  cfg.separable = separable;
+  const auto y0 = fan(*m, 16);
+  auto constraint_stops = [&] {
+    int n = 0;
+    for (const auto& ys : y0) {
+      double y[8];
+      std::copy(ys.begin(), ys.end(), y);
+      if (m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {}).reason == StopReason::Constraint) ++n;
     }
-    ASSERT_GT(stops, 0);
-    ASSERT_LT(stops, static_cast<int>(y0.size())) << "constraint_tol " << cfg.constraint_tol;
-    for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0); });
+    return n;
+  };
+  int stops = 0;
+  for (cfg.constraint_tol = 1e-3; cfg.constraint_tol > tol_floor; cfg.constraint_tol *= 0.1) {
+    stops = constraint_stops();
+    if (stops > 0) break;
   }
+  ASSERT_GT(stops, 0);
+  ASSERT_LT(stops, static_cast<int>(y0.size())) << "constraint_tol " << cfg.constraint_tol;
+  for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0); });
+}
+
+TEST(GeodesicPacket, ConstraintStopsAsTheScalarIntegrator) {
+  for (const char* name : {"EddFinkIn", "KerrBL", "MorrisThorne", "KastorTraschen", "PainleveGullstrand"})
+    expect_constraint_stops_as_scalar(name, false, 1e-15);
 }
 
 // The same through Carter's separated equations in Mino time: the packet tests validity and the
@@ -313,30 +317,7 @@ TEST(GeodesicPacket, ConstraintStopsAsTheScalarIntegrator) {
 // KerrMinoSystem::constraint stops it (a tolerance at which some rays of the fan stop and others
 // do not, as above).
 TEST(GeodesicPacket, MinoTimeConstraintStopsAsTheScalarIntegrator) {
-  for (const char* name : {"KerrBL", "Schwarzschild"}) {
-    SCOPED_TRACE(name);
-    const auto m = make_metric(name);
-    SolverConfig cfg = packet_config();
-    cfg.separable = true;
-    const auto y0 = fan(*m, 16);
-    auto constraint_stops = [&] {
-      int n = 0;
-      for (const auto& ys : y0) {
-        double y[8];
-        std::copy(ys.begin(), ys.end(), y);
-        if (m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {}).reason == StopReason::Constraint) ++n;
-      }
-      return n;
-    };
-    int stops = 0;
-    for (cfg.constraint_tol = 1e-3; cfg.constraint_tol > 1e-17; cfg.constraint_tol *= 0.1) {
-      stops = constraint_stops();
-      if (stops > 0) break;
-    }
-    ASSERT_GT(stops, 0);
-    ASSERT_LT(stops, static_cast<int>(y0.size())) << "constraint_tol " << cfg.constraint_tol;
-    for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0); });
-  }
+  for (const char* name : {"KerrBL", "Schwarzschild"}) expect_constraint_stops_as_scalar(name, true, 1e-17);
 }
 
 // The diagonal metrics on SIMD lanes (diagonal_metric_accel.h) with parameters away from the
