@@ -232,10 +232,16 @@ std::pair<int, int> parse_res(const std::string& s) {
   return {int(wi), int(hi)};
 }
 
+/// Writes `text` to stderr in one stdio call. The progress line of a finished frame is printed by
+/// the render session's worker thread while this thread checks and submits the next frames; one
+/// call holds the stream's lock for the whole text, a chain of << does not (a line of one thread
+/// was cut apart by a line of the other).
+void print_err(const std::string& text) { std::fputs(text.c_str(), stderr); }
+
 /// Prints new warnings once (a camera is rebuilt for every frame and would repeat its own).
 void print_warnings(Diagnostics& diag, bool quiet, std::set<std::string>& printed) {
   for (const auto& w : diag.warnings())
-    if (printed.insert(w).second && !quiet) std::cerr << w << "\n";
+    if (printed.insert(w).second && !quiet) print_err(w + "\n");
   diag.clear();
 }
 
@@ -342,7 +348,8 @@ bool frame_is_complete(const std::string& path, int frame, const std::vector<Fra
     const ResumeCheck c = check_resume(eye_path(path, fj.eye), fj.job.camera->width(), fj.job.camera->height(),
                                        frame_description(settings, frame, fj.eye));
     if (c.skip) continue;
-    if (!c.why.empty() && !quiet) std::cerr << "--resume: frame " << frame << " is rendered again: " << c.why << "\n";
+    if (!c.why.empty() && !quiet)
+      print_err("--resume: frame " + std::to_string(frame) + " is rendered again: " + c.why + "\n");
     return false;
   }
   return true;
@@ -352,12 +359,14 @@ bool frame_is_complete(const std::string& path, int frame, const std::vector<Fra
 /// --resume) and returns 128 + the signal.
 int report_interrupted(const RenderInterrupted& e, int signal_number, int frame, int frames_written,
                        const std::string& checkpoint) {
-  std::cerr << "geovis: " << e.what() << ", nothing written";
+  std::ostringstream msg;
+  msg << "geovis: " << e.what() << ", nothing written";
   if (!checkpoint.empty() && fs::exists(checkpoint))
-    std::cerr << "; the finished tiles are in \"" << checkpoint << "\" (--resume continues from them)";
+    msg << "; the finished tiles are in \"" << checkpoint << "\" (--resume continues from them)";
   if (frames_written > 0)
-    std::cerr << " (frame " << frame << "; the " << frames_written << " frame(s) before it are complete)";
-  std::cerr << "\n";
+    msg << " (frame " << frame << "; the " << frames_written << " frame(s) before it are complete)";
+  msg << "\n";
+  print_err(msg.str());
   return 128 + (signal_number > 0 ? signal_number : SIGINT);
 }
 
@@ -384,7 +393,7 @@ void submit_frame_image(TileRenderSession& session, const RenderArgs& a, const s
   std::string notes;
   const std::string label = "frame " + std::to_string(frame) + (fj.eye.empty() ? "" : " " + fj.eye) + " -> " + img;
   session.submit(frame, eye, fj.job, label, ckpt, &notes);
-  if (!quiet) std::cerr << notes;
+  if (!quiet) print_err(notes);
 }
 
 /// --tile-stats: one CSV line per rendered tile; with --verbose under MPI, each rank's busy CPU time.
@@ -561,23 +570,25 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
     // Data files first, the image last: an existing image means a complete frame (--resume).
     if (!fj.data_files_wanted.empty()) {
       const std::string written = write_filter_data(img, fj.job.filter, r.image.width, r.image.height, r.data);
-      if (verbose && !written.empty()) std::cerr << "  data: " << written << "\n";
+      if (verbose && !written.empty()) print_err("  data: " + written + "\n");
     }
     if (!r.data.empty()) {
       data_info.frame = p.frame;
       const std::string written = write_data_exr(img, fj.job, r.image, r.data, data_info);
-      if (verbose) std::cerr << "  data: " << written << "\n";
+      if (verbose) print_err("  data: " + written + "\n");
     }
     write_image(img, r.image, 8, frame_description(settings, p.frame, fj.eye));
     if (rendered_image.checkpoint) rendered_image.checkpoint->remove();
     if (verbose) {
-      std::cerr << "  " << img << ": tiles: " << rendered_image.tiles_rendered << " rendered, "
-                << rendered_image.tiles_restored << " restored from the checkpoint";
+      std::ostringstream msg;
+      msg << "  " << img << ": tiles: " << rendered_image.tiles_rendered << " rendered, "
+          << rendered_image.tiles_restored << " restored from the checkpoint";
       if (mpi)
-        std::cerr << "; " << rendered_image.later_tiles_started
-                  << " tiles of later images were handed out before its last tile was done";
-      std::cerr << "\n  " << r.stats.rays << " rays, " << r.stats.steps << " steps, " << r.stats.rhs_evals
-                << " right-hand-side evaluations, " << r.stats.seconds << " s\n";
+        msg << "; " << rendered_image.later_tiles_started
+            << " tiles of later images were handed out before its last tile was done";
+      msg << "\n  " << r.stats.rays << " rays, " << r.stats.steps << " steps, " << r.stats.rhs_evals
+          << " right-hand-side evaluations, " << r.stats.seconds << " s\n";
+      print_err(msg.str());
     }
     if (p.eye + 1 == p.jobs->size()) ++rendered;
     return std::nullopt;
@@ -591,7 +602,7 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
     print_warnings(diag, quiet, printed);
     if (a.resume && frame_is_complete(path, f, *jobs, settings, quiet)) {
       ++skipped;
-      if (verbose) std::cerr << "frame " << f << ": " << path << " is complete, skipped (--resume)\n";
+      if (verbose) print_err("frame " + std::to_string(f) + ": " + path + " is complete, skipped (--resume)\n");
       continue;
     }
     for (size_t eye = 0; eye < jobs->size(); ++eye) {
@@ -614,7 +625,8 @@ int run_render(const RenderArgs& a, const GlobalOptions& g, MpiContext* mpi) {
     if (const std::optional<int> rc = write_oldest()) return *rc;
   if (dispatcher) dispatcher->finish();
   report_tiles(a, session, verbose, mpi != nullptr);
-  if (!quiet && a.resume) std::cerr << rendered << " frame(s) rendered, " << skipped << " skipped (already on disk)\n";
+  if (!quiet && a.resume)
+    print_err(std::to_string(rendered) + " frame(s) rendered, " + std::to_string(skipped) + " skipped (already on disk)\n");
 
   if (!a.movie.empty()) {
     // A stereo sequence becomes the movie of the left eye.
