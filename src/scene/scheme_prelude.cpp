@@ -13,6 +13,28 @@ namespace geovis::scheme_detail {
 const char* const kPreludeSource = R"SCM(
 (use-modules (system syntax) (system vm vm) (ice-9 sandbox))
 
+;; Guile 3.0's list->typed-array (and list->array, which calls it in C) crashes the process with a
+;; segmentation fault while raising its own out-of-range error when its shape is an integer rank
+;; below 0 or beyond 64 bits; the reader makes that call for an array literal such as
+;; #55555555555555555555(1 2), which the fuzzer put into a scene (fuzz_smoke). The guarded versions
+;; raise the error themselves. Set in (guile), so that the reader (ice-9 read), the sandbox's copies
+;; of the bindings and trusted scenes all call them.
+(let ((guile (resolve-module '(guile))))
+  (define (check-rank who shape)
+    (when (and (exact-integer? shape) (not (<= 0 shape most-positive-fixnum)))
+      (scm-error 'out-of-range who "array rank out of range (0 to ~a): ~a"
+                 (list most-positive-fixnum shape) (list shape))))
+  (let ((list->typed-array (module-ref guile 'list->typed-array))
+        (list->array (module-ref guile 'list->array)))
+    (module-set! guile 'list->typed-array
+                 (lambda (type shape lst)
+                   (check-rank "list->typed-array" shape)
+                   (list->typed-array type shape lst)))
+    (module-set! guile 'list->array
+                 (lambda (shape lst)
+                   (check-rank "list->array" shape)
+                   (list->array shape lst)))))
+
 ;; ---------------------------------------------------------------------------------------------
 ;; Constants and helpers of GeoViS Parser/init.scm (catalogue §1).
 (define gpObjTypeLocal 0)     ; object given in a local (tetrad) frame, wrapped by local-comp-object
@@ -137,9 +159,22 @@ const char* const kPreludeSource = R"SCM(
                 form)))
         form)))
 
+;; Skips white space and ; comments, so that the port's line is that of the next form: an error
+;; the reader raises without a location of its own (the array-rank guard above) names that line.
+(define (%gv-skip-blank port)
+  (let ((c (peek-char port)))
+    (cond ((eof-object? c))
+          ((char-whitespace? c) (read-char port) (%gv-skip-blank port))
+          ((eqv? c #\;)
+           (let drop ((c (read-char port)))
+             (unless (or (eof-object? c) (eqv? c #\newline)) (drop (read-char port))))
+           (%gv-skip-blank port)))))
+
 (define (%gv-eval-port port)
   (%gv-fold-case! port)
   (let loop ()
+    (%gv-skip-blank port)
+    (%gv-set-form-line! (+ 1 (port-line port)))
     (let ((form (read-syntax port)))
       (unless (eof-object? form)
         (set! %gv-current-form form)
