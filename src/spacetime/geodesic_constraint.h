@@ -45,13 +45,16 @@ GEOVIS_HOT_INLINE void geodesic_constraint(const Mat4T<T>& g, const Vec4T<T>& k,
   const auto diagonal = b1 == T(0.0) && b2 == T(0.0) && b3 == T(0.0);
   // α² = −g_00
   if (!none_of(diagonal)) h = select(diagonal && g[0][0] < T(0.0), s - 2.0 * g[0][0] * k[0] * k[0], h);
-  if (!all_of(diagonal)) {
-    // γ positive definite (Sylvester) and α² = β^T adj(γ) β / det γ − g_00.
+  // γ positive definite (Sylvester: g_11 > 0, its 2×2 and 3×3 minors > 0) and
+  // α² = β^T adj(γ) β / det γ − g_00; the minors only where g_11 > 0 on some lane (not in
+  // EddFinkIn, whose g_11 = 0: the null coordinate v).
+  const auto g11_positive = !diagonal && g[1][1] > T(0.0);
+  if (!none_of(g11_positive)) {
     const T g11 = g[1][1], g12 = g[1][2], g13 = g[1][3], g22 = g[2][2], g23 = g[2][3], g33 = g[3][3];
     const T c11 = g22 * g33 - g23 * g23, c12 = g13 * g23 - g12 * g33, c13 = g12 * g23 - g13 * g22;
     const T c22 = g11 * g33 - g13 * g13, c23 = g12 * g13 - g11 * g23, c33 = g11 * g22 - g12 * g12;
     const T det = g11 * c11 + g12 * c12 + g13 * c13;
-    const auto slicing = !diagonal && g11 > T(0.0) && c33 > T(0.0) && det > T(0.0);
+    const auto slicing = g11_positive && c33 > T(0.0) && det > T(0.0);
     if (!none_of(slicing)) {
       const T q = b1 * (c11 * b1 + c12 * b2 + c13 * b3) + b2 * (c12 * b1 + c22 * b2 + c23 * b3) +
                   b3 * (c13 * b1 + c23 * b2 + c33 * b3);

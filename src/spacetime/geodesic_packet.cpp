@@ -115,33 +115,47 @@ namespace HWY_NAMESPACE {
 ///   stage s: tmp_i = y_i + h·(((0 + a_s0 k_0i) + a_s1 k_1i) + …)   (non-zero a, i < kCoupled)
 ///   y1_i = y_i + h·Σ_j b_j k_ji,   e_i = h·Σ_j e_j k_ji
 ///   (DOP853: e_i = Σ_j e5_j k_ji, e3_i = Σ_j e3_j k_ji, without h).
-template <class Tab, int N, int kCoupled, class Rhs>
+/// A system whose first M components have the derivatives dy_i = y_{M+i} (kVelocityRows = M; the
+/// geodesic system: dx^μ/dλ = k^μ, M = 4) gets only the other rows from rhs (called with the stage
+/// state and the stage's k_j, rows M… to fill); for rows i < M the sums read k_ji = y_{M+i} from
+/// the stage state itself (the values rhs would have copied there, so the same bits) — no copy per
+/// stage, and one store-to-load round trip less between a stage's velocity and the next stage's
+/// position. dy holds all N rows (k_0).
+template <class Tab, int N, int kCoupled, int kVelocityRows = 0, class Rhs>
 HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* dy, const double* h, double* y1,
                                  double* e, double* e3, double* dy1) {
-  constexpr int S = Tab::S, W = kPacketLanes;
+  constexpr int S = Tab::S, W = kPacketLanes, M = kVelocityRows;
+  static_assert(M == 0 || (2 * M <= kCoupled && kCoupled == N));
   const SimdTag d;
   const size_t L = hn::Lanes(d);
   HWY_ALIGN double k[S][N * W];
   std::memcpy(k[0], dy, sizeof k[0]);
-  HWY_ALIGN double tmp[N * W];
-  if constexpr (kCoupled < N) std::memcpy(tmp + kCoupled * W, y + kCoupled * W, (N - kCoupled) * W * sizeof(double));
+  // The stage states: one per stage where their velocity rows stand in for k_j's first M rows.
+  HWY_ALIGN double tmp[M > 0 ? S : 1][N * W];
+  auto stage_state = [&](int st) -> double* { return tmp[M > 0 ? st : 0]; };
+  // Row i of k_j.
+  auto k_row = [&](int j, int i) -> const double* {
+    return M > 0 && j > 0 && i < M ? stage_state(j) + (M + i) * W : k[j] + i * W;
+  };
+  if constexpr (kCoupled < N) std::memcpy(tmp[0] + kCoupled * W, y + kCoupled * W, (N - kCoupled) * W * sizeof(double));
   // clang-format off
   [&]<int... s>(std::integer_sequence<int, s...>) {
     ([&] {
       constexpr int st = s + 1;
+      double* const state = stage_state(st);
       for (size_t l = 0; l < static_cast<size_t>(W); l += L) {
         const SimdD hv = SimdD::load(h + l);
         for (int i = 0; i < kCoupled; ++i) {
           SimdD acc(0.0);
           [&]<int... j>(std::integer_sequence<int, j...>) {
             ([&] {
-              if constexpr (Tab::a[st][j] != 0.0) acc = acc + SimdD(Tab::a[st][j]) * SimdD::load(k[j] + i * W + l);
+              if constexpr (Tab::a[st][j] != 0.0) acc = acc + SimdD(Tab::a[st][j]) * SimdD::load(k_row(j, i) + l);
             }(), ...);
           }(std::make_integer_sequence<int, st>{});
-          (SimdD::load(y + i * W + l) + hv * acc).store(tmp + i * W + l);
+          (SimdD::load(y + i * W + l) + hv * acc).store(state + i * W + l);
         }
       }
-      rhs(tmp, k[st]);
+      rhs(state, k[st]);
     }(), ...);
   }(std::make_integer_sequence<int, S - 1>{});
   for (size_t l = 0; l < static_cast<size_t>(W); l += L) {
@@ -150,7 +164,7 @@ HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* 
       SimdD ab(0.0), ae(0.0), ae3(0.0);
       [&]<int... j>(std::integer_sequence<int, j...>) {
         ([&] {
-          const SimdD kj = SimdD::load(k[j] + i * W + l);
+          const SimdD kj = SimdD::load(k_row(j, i) + l);
           if constexpr (Tab::b[j] != 0.0) ab = ab + SimdD(Tab::b[j]) * kj;
           if constexpr (kCombinedEstimate<Tab>) {
             if constexpr (Tab::e5[j] != 0.0) ae = ae + SimdD(Tab::e5[j]) * kj;
@@ -170,7 +184,10 @@ HWY_INLINE void rk_attempt_lanes(const Rhs& rhs, const double* y, const double* 
       }
     }
   }
-  if constexpr (Tab::kFsal) std::memcpy(dy1, k[S - 1], sizeof k[S - 1]);
+  if constexpr (Tab::kFsal) {
+    std::memcpy(dy1, stage_state(S - 1) + M * W, M * W * sizeof(double));
+    std::memcpy(dy1 + M * W, k[S - 1] + M * W, (N - M) * W * sizeof(double));
+  }
 }
 
 /// ErrorScale::norm of the estimate e on every lane: max_i |e_i|/D_i and NaN where an e_i is NaN,
@@ -279,8 +296,10 @@ void rk_attempt(SolverKind kind, const MetricKernel& m, unsigned lanes, const La
   with_packet_tableau(kind, [&]<class Tab>() {
     HWY_ALIGN double e[kDim * kPacketLanes];
     HWY_ALIGN double e3[kCombinedEstimate<Tab> ? kDim * kPacketLanes : 1];
-    rk_attempt_lanes<Tab, kDim, kDim>([&](const double* yy, double* dyy) { packet_rhs(m, yy, dyy, lanes); }, y, dy, h,
-                                      y1, e, e3, dy1);
+    // dx/dλ = k: rk_attempt_lanes reads it from the stage states; the metric gives dk/dλ.
+    rk_attempt_lanes<Tab, kDim, kDim, 4>(
+        [&](const double* yy, double* dyy) { m.packet_acceleration(yy, dyy + 4 * kPacketLanes, lanes); }, y, dy, h, y1,
+        e, e3, dy1);
     attempt_error_lanes<Tab, kDim>(tol, y, y1, e, e3, h, err);
   });
 }
