@@ -524,6 +524,21 @@ unsigned inside_box_lanes(const double* box, const double* y) {
   return bits;
 }
 
+/// to = from on the lanes in `lanes` (bit l: lane l) of `rows` rows of kPacketLanes doubles (SoA),
+/// the other lanes of `to` kept: the accepted steps' ends become the lanes' states, a vector at a
+/// time instead of lane by lane (8 scalar copies per row, ~130 instructions per lane and step
+/// for y and dy in the driver's accept loop: callgrind on fallEddFinkIn, issue 13).
+void copy_lanes(unsigned lanes, const double* from, double* to, int rows) {
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const uint8_t bits = static_cast<uint8_t>(lanes >> l);
+    const SimdMask on{hn::LoadMaskBits(d, &bits)};
+    for (int i = 0; i < rows; ++i)
+      select(on, SimdD::load(from + i * W + l), SimdD::load(to + i * W + l)).store(to + i * W + l);
+  }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -538,6 +553,7 @@ HWY_EXPORT(mino_tolerance);
 HWY_EXPORT(mino_end_views);
 HWY_EXPORT(accepted_step_control);
 HWY_EXPORT(inside_box_lanes);
+HWY_EXPORT(copy_lanes);
 HWY_EXPORT(mino_valid);
 HWY_EXPORT(mino_constraint);
 
@@ -572,6 +588,8 @@ struct Lane {
 ///   tolerance_inv(eps_abs, eps_rel, y, inv)   for a system with tolerance scales of its own: the
 ///                                       1/D_i of set_tolerance at state y on every lane (SoA);
 ///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
+///   steps(PacketSteps), batch_steps() (optional)   the accepted steps of a round at once instead of
+///                                       step, where batch_steps() (returns the lanes to stop);
 ///   before_steps(lanes, y, y1, dy1) (optional)   once per round, before the steps of the accepted
 ///                                       lanes (bits of `lanes`: y → y1) are handed to step;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies;
@@ -598,6 +616,13 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // (PS::inside_lanes); it must not change a state between the test and the step (rebase).
   constexpr bool kLaneInside = requires(PS& p, const double* yy) { p.inside_lanes(cfg, yy); };
   static_assert(!kLaneInside || !requires(double* yy) { ps.rebase(0, yy); });
+  // A packet system that can hand the accepted steps of a round on at once (PS::steps, where its
+  // caller takes them so: PS::batch_steps), without a StepView per lane; its states need no
+  // re-basing and its affine parameter is the integrator's.
+  constexpr bool kBatch = requires(PS& p, const PacketSteps& s) { p.steps(s); };
+  static_assert(!kBatch || (!kOwnAffine && !requires(double* yy) { ps.rebase(0, yy); }));
+  bool batch_steps = false;
+  if constexpr (kBatch) batch_steps = ps.batch_steps();
   // Whether an accepted state may change before it is taken (reproject, project_invariants,
   // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it.
   bool accepted_states_change = true;
@@ -856,48 +881,79 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     // every accepted lane (err and root: attempt_err's ln.err, ln.root; hstep = |hv|), taken below
     // by those that go on. A lane that stops here is refilled with a fresh controller or stays idle.
     if (adaptive) HWY_DYNAMIC_DISPATCH(accepted_step_control)(accepted, hv, attempt_err.err, attempt_err.root, ctl);
-    for (int l = 0; l < W; ++l) {
-      if (!(accepted >> l & 1u)) continue;
+    ready &= ~accepted;
+    // The accepted lanes whose constraint holds take their step (`stepping`): its index and λ at
+    // both ends; the others stop below, at the state before it.
+    unsigned stepping = 0;
+    double lambda0[W], lambda1[W];
+    int step_index[W];
+    for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
       Lane<Tab, N>& ln = lane[l];
-      auto& sys = ps.system(l);
-      ready &= ~(1u << l);
       if (need_dy1 >> l & 1u) ++ln.res.rhs_evals;
-      double yl[N], yl1[N], dyl[N], dyl1[N];
-      get(y, l, yl);
-      get(y1, l, yl1);
-      get(dy, l, dyl);
-      get(dy1, l, dyl1);
       double c, scale;
       if constexpr (kLaneChecks) {
         c = checks.constraint[l];
         scale = checks.constraint_scale[l];
       } else {
-        sys.constraint(yl1, cfg.type, c, scale);
+        double yl1[N];
+        get(y1, l, yl1);
+        ps.system(l).constraint(yl1, cfg.type, c, scale);
       }
-      if (!(std::fabs(c) <= cfg.constraint_tol * scale)) {
+      if (!(std::fabs(c) <= cfg.constraint_tol * scale)) continue;
+      stepping |= 1u << l;
+      step_index[l] = ++ln.res.steps;
+      lambda0[l] = ln.lambda;
+      lambda1[l] = !kOwnAffine && ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
+    }
+    // The steps handed on (PS::step, or PS::steps a round at a time: no per-lane views to gather)
+    // and their ends taken as the lanes' states; `stopped`: the lanes whose callback stops the ray.
+    unsigned stopped = 0;
+    if (batch_steps) {
+      if constexpr (kBatch) stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, step_index});
+      HWY_DYNAMIC_DISPATCH(copy_lanes)(stepping, y1, y, N);
+      HWY_DYNAMIC_DISPATCH(copy_lanes)(stepping, dy1, dy, N);
+    } else {
+      for (unsigned todo = stepping; todo != 0; todo &= todo - 1) {
+        const int l = std::countr_zero(todo);
+        auto& sys = ps.system(l);
+        double yl[N], yl1[N], dyl[N], dyl1[N];
+        get(y, l, yl);
+        get(y1, l, yl1);
+        get(dy, l, dyl);
+        get(dy1, l, dyl1);
+        const StepAction act = ps.step(l, StepView{affine(sys, yl, lambda0[l]), affine(sys, yl1, lambda1[l]), yl, yl1,
+                                                   dyl, dyl1, N, step_index[l]});
+        if (act == StepAction::Stop) stopped |= 1u << l;
+        if constexpr (requires { ps.rebase(l, yl1); }) ps.rebase(l, yl1);
+        put(y, l, yl1);
+        put(dy, l, dyl1);
+      }
+    }
+    // The stops after the steps, and the rays that end here handed back (done, next) in the order
+    // of their lanes, as one lane after another would.
+    for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      Lane<Tab, N>& ln = lane[l];
+      if (!(stepping >> l & 1u)) {
         finish(l, StopReason::Constraint);
         refill(l);
         continue;
       }
-      ++ln.res.steps;
-      const double lambda1 = !kOwnAffine && ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
-      const StepAction act = ps.step(
-          l, StepView{affine(sys, yl, ln.lambda), affine(sys, yl1, lambda1), yl, yl1, dyl, dyl1, N, ln.res.steps});
-      if constexpr (requires { ps.rebase(l, yl1); }) ps.rebase(l, yl1);
-      put(y, l, yl1);
-      put(dy, l, dyl1);
-      ln.lambda = lambda1;
+      ln.lambda = lambda1[l];
       set_tolerance(l);
+      double yl1[N];  // lane l's new state, where a test or the step size needs it lane by lane
+      if constexpr (!kLaneChecks || !kLaneInside || kOwnAffine) get(y, l, yl1);
       StopReason stop = StopReason::None;
-      if (act == StepAction::Stop)
+      if (stopped >> l & 1u)
         stop = StopReason::Callback;
-      else if (kLaneInside ? !(inside >> l & 1u) : !sys.inside(cfg, yl1))
+      else if (kLaneInside ? !(inside >> l & 1u) : !ps.system(l).inside(cfg, yl1))
         stop = StopReason::BoundingBox;
       else if (ln.clipped)
         stop = StopReason::LambdaMax;
       else if (escaped(l, yl1, ln.res.escape_radius))
         stop = StopReason::Escaped;
-      else if (kLaneChecks ? (checks.captured >> l & 1u) != 0 : sys.captured(cfg, yl1))
+      else if (kLaneChecks ? (checks.captured >> l & 1u) != 0 : ps.system(l).captured(cfg, yl1))
         stop = StopReason::Invalid;
       if (stop != StopReason::None) {
         finish(l, stop);
@@ -905,7 +961,9 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         continue;
       }
       if (adaptive) ln.h = ctl.h_next[l];
-      if (!adaptive && kOwnAffine) ln.h = std::fabs(cfg.step_size) * per_affine(sys, yl1);
+      if constexpr (kOwnAffine) {
+        if (!adaptive) ln.h = std::fabs(cfg.step_size) * per_affine(ps.system(l), yl1);
+      }
       if (!ln.after_reject) ln.h_cross = 0.0;
       ln.after_reject = false;
       ctl.after_reject[l] = 0.0;
@@ -950,6 +1008,9 @@ struct CoordinatePacket {
     metric.packet_step_checks(c, y, lanes, out);
   }
   StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
+  /// The steps go to PacketRays::on_steps a round at a time where it is set.
+  bool batch_steps() const { return static_cast<bool>(rays.on_steps); }
+  unsigned steps(const PacketSteps& s) const { return rays.on_steps(s); }
   void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
 };
 
