@@ -524,18 +524,21 @@ unsigned inside_box_lanes(const double* box, const double* y) {
   return bits;
 }
 
-/// to = from on the lanes in `lanes` (bit l: lane l) of `rows` rows of kPacketLanes doubles (SoA),
-/// the other lanes of `to` kept: the accepted steps' ends become the lanes' states, a vector at a
-/// time instead of lane by lane (8 scalar copies per row, ~130 instructions per lane and step
-/// for y and dy in the driver's accept loop: callgrind on fallEddFinkIn, issue 13).
-void copy_lanes(unsigned lanes, const double* from, double* to, int rows) {
+/// y = y1 and dy = dy1 on the lanes in `lanes` (bit l: lane l) of `rows` rows of kPacketLanes
+/// doubles each (SoA), the other lanes kept: the accepted steps' ends become the lanes' states,
+/// a vector at a time (masked stores) instead of lane by lane (8 scalar copies per row, ~130
+/// instructions per lane and step for y and dy in the driver's accept loop: callgrind on
+/// fallEddFinkIn, issue 13).
+void take_step_ends(unsigned lanes, const double* y1, const double* dy1, double* y, double* dy, int rows) {
   constexpr int W = kPacketLanes;
   const SimdTag d;
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
     const uint8_t bits = static_cast<uint8_t>(lanes >> l);
-    const SimdMask on{hn::LoadMaskBits(d, &bits)};
-    for (int i = 0; i < rows; ++i)
-      select(on, SimdD::load(from + i * W + l), SimdD::load(to + i * W + l)).store(to + i * W + l);
+    const auto on = hn::LoadMaskBits(d, &bits);
+    for (int i = 0; i < rows; ++i) {
+      hn::BlendedStore(hn::Load(d, y1 + i * W + l), on, d, y + i * W + l);
+      hn::BlendedStore(hn::Load(d, dy1 + i * W + l), on, d, dy + i * W + l);
+    }
   }
 }
 
@@ -553,7 +556,7 @@ HWY_EXPORT(mino_tolerance);
 HWY_EXPORT(mino_end_views);
 HWY_EXPORT(accepted_step_control);
 HWY_EXPORT(inside_box_lanes);
-HWY_EXPORT(copy_lanes);
+HWY_EXPORT(take_step_ends);
 HWY_EXPORT(mino_valid);
 HWY_EXPORT(mino_constraint);
 
@@ -563,10 +566,9 @@ namespace {
 template <class Tab, int N>
 struct Lane {
   bool live = false;
-  double lambda = 0, h = 0, hstep = 0, h_cross = 0, err = 0;
+  double lambda = 0, h = 0, hstep = 0, h_cross = 0;
   double hmax = 0, hmin = 0, affine0 = 0, remaining = 0;
   int affine_retries = 0;
-  double root = 0;  ///< root_q(err) of the last attempt (AttemptError)
   bool after_reject = false, clipped = false;
   // ExplicitRK::control's state is the lane's h_old, q_old in the driver's PacketStepControl.
   GeodesicResult res;
@@ -780,15 +782,14 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       ln.res.rhs_evals += Tab::S - 1;
       double yl1[N];
       if (!kLaneChecks || kOwnAffine || accepted_states_change) get(y1, l, yl1);
-      ln.err = attempt_err.err[l];
-      ln.root = attempt_err.root[l];
+      const double err = attempt_err.err[l];
       const bool finite = attempt_err.finite >> l & 1u;
       bool in_domain;
       if constexpr (kLaneChecks)
         in_domain = valid >> l & 1u;
       else
         in_domain = finite && sys.valid(yl1);
-      if (!in_domain || (adaptive && !(ln.err <= 1.0))) {
+      if (!in_domain || (adaptive && !(err <= 1.0))) {
         ready &= ~(1u << l);
         if (!adaptive) {
           finish(l, finite ? StopReason::Invalid : StopReason::NotFinite);
@@ -806,7 +807,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         }
         ln.h =
             in_domain ? StepController<Tab::kErrExp>{ctl.h_old[l], ctl.q_old[l]}.next_with_root(
-                            ln.hstep, ln.err, ln.root, false, ln.after_reject)  // leaves h_old, q_old
+                            ln.hstep, err, attempt_err.root[l], false, ln.after_reject)  // leaves h_old, q_old
                       : 0.5 * ln.hstep;
         ln.after_reject = true;
         ctl.after_reject[l] = 1.0;
@@ -878,7 +879,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     };
     if constexpr (requires { ps.before_steps(accepted, y, y1, dy1); }) ps.before_steps(accepted, y, y1, dy1);
     // ln.h = min(hmax, max(control.next_with_root(hstep, err, root, true, after_reject), hmin)) of
-    // every accepted lane (err and root: attempt_err's ln.err, ln.root; hstep = |hv|), taken below
+    // every accepted lane (err and root: attempt_err's; hstep = |hv|), taken below
     // by those that go on. A lane that stops here is refilled with a fresh controller or stays idle.
     if (adaptive) HWY_DYNAMIC_DISPATCH(accepted_step_control)(accepted, hv, attempt_err.err, attempt_err.root, ctl);
     ready &= ~accepted;
@@ -911,8 +912,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     unsigned stopped = 0;
     if (batch_steps) {
       if constexpr (kBatch) stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, step_index});
-      HWY_DYNAMIC_DISPATCH(copy_lanes)(stepping, y1, y, N);
-      HWY_DYNAMIC_DISPATCH(copy_lanes)(stepping, dy1, dy, N);
+      HWY_DYNAMIC_DISPATCH(take_step_ends)(stepping, y1, dy1, y, dy, N);
     } else {
       for (unsigned todo = stepping; todo != 0; todo &= todo - 1) {
         const int l = std::countr_zero(todo);
