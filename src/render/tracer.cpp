@@ -542,10 +542,13 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
       const int l = std::countr_zero(todo);
       RayState& rs = lanes[l].rs;
       if (rs.have_prev) {
-        const RayState::ChordEnd e1{Vec3{}, radius[l] * radius[l], chart[l], false};
-        if (cull_.inside_empty_ball(rs.prev.chart, rs.prev.radius2, e1.chart, e1.radius2)) {
-          rs.prev = e1;
-          continue;
+        const double radius2 = radius[l] * radius[l];
+        if (cull_.inside_empty_ball(rs.prev.chart, rs.prev.radius2, chart[l], radius2)) {
+          // chord_end's end without its point (which is read only where have_p); the fields one by
+          // one: a whole ChordEnd built on the stack and copied cost a third of this path.
+          rs.prev.radius2 = radius2;
+          rs.prev.have_p = false;
+          continue;  // the chart is the same
         }
       }
       double views[4][8];
