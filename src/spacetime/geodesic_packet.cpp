@@ -622,7 +622,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // caller takes them so: PS::batch_steps), without a StepView per lane; its states need no
   // re-basing and its affine parameter is the integrator's.
   constexpr bool kBatch = requires(PS& p, const PacketSteps& s) { p.steps(s); };
-  static_assert(!kBatch || (!kOwnAffine && !requires(double* yy) { ps.rebase(0, yy); }));
+  static_assert(!kBatch || (!kOwnAffine && kLaneChecks && kLaneInside && !requires(double* yy) { ps.rebase(0, yy); }));
   bool batch_steps = false;
   if constexpr (kBatch) batch_steps = ps.batch_steps();
   // Whether an accepted state may change before it is taken (reproject, project_invariants,
@@ -720,6 +720,67 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       need_dy |= bit;
       return;
+    }
+  };
+
+  // The accepted steps of a round (bits of `accepted`; `need_dy1`, `checks`, `inside` as the
+  // round's loop below has them) where PS hands them on at once (kBatch, batch_steps): the same
+  // constraint test, step, stop tests and step size per lane as that loop, the steps handed on
+  // (PS::steps) and their ends taken as the lanes' states on SIMD lanes (take_step_ends) between
+  // the constraint and the other tests, with no lane's view gathered (~200 instructions per lane
+  // and step of gathers, copies and the per-lane callback on fallEddFinkIn: callgrind, issue 13).
+  // The rays that end are handed back (done, next) lane after lane, as there.
+  auto take_steps = [&](unsigned accepted, unsigned need_dy1, const PacketStepChecks& checks, unsigned inside) {
+    if constexpr (kBatch) {
+      ready &= ~accepted;
+      unsigned stepping = 0;  // the accepted lanes whose constraint holds: they take their step
+      double lambda0[W], lambda1[W];
+      int step_index[W];
+      for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
+        const int l = std::countr_zero(todo);
+        Lane<Tab, N>& ln = lane[l];
+        if (need_dy1 >> l & 1u) ++ln.res.rhs_evals;
+        if (!(std::fabs(checks.constraint[l]) <= cfg.constraint_tol * checks.constraint_scale[l])) continue;
+        stepping |= 1u << l;
+        step_index[l] = ++ln.res.steps;
+        lambda0[l] = ln.lambda;
+        lambda1[l] = ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
+      }
+      const unsigned stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, step_index});
+      HWY_DYNAMIC_DISPATCH(take_step_ends)(stepping, y1, dy1, y, dy, N);
+      for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
+        const int l = std::countr_zero(todo);
+        Lane<Tab, N>& ln = lane[l];
+        if (!(stepping >> l & 1u)) {
+          finish(l, StopReason::Constraint);
+          refill(l);
+          continue;
+        }
+        ln.lambda = lambda1[l];
+        set_tolerance(l);
+        StopReason stop = StopReason::None;
+        if (stopped >> l & 1u) {
+          stop = StopReason::Callback;
+        } else if (!(inside >> l & 1u)) {
+          stop = StopReason::BoundingBox;
+        } else if (ln.clipped) {
+          stop = StopReason::LambdaMax;
+        } else if (checks.escaped >> l & 1u) {
+          ln.res.escape_radius = checks.escape_radius[l];
+          stop = StopReason::Escaped;
+        } else if (checks.captured >> l & 1u) {
+          stop = StopReason::Invalid;
+        }
+        if (stop != StopReason::None) {
+          finish(l, stop);
+          refill(l);
+          continue;
+        }
+        if (adaptive) ln.h = ctl.h_next[l];
+        if (!ln.after_reject) ln.h_cross = 0.0;
+        ln.after_reject = false;
+        ctl.after_reject[l] = 0.0;
+      }
     }
   };
 
@@ -882,78 +943,55 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     // every accepted lane (err and root: attempt_err's; hstep = |hv|), taken below
     // by those that go on. A lane that stops here is refilled with a fresh controller or stays idle.
     if (adaptive) HWY_DYNAMIC_DISPATCH(accepted_step_control)(accepted, hv, attempt_err.err, attempt_err.root, ctl);
-    ready &= ~accepted;
-    // The accepted lanes whose constraint holds take their step (`stepping`): its index and λ at
-    // both ends; the others stop below, at the state before it.
-    unsigned stepping = 0;
-    double lambda0[W], lambda1[W];
-    int step_index[W];
-    for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
-      const int l = std::countr_zero(todo);
+    if constexpr (kBatch) {
+      if (batch_steps) {
+        take_steps(accepted, need_dy1, checks, inside);
+        continue;
+      }
+    }
+    // Else each step handed on lane by lane (PS::step, its view gathered).
+    for (int l = 0; l < W; ++l) {
+      if (!(accepted >> l & 1u)) continue;
       Lane<Tab, N>& ln = lane[l];
+      auto& sys = ps.system(l);
+      ready &= ~(1u << l);
       if (need_dy1 >> l & 1u) ++ln.res.rhs_evals;
+      double yl[N], yl1[N], dyl[N], dyl1[N];
+      get(y, l, yl);
+      get(y1, l, yl1);
+      get(dy, l, dyl);
+      get(dy1, l, dyl1);
       double c, scale;
       if constexpr (kLaneChecks) {
         c = checks.constraint[l];
         scale = checks.constraint_scale[l];
       } else {
-        double yl1[N];
-        get(y1, l, yl1);
-        ps.system(l).constraint(yl1, cfg.type, c, scale);
+        sys.constraint(yl1, cfg.type, c, scale);
       }
-      if (!(std::fabs(c) <= cfg.constraint_tol * scale)) continue;
-      stepping |= 1u << l;
-      step_index[l] = ++ln.res.steps;
-      lambda0[l] = ln.lambda;
-      lambda1[l] = !kOwnAffine && ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
-    }
-    // The steps handed on (PS::step, or PS::steps a round at a time: no per-lane views to gather)
-    // and their ends taken as the lanes' states; `stopped`: the lanes whose callback stops the ray.
-    unsigned stopped = 0;
-    if (batch_steps) {
-      if constexpr (kBatch) stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, step_index});
-      HWY_DYNAMIC_DISPATCH(take_step_ends)(stepping, y1, dy1, y, dy, N);
-    } else {
-      for (unsigned todo = stepping; todo != 0; todo &= todo - 1) {
-        const int l = std::countr_zero(todo);
-        auto& sys = ps.system(l);
-        double yl[N], yl1[N], dyl[N], dyl1[N];
-        get(y, l, yl);
-        get(y1, l, yl1);
-        get(dy, l, dyl);
-        get(dy1, l, dyl1);
-        const StepAction act = ps.step(l, StepView{affine(sys, yl, lambda0[l]), affine(sys, yl1, lambda1[l]), yl, yl1,
-                                                   dyl, dyl1, N, step_index[l]});
-        if (act == StepAction::Stop) stopped |= 1u << l;
-        if constexpr (requires { ps.rebase(l, yl1); }) ps.rebase(l, yl1);
-        put(y, l, yl1);
-        put(dy, l, dyl1);
-      }
-    }
-    // The stops after the steps, and the rays that end here handed back (done, next) in the order
-    // of their lanes, as one lane after another would.
-    for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
-      const int l = std::countr_zero(todo);
-      Lane<Tab, N>& ln = lane[l];
-      if (!(stepping >> l & 1u)) {
+      if (!(std::fabs(c) <= cfg.constraint_tol * scale)) {
         finish(l, StopReason::Constraint);
         refill(l);
         continue;
       }
-      ln.lambda = lambda1[l];
+      ++ln.res.steps;
+      const double lambda1 = !kOwnAffine && ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
+      const StepAction act = ps.step(
+          l, StepView{affine(sys, yl, ln.lambda), affine(sys, yl1, lambda1), yl, yl1, dyl, dyl1, N, ln.res.steps});
+      if constexpr (requires { ps.rebase(l, yl1); }) ps.rebase(l, yl1);
+      put(y, l, yl1);
+      put(dy, l, dyl1);
+      ln.lambda = lambda1;
       set_tolerance(l);
-      double yl1[N];  // lane l's new state, where a test or the step size needs it lane by lane
-      if constexpr (!kLaneChecks || !kLaneInside || kOwnAffine) get(y, l, yl1);
       StopReason stop = StopReason::None;
-      if (stopped >> l & 1u)
+      if (act == StepAction::Stop)
         stop = StopReason::Callback;
-      else if (kLaneInside ? !(inside >> l & 1u) : !ps.system(l).inside(cfg, yl1))
+      else if (kLaneInside ? !(inside >> l & 1u) : !sys.inside(cfg, yl1))
         stop = StopReason::BoundingBox;
       else if (ln.clipped)
         stop = StopReason::LambdaMax;
       else if (escaped(l, yl1, ln.res.escape_radius))
         stop = StopReason::Escaped;
-      else if (kLaneChecks ? (checks.captured >> l & 1u) != 0 : ps.system(l).captured(cfg, yl1))
+      else if (kLaneChecks ? (checks.captured >> l & 1u) != 0 : sys.captured(cfg, yl1))
         stop = StopReason::Invalid;
       if (stop != StopReason::None) {
         finish(l, stop);
@@ -961,9 +999,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         continue;
       }
       if (adaptive) ln.h = ctl.h_next[l];
-      if constexpr (kOwnAffine) {
-        if (!adaptive) ln.h = std::fabs(cfg.step_size) * per_affine(ps.system(l), yl1);
-      }
+      if (!adaptive && kOwnAffine) ln.h = std::fabs(cfg.step_size) * per_affine(sys, yl1);
       if (!ln.after_reject) ln.h_cross = 0.0;
       ln.after_reject = false;
       ctl.after_reject[l] = 0.0;
