@@ -1,6 +1,7 @@
 #include "render/tracer.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -526,6 +527,35 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
     return false;
   };
   auto on_step = [&](int lane, const StepView& st) { return test_step(lanes[lane].rs, st); };
+  // The steps of a round of the packet in the metric's coordinates: test_step of each lane's step,
+  // its common case first without the step's view — after a first step, a chord whose new end's
+  // radius (for all lanes at once: Metric::pseudo_cartesian_radii) puts it in the scene's empty
+  // ball is skipped (test_step_general's result and RayState::prev for it). The per-step virtual
+  // radius, the lane's gathered StepView and the call per lane and step were ~150 instructions per
+  // step on fallEddFinkIn, where nearly every chord lies in the empty ball (callgrind, issue 13).
+  auto on_steps = [&](const PacketSteps& steps) {
+    double radius[kPacketLanes];
+    int chart[kPacketLanes];
+    m.pseudo_cartesian_radii(steps.y1, steps.lanes, radius, chart);
+    unsigned stop = 0;
+    for (unsigned todo = steps.lanes; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      RayState& rs = lanes[l].rs;
+      if (rs.have_prev) {
+        const double radius2 = radius[l] * radius[l];
+        if (cull_.inside_empty_ball(rs.prev.chart, rs.prev.radius2, chart[l], radius2)) {
+          // chord_end's end without its point (which is read only where have_p); the fields one by
+          // one: a whole ChordEnd built on the stack and copied cost a third of this path.
+          rs.prev.radius2 = radius2;
+          rs.prev.have_p = false;
+          continue;  // the chart is the same
+        }
+      }
+      double views[4][8];
+      if (test_step(rs, steps.view(l, views)) == StepAction::Stop) stop |= 1u << l;
+    }
+    return stop;
+  };
   auto done = [&](int lane, const double* y, const GeodesicResult& gr) {
     const LaneRay& r = lanes[lane];
     TraceResult res = end_ray(GeodesicSystem::Geodesic, r.rs, r.k0, y, r.y_start, gr, stats);
@@ -533,7 +563,7 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
     colors[r.sample] = res.color;
     if (samples[r.sample].data) fill_data(res, *samples[r.sample].data);
   };
-  m.integrate_packet(cfg_, PacketRays{next_ray, on_step, done});
+  m.integrate_packet(cfg_, PacketRays{next_ray, on_step, done, on_steps});
 }
 
 Color Tracer::stop_color(StopReason reason) const {

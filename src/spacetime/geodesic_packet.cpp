@@ -543,6 +543,24 @@ unsigned inside_box_lanes(const double* box, const double* y) {
   return bits;
 }
 
+/// y = y1 and dy = dy1 on the lanes in `lanes` (bit l: lane l) of `rows` rows of kPacketLanes
+/// doubles each (SoA), the other lanes kept: the accepted steps' ends become the lanes' states,
+/// a vector at a time (masked stores) instead of lane by lane (8 scalar copies per row, ~130
+/// instructions per lane and step for y and dy in the driver's accept loop: callgrind on
+/// fallEddFinkIn, issue 13).
+void take_step_ends(unsigned lanes, const double* y1, const double* dy1, double* y, double* dy, int rows) {
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const uint8_t bits = static_cast<uint8_t>(lanes >> l);
+    const auto on = hn::LoadMaskBits(d, &bits);
+    for (int i = 0; i < rows; ++i) {
+      hn::BlendedStore(hn::Load(d, y1 + i * W + l), on, d, y + i * W + l);
+      hn::BlendedStore(hn::Load(d, dy1 + i * W + l), on, d, dy + i * W + l);
+    }
+  }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -557,6 +575,7 @@ HWY_EXPORT(mino_tolerance);
 HWY_EXPORT(mino_end_views);
 HWY_EXPORT(accepted_step_control);
 HWY_EXPORT(inside_box_lanes);
+HWY_EXPORT(take_step_ends);
 HWY_EXPORT(mino_valid);
 HWY_EXPORT(mino_constraint);
 
@@ -566,10 +585,9 @@ namespace {
 template <class Tab, int N>
 struct Lane {
   bool live = false;
-  double lambda = 0, h = 0, hstep = 0, h_cross = 0, err = 0;
+  double lambda = 0, h = 0, hstep = 0, h_cross = 0;
   double hmax = 0, hmin = 0, affine0 = 0, remaining = 0;
   int affine_retries = 0;
-  double root = 0;  ///< root_q(err) of the last attempt (AttemptError)
   bool after_reject = false, clipped = false;
   // ExplicitRK::control's state is the lane's h_old, q_old in the driver's PacketStepControl.
   GeodesicResult res;
@@ -591,6 +609,8 @@ struct Lane {
 ///   tolerance_inv(eps_abs, eps_rel, y, inv)   for a system with tolerance scales of its own: the
 ///                                       1/D_i of set_tolerance at state y on every lane (SoA);
 ///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
+///   steps(PacketSteps), batch_steps() (optional)   the accepted steps of a round at once instead of
+///                                       step, where batch_steps() (returns the lanes to stop);
 ///   before_steps(lanes, y, y1, dy1) (optional)   once per round, before the steps of the accepted
 ///                                       lanes (bits of `lanes`: y → y1) are handed to step;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies;
@@ -617,6 +637,13 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // (PS::inside_lanes); it must not change a state between the test and the step (rebase).
   constexpr bool kLaneInside = requires(PS& p, const double* yy) { p.inside_lanes(cfg, yy); };
   static_assert(!kLaneInside || !requires(double* yy) { ps.rebase(0, yy); });
+  // A packet system that can hand the accepted steps of a round on at once (PS::steps, where its
+  // caller takes them so: PS::batch_steps), without a StepView per lane; its states need no
+  // re-basing and its affine parameter is the integrator's.
+  constexpr bool kBatch = requires(PS& p, const PacketSteps& s) { p.steps(s); };
+  static_assert(!kBatch || (!kOwnAffine && kLaneChecks && kLaneInside && !requires(double* yy) { ps.rebase(0, yy); }));
+  bool batch_steps = false;
+  if constexpr (kBatch) batch_steps = ps.batch_steps();
   // Whether an accepted state may change before it is taken (reproject, project_invariants,
   // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it.
   bool accepted_states_change = true;
@@ -715,6 +742,67 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     }
   };
 
+  // The accepted steps of a round (bits of `accepted`; `need_dy1`, `checks`, `inside` as the
+  // round's loop below has them) where PS hands them on at once (kBatch, batch_steps): the same
+  // constraint test, step, stop tests and step size per lane as that loop, the steps handed on
+  // (PS::steps) and their ends taken as the lanes' states on SIMD lanes (take_step_ends) between
+  // the constraint and the other tests, with no lane's view gathered (~200 instructions per lane
+  // and step of gathers, copies and the per-lane callback on fallEddFinkIn: callgrind, issue 13).
+  // The rays that end are handed back (done, next) lane after lane, as there.
+  auto take_steps = [&](unsigned accepted, unsigned need_dy1, const PacketStepChecks& checks, unsigned inside) {
+    if constexpr (kBatch) {
+      ready &= ~accepted;
+      unsigned stepping = 0;  // the accepted lanes whose constraint holds: they take their step
+      double lambda0[W], lambda1[W];
+      int step_index[W];
+      for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
+        const int l = std::countr_zero(todo);
+        Lane<Tab, N>& ln = lane[l];
+        if (need_dy1 >> l & 1u) ++ln.res.rhs_evals;
+        if (!(std::fabs(checks.constraint[l]) <= cfg.constraint_tol * checks.constraint_scale[l])) continue;
+        stepping |= 1u << l;
+        step_index[l] = ++ln.res.steps;
+        lambda0[l] = ln.lambda;
+        lambda1[l] = ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
+      }
+      const unsigned stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, step_index});
+      HWY_DYNAMIC_DISPATCH(take_step_ends)(stepping, y1, dy1, y, dy, N);
+      for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
+        const int l = std::countr_zero(todo);
+        Lane<Tab, N>& ln = lane[l];
+        if (!(stepping >> l & 1u)) {
+          finish(l, StopReason::Constraint);
+          refill(l);
+          continue;
+        }
+        ln.lambda = lambda1[l];
+        set_tolerance(l);
+        StopReason stop = StopReason::None;
+        if (stopped >> l & 1u) {
+          stop = StopReason::Callback;
+        } else if (!(inside >> l & 1u)) {
+          stop = StopReason::BoundingBox;
+        } else if (ln.clipped) {
+          stop = StopReason::LambdaMax;
+        } else if (checks.escaped >> l & 1u) {
+          ln.res.escape_radius = checks.escape_radius[l];
+          stop = StopReason::Escaped;
+        } else if (checks.captured >> l & 1u) {
+          stop = StopReason::Invalid;
+        }
+        if (stop != StopReason::None) {
+          finish(l, stop);
+          refill(l);
+          continue;
+        }
+        if (adaptive) ln.h = ctl.h_next[l];
+        if (!ln.after_reject) ln.h_cross = 0.0;
+        ln.after_reject = false;
+        ctl.after_reject[l] = 0.0;
+      }
+    }
+  };
+
   for (int l = 0; l < W; ++l) refill(l);
   while (true) {
     // Every live lane set up for a trial step (the top of integrate_with's loop).
@@ -774,15 +862,14 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       ln.res.rhs_evals += Tab::S - 1;
       double yl1[N];
       if (!kLaneChecks || kOwnAffine || accepted_states_change) get(y1, l, yl1);
-      ln.err = attempt_err.err[l];
-      ln.root = attempt_err.root[l];
+      const double err = attempt_err.err[l];
       const bool finite = attempt_err.finite >> l & 1u;
       bool in_domain;
       if constexpr (kLaneChecks)
         in_domain = valid >> l & 1u;
       else
         in_domain = finite && sys.valid(yl1);
-      if (!in_domain || (adaptive && !(ln.err <= 1.0))) {
+      if (!in_domain || (adaptive && !(err <= 1.0))) {
         ready &= ~(1u << l);
         if (!adaptive) {
           finish(l, finite ? StopReason::Invalid : StopReason::NotFinite);
@@ -800,7 +887,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         }
         ln.h =
             in_domain ? StepController<Tab::kErrExp>{ctl.h_old[l], ctl.q_old[l]}.next_with_root(
-                            ln.hstep, ln.err, ln.root, false, ln.after_reject)  // leaves h_old, q_old
+                            ln.hstep, err, attempt_err.root[l], false, ln.after_reject)  // leaves h_old, q_old
                       : 0.5 * ln.hstep;
         ln.after_reject = true;
         ctl.after_reject[l] = 1.0;
@@ -872,9 +959,16 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     };
     if constexpr (requires { ps.before_steps(accepted, y, y1, dy1); }) ps.before_steps(accepted, y, y1, dy1);
     // ln.h = min(hmax, max(control.next_with_root(hstep, err, root, true, after_reject), hmin)) of
-    // every accepted lane (err and root: attempt_err's ln.err, ln.root; hstep = |hv|), taken below
+    // every accepted lane (err and root: attempt_err's; hstep = |hv|), taken below
     // by those that go on. A lane that stops here is refilled with a fresh controller or stays idle.
     if (adaptive) HWY_DYNAMIC_DISPATCH(accepted_step_control)(accepted, hv, attempt_err.err, attempt_err.root, ctl);
+    if constexpr (kBatch) {
+      if (batch_steps) {
+        take_steps(accepted, need_dy1, checks, inside);
+        continue;
+      }
+    }
+    // Else each step handed on lane by lane (PS::step, its view gathered).
     for (int l = 0; l < W; ++l) {
       if (!(accepted >> l & 1u)) continue;
       Lane<Tab, N>& ln = lane[l];
@@ -969,6 +1063,9 @@ struct CoordinatePacket {
     metric.packet_step_checks(c, y, lanes, out);
   }
   StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
+  /// The steps go to PacketRays::on_steps a round at a time where it is set.
+  bool batch_steps() const { return static_cast<bool>(rays.on_steps); }
+  unsigned steps(const PacketSteps& s) const { return rays.on_steps(s); }
   void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
 };
 

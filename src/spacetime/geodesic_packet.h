@@ -31,6 +31,31 @@ struct KerrMinoParams;
 /// Lanes of a packet: one AVX-512 vector of doubles, two AVX2 vectors, four SSE4 vectors.
 constexpr int kPacketLanes = 8;
 
+/// The accepted steps of one round of a packet in the metric's coordinates, all lanes at once in
+/// the packet's layout (component i of lane l at [i * kPacketLanes + l]): lane l's step is the
+/// StepView `view(l, ...)` gathers, the one PacketRays::on_step would be handed.
+struct PacketSteps {
+  unsigned lanes;  ///< bit l: lane l took a step (the other lanes' entries are undefined)
+  const double* y0;
+  const double* y1;
+  const double* dy0;
+  const double* dy1;      ///< the states (x, k) at both ends and their derivatives, 8 components each
+  const double* lambda0;  ///< per lane
+  const double* lambda1;
+  const int* step_index;  ///< per lane, 1 for the first accepted step
+
+  /// Lane l's step as a StepView, its four states gathered into `buf`.
+  StepView view(int l, double (&buf)[4][8]) const {
+    for (int i = 0; i < 8; ++i) {
+      buf[0][i] = y0[i * kPacketLanes + l];
+      buf[1][i] = y1[i * kPacketLanes + l];
+      buf[2][i] = dy0[i * kPacketLanes + l];
+      buf[3][i] = dy1[i * kPacketLanes + l];
+    }
+    return StepView{lambda0[l], lambda1[l], buf[0], buf[1], buf[2], buf[3], 8, step_index[l]};
+  }
+};
+
 /// Where a packet takes its rays from and hands them back; `lane` identifies the ray (0 ..
 /// kPacketLanes-1) from `next` until its `done`.
 struct PacketRays {
@@ -41,6 +66,11 @@ struct PacketRays {
   FunctionRef<StepAction(int lane, const StepView& step)> on_step;
   /// The ray in `lane` ended with final state y (8 components) and `result`.
   FunctionRef<void(int lane, const double* y, const GeodesicResult& result)> done;
+  /// May be empty. Where set, the packet in the metric's coordinates (integrate_geodesic_packet)
+  /// hands its accepted steps a round at a time here instead of to on_step, the same steps without
+  /// gathering each lane's StepView (the caller gathers those it needs: PacketSteps::view); returns
+  /// the lanes whose rays stop (on_step's StepAction::Stop). The Mino-time packet calls on_step.
+  FunctionRef<unsigned(const PacketSteps& steps)> on_steps;
 };
 
 /// Whether the packet integrator serves solver `kind` (the explicit embedded pairs that

@@ -265,6 +265,34 @@ void Metric::default_pseudo_cartesian_radius(const Vec4& x, double& radius, int&
   }
 }
 
+void Metric::default_pseudo_cartesian_radii(const double* x, double* radius, int* chart) const {
+  constexpr int W = kPacketLanes;
+  const double *x1 = x + W, *x2 = x + 2 * W, *x3 = x + 3 * W;
+  for (int l = 0; l < W; ++l) chart[l] = 0;
+  // The same operations per lane as default_pseudo_cartesian_radius, the coordinate type chosen
+  // once.
+  switch (info_.coord_type) {
+    case CoordType::Spherical:
+      for (int l = 0; l < W; ++l) radius[l] = std::fabs(x1[l]);
+      return;
+    case CoordType::Cylindrical:
+      for (int l = 0; l < W; ++l) radius[l] = std::hypot(x1[l], x3[l]);
+      return;
+    default:
+      for (int l = 0; l < W; ++l) radius[l] = std::sqrt(x1[l] * x1[l] + x2[l] * x2[l] + x3[l] * x3[l]);
+      return;
+  }
+}
+
+void Metric::pseudo_cartesian_radii(const double* x, unsigned lanes, double* radius, int* chart) const {
+  constexpr int W = kPacketLanes;
+  for (int l = 0; l < W; ++l) {
+    if (!(lanes >> l & 1u)) continue;
+    if (!pseudo_cartesian_radius(Vec4{{x[l], x[W + l], x[2 * W + l], x[3 * W + l]}}, radius[l], chart[l]))
+      chart[l] = -1;
+  }
+}
+
 bool Metric::pseudo_cartesian_jacobian(const Vec4& x, double J[3][3]) const {
   switch (info_.coord_type) {
     case CoordType::Spherical: {

@@ -19,6 +19,7 @@
 
 #include "spacetime/dual.h"
 #include "spacetime/geodesic.h"
+#include "spacetime/geodesic_packet.h"
 #include "spacetime/vec.h"
 
 namespace geovis {
@@ -153,6 +154,12 @@ class Metric {
   virtual bool pseudo_cartesian_radius(const Vec4& /*x*/, double& /*radius*/, int& /*chart*/) const {
     return false;
   }
+  /// pseudo_cartesian_radius of the positions of a packet's lanes at once (x^μ of lane l at
+  /// x[μ * kPacketLanes + l], geodesic_packet.h), for the lanes in `lanes` (bit l: lane l; the
+  /// others' entries are undefined): radius[l] and chart[l], chart −1 where the metric has no
+  /// shortcut. The renderer asks this once per round of a packet's steps instead of one virtual
+  /// call per ray and step (render/tracer.cpp, trace_pixels).
+  virtual void pseudo_cartesian_radii(const double* x, unsigned lanes, double* radius, int* chart) const;
   /// Inverse of to_pseudo_cartesian for the given chart (time component t kept).
   virtual Vec4 from_pseudo_cartesian(double t, const Vec3& p, int chart = 0) const;
   /// Jacobian J[i][j] = ∂p^i/∂x^(j+1) of to_pseudo_cartesian at x (maps a tangent vector's
@@ -161,6 +168,8 @@ class Metric {
   virtual bool pseudo_cartesian_jacobian(const Vec4& x, double J[3][3]) const;
   /// pseudo_cartesian_radius of the default to_pseudo_cartesian (by coordinate type; chart 0).
   void default_pseudo_cartesian_radius(const Vec4& x, double& radius, int& chart) const;
+  /// default_pseudo_cartesian_radius of every lane of a packet (pseudo_cartesian_radii's layout).
+  void default_pseudo_cartesian_radii(const double* x, double* radius, int* chart) const;
 
   // ---- hot path (dispatch once per geodesic) ----
   /// Integrates system `sys` from y (dim = system_dim(sys), updated in place) starting at

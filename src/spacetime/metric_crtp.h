@@ -65,6 +65,12 @@ class MetricCRTP : public Metric {
       return false;
     }
   }
+  void pseudo_cartesian_radii(const double* x, unsigned lanes, double* radius, int* chart) const override {
+    if constexpr (std::is_same_v<decltype(&M::to_pseudo_cartesian), decltype(&Metric::to_pseudo_cartesian)>)
+      default_pseudo_cartesian_radii(x, radius, chart);
+    else
+      Metric::pseudo_cartesian_radii(x, lanes, radius, chart);
+  }
   bool has_closed_form_christoffel() const override { return kHasClosedChristoffel; }
 
   // ---- non-virtual, inlinable versions used inside the integrators ----

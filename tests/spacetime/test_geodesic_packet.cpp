@@ -136,50 +136,74 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
     }
   }
   const size_t n = y0.size();
-  std::vector<RayRecord> scalar(n), packet(n);
+  std::vector<RayRecord> scalar(n);
   for (size_t r = 0; r < n; ++r) {
-    scalar[r].stop_at = packet[r].stop_at = stops[r];
+    scalar[r].stop_at = stops[r];
     double y[8];
     std::copy(y0[r].begin(), y0[r].end(), y);
     auto cb = [&](const StepView& st) { return record(scalar[r], st); };
     scalar[r].res = m.integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
     std::copy(y, y + 8, scalar[r].y);
   }
-  size_t next_ray = 0;
-  int lane_ray[kPacketLanes];
-  auto next = [&](int lane, double* y) {
-    if (next_ray == n) return false;
-    lane_ray[lane] = static_cast<int>(next_ray);
-    std::copy(y0[next_ray].begin(), y0[next_ray].end(), y);
-    ++next_ray;
-    return true;
-  };
-  auto on_step = [&](int lane, const StepView& st) { return record(packet[lane_ray[lane]], st); };
-  size_t finished = 0;
-  auto done = [&](int lane, const double* y, const GeodesicResult& res) {
-    RayRecord& r = packet[lane_ray[lane]];
-    std::copy(y, y + 8, r.y);
-    r.res = res;
-    ++finished;
-  };
-  m.integrate_packet(cfg, PacketRays{next, on_step, done});
-  ASSERT_EQ(finished, n);
-  for (size_t r = 0; r < n; ++r) {
-    SCOPED_TRACE("ray " + std::to_string(r));
-    const RayRecord &a = scalar[r], &b = packet[r];
-    EXPECT_EQ(stop_reason_name(b.res.reason), std::string(stop_reason_name(a.res.reason)));
-    EXPECT_EQ(b.res.steps, a.res.steps);
-    EXPECT_EQ(b.res.rejected, a.res.rejected);
-    EXPECT_EQ(b.res.rhs_evals, a.res.rhs_evals);
-    EXPECT_TRUE(same_bits(b.res.lambda, a.res.lambda)) << b.res.lambda << " vs " << a.res.lambda;
-    EXPECT_TRUE(same_bits(b.res.constraint_drift, a.res.constraint_drift));
-    EXPECT_TRUE(same_bits(b.res.escape_radius, a.res.escape_radius));
-    for (int i = 0; i < 8; ++i)
-      EXPECT_TRUE(same_bits(b.y[i], a.y[i])) << "y[" << i << "] " << b.y[i] << " vs " << a.y[i];
-    ASSERT_EQ(b.steps.size(), a.steps.size());
-    for (size_t s = 0; s < a.steps.size(); ++s) {
-      ASSERT_EQ(std::memcmp(a.steps[s].data(), b.steps[s].data(), sizeof a.steps[s]), 0) << "step " << s + 1;
-      ASSERT_EQ(std::memcmp(a.lambdas[s].data(), b.lambdas[s].data(), sizeof a.lambdas[s]), 0) << "step " << s + 1;
+  // The packet with its steps handed on lane by lane (on_step), and a round at a time (on_steps,
+  // the views gathered by PacketSteps::view: the same steps).
+  for (const bool batch : {false, true}) {
+    SCOPED_TRACE(batch ? "on_steps" : "on_step");
+    std::vector<RayRecord> packet(n);
+    for (size_t r = 0; r < n; ++r) packet[r].stop_at = stops[r];
+    size_t next_ray = 0;
+    int lane_ray[kPacketLanes];
+    auto next = [&](int lane, double* y) {
+      if (next_ray == n) return false;
+      lane_ray[lane] = static_cast<int>(next_ray);
+      std::copy(y0[next_ray].begin(), y0[next_ray].end(), y);
+      ++next_ray;
+      return true;
+    };
+    auto on_step = [&](int lane, const StepView& st) { return record(packet[lane_ray[lane]], st); };
+    auto on_steps = [&](const PacketSteps& steps) {
+      unsigned stop = 0;
+      for (int l = 0; l < kPacketLanes; ++l) {
+        if (!(steps.lanes >> l & 1u)) continue;
+        double views[4][8];
+        const StepView st = steps.view(l, views);
+        // The step starts where the lane's previous one ended.
+        RayRecord& r = packet[lane_ray[l]];
+        if (!r.steps.empty())
+          for (int i = 0; i < 8; ++i) EXPECT_TRUE(same_bits(st.y0[i], r.steps.back()[i])) << "y0[" << i << "]";
+        if (record(r, st) == StepAction::Stop) stop |= 1u << l;
+      }
+      return stop;
+    };
+    size_t finished = 0;
+    auto done = [&](int lane, const double* y, const GeodesicResult& res) {
+      RayRecord& r = packet[lane_ray[lane]];
+      std::copy(y, y + 8, r.y);
+      r.res = res;
+      ++finished;
+    };
+    if (batch)
+      m.integrate_packet(cfg, PacketRays{next, on_step, done, on_steps});
+    else
+      m.integrate_packet(cfg, PacketRays{next, on_step, done});
+    ASSERT_EQ(finished, n);
+    for (size_t r = 0; r < n; ++r) {
+      SCOPED_TRACE("ray " + std::to_string(r));
+      const RayRecord &a = scalar[r], &b = packet[r];
+      EXPECT_EQ(stop_reason_name(b.res.reason), std::string(stop_reason_name(a.res.reason)));
+      EXPECT_EQ(b.res.steps, a.res.steps);
+      EXPECT_EQ(b.res.rejected, a.res.rejected);
+      EXPECT_EQ(b.res.rhs_evals, a.res.rhs_evals);
+      EXPECT_TRUE(same_bits(b.res.lambda, a.res.lambda)) << b.res.lambda << " vs " << a.res.lambda;
+      EXPECT_TRUE(same_bits(b.res.constraint_drift, a.res.constraint_drift));
+      EXPECT_TRUE(same_bits(b.res.escape_radius, a.res.escape_radius));
+      for (int i = 0; i < 8; ++i)
+        EXPECT_TRUE(same_bits(b.y[i], a.y[i])) << "y[" << i << "] " << b.y[i] << " vs " << a.y[i];
+      ASSERT_EQ(b.steps.size(), a.steps.size());
+      for (size_t s = 0; s < a.steps.size(); ++s) {
+        ASSERT_EQ(std::memcmp(a.steps[s].data(), b.steps[s].data(), sizeof a.steps[s]), 0) << "step " << s + 1;
+        ASSERT_EQ(std::memcmp(a.lambdas[s].data(), b.lambdas[s].data(), sizeof a.lambdas[s]), 0) << "step " << s + 1;
+      }
     }
   }
 }
@@ -241,6 +265,36 @@ TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
     }
   }
   EXPECT_GE(hwy::SupportedAndGeneratedTargets().size(), 2u) << "no SIMD target besides the scalar emulation";
+}
+
+// Metric::pseudo_cartesian_radii (the renderer's radii of a packet's step ends) is each lane's
+// pseudo_cartesian_radius to the bit, chart −1 where that has no shortcut; on positions about
+// the sample position, some with the spatial coordinates negated (Morris–Thorne's other chart).
+TEST_P(PacketEveryMetric, PseudoCartesianRadiiAreEachLanes) {
+  const auto m = make_metric(GetParam());
+  const Vec4 s = m->info().sample_pos;
+  double x[4 * kPacketLanes];
+  for (int l = 0; l < kPacketLanes; ++l) {
+    x[l] = s[0];
+    for (int i = 1; i < 4; ++i) x[i * kPacketLanes + l] = s[i] * (1.0 + 0.1 * l) * (l % 3 == 2 ? -1.0 : 1.0);
+  }
+  const unsigned lanes = 0xb7;  // a lane without a step (bit clear) may be left undefined
+  double radius[kPacketLanes];
+  int chart[kPacketLanes];
+  m->pseudo_cartesian_radii(x, lanes, radius, chart);
+  for (int l = 0; l < kPacketLanes; ++l) {
+    if (!(lanes >> l & 1u)) continue;
+    SCOPED_TRACE("lane " + std::to_string(l));
+    double r = 0;
+    int c = 0;
+    const Vec4 xl{{x[l], x[kPacketLanes + l], x[2 * kPacketLanes + l], x[3 * kPacketLanes + l]}};
+    if (!m->pseudo_cartesian_radius(xl, r, c)) {
+      EXPECT_EQ(chart[l], -1);
+      continue;
+    }
+    EXPECT_EQ(chart[l], c);
+    EXPECT_TRUE(same_bits(radius[l], r)) << radius[l] << " vs " << r;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, PacketEveryMetric, ::testing::ValuesIn(metric_names()), test_name);
