@@ -116,7 +116,7 @@ Vec4 LocalFrame::delta(const Vec4& x, const Vec4& y) const {
 Vec4 LocalFrame::to_local(const State& s, const Vec4& x) const {
   const Vec4 dx = delta(x, s.x);
   Vec4 X;
-  for (int a = 0; a < 4; ++a) X[a] = (a == 0 ? -1.0 : 1.0) * dot(s.g, s.e[a], dx);
+  for (int a = 0; a < 4; ++a) X[a] = (a == 0 ? -1.0 : 1.0) * dot_skipping_zeros(s.g, s.e[a], dx);
   return X;
 }
 
@@ -130,7 +130,7 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev
     if (!(ev.tau == tau)) event(tau, ev);
     // f(τ) = g(e0, x − x_obj(τ)); df/dτ = −g(u, u) + g(∇_u e0, Δx) = 1 for geodesic or uniform
     // motion (and 1 + O(a·Δx) otherwise), so the Newton step is τ − f.
-    const double f = dot(ev.g, ev.e0, delta(x, ev.x));
+    const double f = dot_skipping_zeros(ev.g, ev.e0, delta(x, ev.x));
     double next = tau - f;
     if (next < lo || next > hi) {
       // Outside the worldline: one retry from the boundary, then give up.
