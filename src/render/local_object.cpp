@@ -66,6 +66,10 @@ LocalFrame::LocalFrame(std::shared_ptr<const Metric> metric, MotionPtr motion)
   if (!metric_) throw Error("local frame: no metric");
   if (!motion_ || motion_->samples().empty()) throw Error("local frame: the motion has no worldline samples");
   periodic_index_ = periodic_index_of(*metric_);
+  if (!motion_->unbounded()) {
+    tau_lo_ = motion_->tau_min();
+    tau_hi_ = motion_->tau_max();
+  }
   const auto* sampled = dynamic_cast<const SampledMotion*>(motion_.get());
   if (sampled && &sampled->metric() == metric_.get()) sampled_ = sampled;
 }
@@ -112,15 +116,13 @@ Vec4 LocalFrame::delta(const Vec4& x, const Vec4& y) const {
 Vec4 LocalFrame::to_local(const State& s, const Vec4& x) const {
   const Vec4 dx = delta(x, s.x);
   Vec4 X;
-  for (int a = 0; a < 4; ++a) X[a] = (a == 0 ? -1.0 : 1.0) * dot(s.g, s.e[a], dx);
+  for (int a = 0; a < 4; ++a) X[a] = (a == 0 ? -1.0 : 1.0) * dot_skipping_zeros(s.g, s.e[a], dx);
   return X;
 }
 
 bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev) const {
   if (!motion_) return true;
-  const bool bounded = !motion_->unbounded();
-  const double inf = std::numeric_limits<double>::infinity();
-  const double lo = bounded ? motion_->tau_min() : -inf, hi = bounded ? motion_->tau_max() : inf;
+  const double lo = tau_lo_, hi = tau_hi_;
   tau = std::clamp(tau, lo, hi);
   for (int it = 0; it < 20; ++it) {
     // Only the event and e_(0) are needed, not the whole frame; a search started where the last
@@ -128,7 +130,7 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev
     if (!(ev.tau == tau)) event(tau, ev);
     // f(τ) = g(e0, x − x_obj(τ)); df/dτ = −g(u, u) + g(∇_u e0, Δx) = 1 for geodesic or uniform
     // motion (and 1 + O(a·Δx) otherwise), so the Newton step is τ − f.
-    const double f = dot(ev.g, ev.e0, delta(x, ev.x));
+    const double f = dot_skipping_zeros(ev.g, ev.e0, delta(x, ev.x));
     double next = tau - f;
     if (next < lo || next > hi) {
       // Outside the worldline: one retry from the boundary, then give up.
@@ -252,6 +254,8 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
     return;
   }
   const auto& samples = frame_.motion()->samples();
+  sample_t_.reserve(samples.size());
+  for (const MotionSample& s : samples) sample_t_.push_back(s.x[0]);
   double dt_max = 0, r_min = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i + 1 < samples.size() || (samples.size() == 1 && i == 0); ++i) {
     const size_t j = std::min(i + 1, samples.size() - 1);
@@ -567,9 +571,8 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     // Initial guess: the first sample not earlier in coordinate time than the event (its node
     // interval is where the search looks first).
     const auto& samples = frame_.motion()->samples();
-    auto it = std::lower_bound(samples.begin(), samples.end(), x_ref[0],
-                               [](const MotionSample& s, double t) { return s.x[0] < t; });
-    const size_t k = it == samples.end() ? samples.size() - 1 : static_cast<size_t>(it - samples.begin());
+    auto it = std::lower_bound(sample_t_.begin(), sample_t_.end(), x_ref[0]);
+    const size_t k = it == sample_t_.end() ? samples.size() - 1 : static_cast<size_t>(it - sample_t_.begin());
     tau = samples[k].tau;
     ev.interval = samples.size() > 1 ? std::min(k, samples.size() - 2) : 0;
   }

@@ -88,6 +88,9 @@ class LocalFrame {
   const SampledMotion* sampled_ = nullptr;
   State fixed_;
   int periodic_index_ = -1;
+  /// The motion's proper-time range (infinite for an unbounded one), read once: simultaneous_tau
+  /// runs on every chord near the body and would otherwise ask the motion through three virtual calls.
+  double tau_lo_ = -std::numeric_limits<double>::infinity(), tau_hi_ = std::numeric_limits<double>::infinity();
 };
 
 /// An object (usually a compound or primitive of gpObjTypeLocal) seen through a local frame.
@@ -168,6 +171,10 @@ class LocalObject final : public SceneObject {
   // moving frame: boxes along the worldline, increasing in time
   std::vector<TubeBox> tube_;
   std::vector<TubeBox> chunks_;  ///< unions of kChunk consecutive tube_ boxes
+  /// The coordinate time x^0 of each motion sample, contiguous: intersect_piece's first guess is a
+  /// binary search over them on every chord near the body (over the samples themselves it would
+  /// touch one cache line per step).
+  std::vector<double> sample_t_;
   /// Squared radii of the pseudo-Cartesian shell about the origin that holds every tube_ box.
   double tube_inner2_ = 0, tube_outer2_ = std::numeric_limits<double>::infinity();
   double tube_margin_t_ = 0;

@@ -37,19 +37,27 @@ void SampledMotion::set_nodes(std::vector<MotionNode> nodes) {
   samples_.clear();
   samples_.reserve(nodes_.size());
   node_g_.resize(nodes_.size());
+  node_tau_.clear();
+  node_tau_.reserve(nodes_.size());
   x0_increasing_ = true;
   for (size_t i = 0; i < nodes_.size(); ++i) {
     const MotionNode& n = nodes_[i];
     samples_.push_back(MotionSample{n.tau, n.x, n.u, n.e});
+    node_tau_.push_back(n.tau);
     metric_->metric_tensor(n.x, node_g_[i]);
     if (i > 0 && !(n.x[0] > nodes_[i - 1].x[0])) x0_increasing_ = false;
   }
 }
 
 size_t SampledMotion::interval(double tau, size_t hint) const {
-  // The common case first: τ inside the hinted interval (not the last one, whose end the range
-  // check below bounds), where that check cannot fail.
-  if (hint + 2 < nodes_.size() && nodes_[hint].tau <= tau && tau < nodes_[hint + 1].tau) return hint;
+  // The common cases first: τ inside the hinted interval or a neighbour of it (a Newton step from
+  // a node often ends in the interval before), not the last interval (whose end the range check
+  // below bounds): there that check cannot fail, and the intervals [τ_i, τ_{i+1}) below the last
+  // one are disjoint, so the index is the one the search below would find.
+  auto inside = [&](size_t i) { return i + 2 < nodes_.size() && nodes_[i].tau <= tau && tau < nodes_[i + 1].tau; };
+  if (inside(hint)) return hint;
+  if (hint > 0 && inside(hint - 1)) return hint - 1;
+  if (inside(hint + 1)) return hint + 1;
   const double lo = nodes_.front().tau, hi = nodes_.back().tau;
   const double slack = 1e-12 * std::max({1.0, std::fabs(lo), std::fabs(hi)});
   if (!(tau >= lo - slack && tau <= hi + slack))
@@ -58,7 +66,7 @@ size_t SampledMotion::interval(double tau, size_t hint) const {
                 "] (extend it with `forward`/`backward` or `maxnumpoints`)");
   if (nodes_.size() == 1) return 0;
   // The binary search below gives the last i <= size − 2 with τ_i <= τ (0 below the first node);
-  // the hint and its neighbours first (a Newton step from a node often ends in the interval before).
+  // the hint and its neighbours first (the last interval and τ within the slack of the range).
   const size_t last = nodes_.size() - 2;
   auto holds = [&](size_t i) { return nodes_[i].tau <= tau && (i == last || tau < nodes_[i + 1].tau); };
   if (hint <= last) {
@@ -66,9 +74,8 @@ size_t SampledMotion::interval(double tau, size_t hint) const {
     if (hint > 0 && holds(hint - 1)) return hint - 1;
     if (hint < last && holds(hint + 1)) return hint + 1;
   }
-  auto it =
-      std::upper_bound(nodes_.begin(), nodes_.end(), tau, [](double t, const MotionNode& n) { return t < n.tau; });
-  size_t i = static_cast<size_t>(it - nodes_.begin());
+  auto it = std::upper_bound(node_tau_.begin(), node_tau_.end(), tau);
+  size_t i = static_cast<size_t>(it - node_tau_.begin());
   i = i == 0 ? 0 : i - 1;
   return std::min(i, nodes_.size() - 2);
 }

@@ -83,6 +83,9 @@ class SampledMotion : public Motion {
   std::vector<MotionNode> nodes_;
   std::vector<MotionSample> samples_;
   std::vector<Mat4> node_g_;  ///< metric tensor at each node (simultaneity searches start at nodes)
+  /// nodes_[i].tau, contiguous: interval()'s binary search (a simultaneity search's first Newton step
+  /// from a node lands several intervals away) touches one cache line per step over nodes_.
+  std::vector<double> node_tau_;
   bool x0_increasing_ = true;
 };
 

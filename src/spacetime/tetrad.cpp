@@ -80,7 +80,7 @@ void require_valid_position(const Metric& m, const Vec4& x, std::string_view wha
 }
 
 Vec4 unit_timelike(const Metric& m, const Vec4& x, const Mat4& g, const Vec4& v) {
-  const double n0 = dot(g, v, v);
+  const double n0 = dot_skipping_zeros(g, v, v);
   if (!(n0 < -kGramSchmidtRel * abs_quadratic_form(g, v)) || !std::isfinite(n0))
     throw Error("Gram-Schmidt: the first vector e0 = " + vec_str(v) + " must be timelike, but g(e0,e0) = " +
                 number_text(n0) + " (metric " + m.name() + " at " + vec_str(x) + ")");
@@ -101,10 +101,10 @@ Tetrad gram_schmidt_after_e0(const Metric& m, const Vec4& x, const Mat4& g, cons
     const double scale = abs_quadratic_form(g, v[i]);
     for (int a = 0; a < i; ++a) {
       // remove the component along e_a: w -= η_aa g(w, e_a) e_a
-      const double c = kEta[a] * dot(g, w, e[a]);
+      const double c = kEta[a] * dot_skipping_zeros(g, w, e[a]);
       w = w - c * e[a];
     }
-    const double n = dot(g, w, w);
+    const double n = dot_skipping_zeros(g, w, w);
     if (!(n > kGramSchmidtRel * scale) || !std::isfinite(n))
       throw Error("Gram-Schmidt: e" + std::to_string(i) + " = " + vec_str(v[i]) +
                   " is degenerate (linearly dependent on the previous base vectors, zero or null; what remains "
