@@ -58,6 +58,7 @@ struct MinoLaneCoeffs {
 struct MinoEndViews {
   alignas(64) double sign[kPacketLanes] = {}, offset[kPacketLanes] = {}, active[kPacketLanes] = {};
   KerrMinoRay::EndView* dst[kPacketLanes] = {};
+  bool position_only = false;  ///< only EndView::p (KerrMinoRay::bl_step_with_position)
 };
 
 /// The error tolerance of a packet's lanes (ErrorScale): eps_abs, eps_rel and, for a system with
@@ -332,7 +333,8 @@ void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance&
 }
 
 /// kerr_mino_bl_view (kerr_mino_bl.h) on every lane: the BL views of the Mino states y with
-/// σ-derivatives dy (SoA) on the lanes' θ branches, written to each lane's view (out.dst). A lane
+/// σ-derivatives dy (SoA) on the lanes' θ branches, written to each lane's view (out.dst), or
+/// only their pseudo-Cartesian positions (out.position_only: kerr_mino_position). A lane
 /// without a step (its y may be a rejected attempt, NaN) is viewed at φ = 0, which keeps sincos_t
 /// off its lane-by-lane route for arguments it cannot reduce.
 void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, const MinoEndViews& out) {
@@ -351,6 +353,17 @@ void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, 
       dys[i] = SimdD::load(dy + i * W + l);
     }
     ys[KerrMinoRHS::PHI] = select(active, ys[KerrMinoRHS::PHI], SimdD(0.0));
+    if (out.position_only) {
+      SimdD p[3];
+      HWY_NAMESPACE::kerr_mino_position(at(R::POLE), SimdD::load(out.sign + l), ys, p);  // this target's copy
+      HWY_ALIGN double rows[3][HWY_MAX_BYTES / sizeof(double)];
+      for (int i = 0; i < 3; ++i) p[i].store(rows[i]);
+      for (size_t j = 0; j < L; ++j) {
+        double* e = out.dst[l + j]->p;
+        for (int i = 0; i < 3; ++i) e[i] = rows[i][j];
+      }
+      continue;
+    }
     // v = (x, k, dk/dλ, p, 0): the rows of the views in EndView's order (xk, then p and its pad).
     SimdD v[16];
     HWY_NAMESPACE::kerr_mino_bl_view(k, axis, at(R::POLE), SimdD::load(out.sign + l), SimdD::load(out.offset + l), ys,
@@ -1038,14 +1051,18 @@ struct MinoPacket {
       ends.sign[l] = b.sign;
       ends.offset[l] = b.offset;
     }
+    ends.position_only = rays.states_on_request;
     HWY_DYNAMIC_DISPATCH(mino_end_views)(coeffs, y1, dy1, ends);
   }
-  /// The accepted step of lane l in BL terms, the view of its end written by before_steps.
+  /// The accepted step of lane l in BL terms, the view of its end (or its position alone, where
+  /// the caller asks for the states: PacketRays::states_on_request) written by before_steps.
   StepAction step(int l, const StepView& s) {
     if (!rays.on_step) return ray[l]->step(s, {});
+    if (rays.states_on_request) return rays.on_step(l, ray[l]->bl_step_with_position(s));
     return rays.on_step(l, ray[l]->bl_step_with_end(s));
   }
   void rebase(int l, double* y) {
+    if (rays.states_on_request) ray[l]->before_rebase(y);
     ray[l]->sys.rebase(y);
     coeffs.v[MinoLaneCoeffs::POLE][l] = ray[l]->sys.f.polar.pole;
   }

@@ -41,6 +41,10 @@ struct PacketRays {
   FunctionRef<StepAction(int lane, const StepView& step)> on_step;
   /// The ray in `lane` ended with final state y (8 components) and `result`.
   FunctionRef<void(int lane, const double* y, const GeodesicResult& result)> done;
+  /// on_step reads a StepView's states (y0, y1, dy0, dy1) only after StepView::ensure_states,
+  /// and its pseudo-Cartesian ends where given: an integrator may then convert the states only on
+  /// request (Carter's equations in Mino time: KerrMinoRay::bl_step_with_position).
+  bool states_on_request = false;
 };
 
 /// Whether the packet integrator serves solver `kind` (the explicit embedded pairs that
