@@ -615,6 +615,9 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it.
   bool accepted_states_change = true;
   if constexpr (requires { ps.accepted_states_change(cfg); }) accepted_states_change = ps.accepted_states_change(cfg);
+  // Whether the accept loop takes each attempt's state y1 (its tests or changes need it); else
+  // the loop that hands on the accepted steps takes it.
+  const bool takes_y1 = !kLaneChecks || kOwnAffine || accepted_states_change;
   auto affine = [](const Sys& s, const double* yy, double sv) {
     if constexpr (kOwnAffine) return s.affine(yy);
     return sv;
@@ -653,6 +656,12 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   auto put = [](double* soa, int l, const double* in) {
     for (int i = 0; i < N; ++i) soa[i * W + l] = in[i];
   };
+  // Each lane's y and dy also as one row (AoS), kept equal to the lane's column of y and dy; and
+  // the state y1 of its last attempt as the accept loop took it. Why: the steps are handed on and
+  // tested per lane, in rows, and gathering the columns again for every use (the step's start
+  // and its derivative, the start's affine parameter twice) was a ninth of kerrAccretionDisk.scm's
+  // tracing instructions (callgrind, issue 13).
+  HWY_ALIGN double y_row[W][N], dy_row[W][N], y1_row[W][N];
   // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step, for the lanes in
   // need_tol at once before the next attempt (PS::tolerance_inv, all lanes: a lane whose state
   // did not change gets the same values again).
@@ -685,6 +694,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       if (!ps.start(l, ys, yl)) continue;
       put(y, l, yl);
+      std::memcpy(y_row[l], yl, sizeof yl);
       Lane<Tab, N>& ln = lane[l];
       ln = Lane<Tab, N>{};
       ctl.h_old[l] = ctl.q_old[l] = ctl.after_reject[l] = 0.0;  // a fresh StepController
@@ -716,7 +726,10 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       if (need_dy) {
         ps.rhs(y, dy, need_dy);
         for (int l = 0; l < W; ++l)
-          if (need_dy >> l & 1u) ++lane[l].res.rhs_evals;
+          if (need_dy >> l & 1u) {
+            ++lane[l].res.rhs_evals;
+            get(dy, l, dy_row[l]);
+          }
         need_dy = 0;
       }
       for (int l = 0; l < W; ++l) {
@@ -727,8 +740,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
           refill(l);
           continue;
         }
-        double yl[N];
-        if constexpr (kOwnAffine) get(y, l, yl);
+        const double* yl = y_row[l];
         const Sys& sys = ps.system(l);
         ln.remaining = cfg.lambda_max - std::fabs(affine(sys, yl, ln.lambda) - ln.affine0);
         if (!(ln.remaining > lambda_res)) {
@@ -766,8 +778,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       Lane<Tab, N>& ln = lane[l];
       auto& sys = ps.system(l);
       ln.res.rhs_evals += Tab::S - 1;
-      double yl1[N];
-      if (!kLaneChecks || kOwnAffine || accepted_states_change) get(y1, l, yl1);
+      double* yl1 = y1_row[l];
+      if (takes_y1) get(y1, l, yl1);
       ln.err = attempt_err.err[l];
       ln.root = attempt_err.root[l];
       const bool finite = attempt_err.finite >> l & 1u;
@@ -806,9 +818,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       if constexpr (kOwnAffine) {
         // λ_max overshot, or a step longer than step_max in λ: retried shorter (integrate_with).
-        double yl[N];
-        get(y, l, yl);
-        const double dl = std::fabs(sys.affine(yl1) - sys.affine(yl));
+        const double dl = std::fabs(sys.affine(yl1) - sys.affine(y_row[l]));
         if (ln.affine_retries < 50) {
           if (std::isfinite(cfg.lambda_max) && dl > ln.remaining * (1.0 + 1e-12)) {
             ln.h = ln.hstep * ln.remaining / dl;
@@ -831,7 +841,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         if (cfg.reproject) sys.reproject(yl1, cfg.type);
         if constexpr (requires { sys.project_invariants(yl1); }) changed = sys.project_invariants(yl1);
         if constexpr (requires { sys.rescale(yl1, cfg.type); }) changed = sys.rescale(yl1, cfg.type) || changed;
-        put(y1, l, yl1);
+        if (cfg.reproject || changed) put(y1, l, yl1);
       }
       accepted |= 1u << l;
       if (!Tab::kFsal || cfg.reproject || changed) need_dy1 |= 1u << l;
@@ -875,10 +885,11 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       auto& sys = ps.system(l);
       ready &= ~(1u << l);
       if (need_dy1 >> l & 1u) ++ln.res.rhs_evals;
-      double yl[N], yl1[N], dyl[N], dyl1[N];
-      get(y, l, yl);
-      get(y1, l, yl1);
-      get(dy, l, dyl);
+      const double* yl = y_row[l];
+      const double* dyl = dy_row[l];
+      double* yl1 = y1_row[l];
+      if (!takes_y1) get(y1, l, yl1);
+      double dyl1[N];
       get(dy1, l, dyl1);
       double c, scale;
       if constexpr (kLaneChecks) {
@@ -899,6 +910,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       if constexpr (requires { ps.rebase(l, yl1); }) ps.rebase(l, yl1);
       put(y, l, yl1);
       put(dy, l, dyl1);
+      std::memcpy(y_row[l], yl1, sizeof y_row[l]);
+      std::memcpy(dy_row[l], dyl1, sizeof dyl1);
       ln.lambda = lambda1;
       set_tolerance(l);
       StopReason stop = StopReason::None;
