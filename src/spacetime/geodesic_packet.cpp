@@ -452,6 +452,20 @@ unsigned mino_constraint(const MinoLaneCoeffs& c, const double* y, double escape
   return bits;
 }
 
+/// KerrMinoSystem::param_per_affine (dσ/dλ = 1/Σ = w²/(1 + a²z²w²)) of the states y (SoA) on every
+/// lane, with the scalar function's operations, so its bits. Why: the scalar division of each lane
+/// before each attempt stalled the driver (perf annotate of kerrAccretionDisk.scm, issue 13).
+void mino_param_per_affine(const MinoLaneCoeffs& c, const double* y, double* out) {
+  using R = MinoLaneCoeffs;
+  using I = KerrMinoRHS;
+  constexpr int W = kPacketLanes;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const SimdD w = SimdD::load(y + I::W * W + l);
+    const SimdD z = SimdD::load(c.v[R::POLE] + l) + SimdD::load(y + I::Z * W + l);  // PolarOffset::z
+    (w * w / (SimdD(1.0) + SimdD::load(c.v[R::A2] + l) * z * z * w * w)).store(out + l);
+  }
+}
+
 /// integrate_with's set_tolerance (integrators.h) for the Mino-time system on every lane: the 1/D_i
 /// of ErrorScale from the system's scales (kerr_mino_tolerance_inv_scale) at state y, SoA.
 void mino_tolerance(const MinoLaneCoeffs& c, double eps_abs, double eps_rel, const double* y, double* inv) {
@@ -553,6 +567,7 @@ HWY_EXPORT(accepted_step_control);
 HWY_EXPORT(inside_box_lanes);
 HWY_EXPORT(mino_valid);
 HWY_EXPORT(mino_constraint);
+HWY_EXPORT(mino_param_per_affine);
 
 namespace {
 
@@ -591,7 +606,8 @@ struct Lane {
 ///   valid_lanes(y, lanes), step_checks(cfg, y, lanes, out) (optional)   the scalar system's valid,
 ///                                       and its constraint, escaped and captured (PacketStepChecks),
 ///                                       of all lanes' states at once;
-///   accepted_states_change(cfg) (optional)   false where the system never changes an accepted state.
+///   accepted_states_change(cfg) (optional)   false where the system never changes an accepted state;
+///   param_per_affine_lanes(y, out) (optional)   Sys::param_per_affine of all lanes' states at once.
 template <class Tab, class PS>
 void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   constexpr int W = kPacketLanes, N = PS::N;
@@ -626,6 +642,9 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     if constexpr (kOwnAffine) return s.param_per_affine(yy);
     return 1.0;
   };
+  constexpr bool kLanePerAffine =
+      kOwnAffine && requires(PS& p, const double* yy, double* o) { p.param_per_affine_lanes(yy, o); };
+  HWY_ALIGN double per_affine_lanes[kLanePerAffine ? W : 1];  // PS::param_per_affine_lanes of y
 
   // integrate_with's constants (λ0 = 0).
   const double dir = cfg.direction >= 0 ? 1.0 : -1.0;
@@ -732,6 +751,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
           }
         need_dy = 0;
       }
+      if constexpr (kLanePerAffine) ps.param_per_affine_lanes(y, per_affine_lanes);
       for (int l = 0; l < W; ++l) {
         Lane<Tab, N>& ln = lane[l];
         if (!ln.live || (ready >> l & 1u)) continue;
@@ -750,7 +770,11 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         }
         ln.hstep = ln.h;
         ln.clipped = false;
-        const double ppa = per_affine(sys, yl);
+        double ppa;
+        if constexpr (kLanePerAffine)
+          ppa = per_affine_lanes[l];
+        else
+          ppa = per_affine(sys, yl);
         if constexpr (kOwnAffine) {
           ln.hmax = ctl.hmax[l] = hmax_affine * ppa;
           ln.hmin = ctl.hmin[l] = cfg.step_min * ppa;
@@ -1020,6 +1044,10 @@ struct MinoPacket {
   void attempt(SolverKind kind, unsigned, const LaneTolerance& tol, const double* y, const double* dy, const double* h,
                double* y1, double* dy1, AttemptError& err) const {
     HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
+  }
+  /// KerrMinoSystem::param_per_affine of all lanes' states at once (mino_param_per_affine, SIMD).
+  void param_per_affine_lanes(const double* y, double* out) const {
+    HWY_DYNAMIC_DISPATCH(mino_param_per_affine)(coeffs, y, out);
   }
   /// KerrMinoSystem::valid of all lanes' states at once (mino_valid, SIMD).
   unsigned valid_lanes(const double* y, unsigned lanes) const { return HWY_DYNAMIC_DISPATCH(mino_valid)(coeffs, y, lanes); }
