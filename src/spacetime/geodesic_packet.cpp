@@ -1103,7 +1103,6 @@ struct MinoPacket {
     return rays.on_step(l, ray[l]->bl_step_with_end(s));
   }
   void rebase(int l, double* y) {
-    if (rays.states_on_request) ray[l]->before_rebase(y);
     ray[l]->sys.rebase(y);
     coeffs.v[MinoLaneCoeffs::POLE][l] = ray[l]->sys.f.polar.pole;
   }

@@ -114,8 +114,11 @@ void KerrMinoRay::fill_views(const void* ray) {
   for (int e = 0; e < 2; ++e) {
     EndView& v = r.end_[r.start_ ^ (e == 0 ? 1 : 0)];
     if (v.has_xk) continue;
+    double ym[KerrMinoRHS::N];
+    std::copy_n(r.mino_states_[2 * e], KerrMinoRHS::N, ym);
+    ym[KerrMinoRHS::Z] = v.zeta;
     Vec4 x, kk, acc;
-    kerr_mino_to_bl(r.c, PolarOffset{v.pole}, r.mino_states_[2 * e], r.mino_states_[2 * e + 1], v.branch, x, kk, &acc);
+    kerr_mino_to_bl(r.c, PolarOffset{v.pole}, ym, r.mino_states_[2 * e + 1], v.branch, x, kk, &acc);
     for (int i = 0; i < 4; ++i) {
       v.xk[i] = x[i];
       v.xk[4 + i] = kk[i];

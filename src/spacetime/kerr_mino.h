@@ -402,11 +402,11 @@ struct KerrMinoRay {
   /// The BL view of one step end as the callback sees it: xk = (x, k, dk/dλ), so that the
   /// StepView's state (x, k) is xk[0..8) and its derivative (k, dk/dλ) is xk[4..12) — k stored
   /// once for both — and the pseudo-Cartesian position. A view given on request
-  /// (bl_step_with_position) holds until then, instead of xk, the pole and θ branch its Mino
+  /// (bl_step_with_position) holds until then, instead of xk, the pole, ζ and θ branch its Mino
   /// state is to be converted on (fill_views).
   struct EndView {
     double xk[12], p[4];  ///< p[3]: padding, for the packet's stores of four lanes' rows at once
-    double pole;
+    double pole, zeta;    ///< ζ: relative to `pole`, before a re-basing (KerrMinoSystem::rebase)
     ThetaBranch branch;
     bool has_xk = true;  ///< xk is the view of the state (false: to be converted by fill_views)
     const double* y() const { return xk; }
@@ -451,14 +451,15 @@ struct KerrMinoRay {
   /// its bounds: render/segment_cull.h), and only then reads x, k and dk/dλ; their conversion (an
   /// arcsine, four divisions) was two thirds of the packet's BL views (callgrind of
   /// kerrAccretionDisk.scm, issue 13).
-  /// The Mino states of both ends are those of s, kept by reference: an unconverted view of the
-  /// step's start (the previous step's end) has the state s.y0 unless the ray was re-based since
-  /// (rebase converts it before), and s outlives the callback that may ask for the views.
+  /// The Mino states of both ends are those of s, kept by reference (s outlives the callback that
+  /// may ask for the views): an unconverted view of the step's start (the previous step's end) has
+  /// the state s.y0 but for ζ, which a re-basing after that step changed (EndView::zeta).
   StepView bl_step_with_position(const StepView& s) {
     if (!have0_) to_bl(s.y0, s.dy0, end_[start_]);
     track_axis(s);
     EndView& v = next_end();
     v.pole = sys.f.polar.pole;
+    v.zeta = s.y1[KerrMinoRHS::Z];
     v.branch = branch;
     v.has_xk = false;
     mino_states_[0] = s.y0;
@@ -469,11 +470,6 @@ struct KerrMinoRay {
     bl.fill_states = &fill_views;
     bl.fill_context = this;
     return bl;
-  }
-  /// Before lane state y (the last step's end, s.y1 of bl_step_with_position) is re-based: the
-  /// views of the last step converted while its states are those they are views of.
-  void before_rebase(const double* y) {
-    if (std::fabs(y[KerrMinoRHS::Z]) > 1.0 && have0_) fill_views(this);  // KerrMinoSystem::rebase's test
   }
   /// The BL (x, k) of Mino state y (after the last step) to y_bl[0..7].
   void to_bl_state(const double* y, double* y_bl) const;
