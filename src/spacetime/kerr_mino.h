@@ -449,7 +449,7 @@ struct KerrMinoRay {
   /// (StepView::fill_states: fill_views). Why: the renderer tests the chord of a step against
   /// the scene in a few of a thousand steps (the others lie in the scene's empty ball or beyond
   /// its bounds: render/segment_cull.h), and only then reads x, k and dk/dλ; their conversion (an
-  /// arcsine, four divisions) was two thirds of the packet's BL views (callgrind of
+  /// arcsine, four divisions) was half of the packet's BL views (callgrind of
   /// kerrAccretionDisk.scm, issue 13).
   /// The Mino states of both ends are those of s, kept by reference (s outlives the callback that
   /// may ask for the views): an unconverted view of the step's start (the previous step's end) has
