@@ -178,6 +178,7 @@ GEOVIS_HOT_INLINE RayState::ChordEnd chord_end(const Metric& m, const double* y,
 /// ends by value: test_step skips most steps, and without this function's frame (the segment, the
 /// hit) and with its chord ends in registers it does so in a few instructions.
 [[gnu::noinline]] StepAction test_chord(RayState& rs, const StepView& st, Vec3 p0, Vec3 p1, int chart0, int chart1) {
+  st.ensure_states();  // the packet integrator's states on request (PacketRays::states_on_request)
   const Metric& mm = *rs.metric;
   const Segment seg{vec4_at(st.y0), vec4_at(st.y1), p0, p1, chart0, chart1, &st, &mm};
   // rs.best is a fresh Hit until a chord hits, and an object that finds no hit leaves it as it is
@@ -563,7 +564,9 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
     colors[r.sample] = res.color;
     if (samples[r.sample].data) fill_data(res, *samples[r.sample].data);
   };
-  m.integrate_packet(cfg_, PacketRays{next_ray, on_step, done, on_steps});
+  // test_step reads a step's states only in test_chord, which asks for them (ensure_states), and
+  // its pseudo-Cartesian ends where given.
+  m.integrate_packet(cfg_, PacketRays{next_ray, on_step, done, on_steps, true});
 }
 
 Color Tracer::stop_color(StopReason reason) const {

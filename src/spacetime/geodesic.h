@@ -135,6 +135,15 @@ struct StepView {
   /// cos θ and sin²θ: kerr_mino.h), else null.
   const double* p0 = nullptr;
   const double* p1 = nullptr;
+  /// Set where the integrator gives y0, y1, dy0 and dy1 only on request (PacketRays::
+  /// states_on_request): they are valid after fill_states(fill_context); p0 and p1 are then always
+  /// given. Null where the states are valid as handed over.
+  void (*fill_states)(const void*) = nullptr;
+  const void* fill_context = nullptr;
+  /// Makes y0, y1, dy0 and dy1 valid (fill_states, where set).
+  void ensure_states() const {
+    if (fill_states) fill_states(fill_context);
+  }
 };
 enum class StepAction { Continue, Stop };
 using StepCallback = FunctionRef<StepAction(const StepView&)>;

@@ -58,6 +58,7 @@ struct MinoLaneCoeffs {
 struct MinoEndViews {
   alignas(64) double sign[kPacketLanes] = {}, offset[kPacketLanes] = {}, active[kPacketLanes] = {};
   KerrMinoRay::EndView* dst[kPacketLanes] = {};
+  bool position_only = false;  ///< only EndView::p (KerrMinoRay::bl_step_with_position)
 };
 
 /// The error tolerance of a packet's lanes (ErrorScale): eps_abs, eps_rel and, for a system with
@@ -351,7 +352,8 @@ void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance&
 }
 
 /// kerr_mino_bl_view (kerr_mino_bl.h) on every lane: the BL views of the Mino states y with
-/// σ-derivatives dy (SoA) on the lanes' θ branches, written to each lane's view (out.dst). A lane
+/// σ-derivatives dy (SoA) on the lanes' θ branches, written to each lane's view (out.dst), or
+/// only their pseudo-Cartesian positions (out.position_only: kerr_mino_position). A lane
 /// without a step (its y may be a rejected attempt, NaN) is viewed at φ = 0, which keeps sincos_t
 /// off its lane-by-lane route for arguments it cannot reduce.
 void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, const MinoEndViews& out) {
@@ -370,6 +372,17 @@ void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, 
       dys[i] = SimdD::load(dy + i * W + l);
     }
     ys[KerrMinoRHS::PHI] = select(active, ys[KerrMinoRHS::PHI], SimdD(0.0));
+    if (out.position_only) {
+      SimdD p[3];
+      HWY_NAMESPACE::kerr_mino_position(at(R::POLE), SimdD::load(out.sign + l), ys, p);  // this target's copy
+      HWY_ALIGN double rows[3][HWY_MAX_BYTES / sizeof(double)];
+      for (int i = 0; i < 3; ++i) p[i].store(rows[i]);
+      for (size_t j = 0; j < L; ++j) {
+        double* e = out.dst[l + j]->p;
+        for (int i = 0; i < 3; ++i) e[i] = rows[i][j];
+      }
+      continue;
+    }
     // v = (x, k, dk/dλ, p, 0): the rows of the views in EndView's order (xk, then p and its pad).
     SimdD v[16];
     HWY_NAMESPACE::kerr_mino_bl_view(k, axis, at(R::POLE), SimdD::load(out.sign + l), SimdD::load(out.offset + l), ys,
@@ -456,6 +469,20 @@ unsigned mino_constraint(const MinoLaneCoeffs& c, const double* y, double escape
     bits |= static_cast<unsigned>(esc[0]) << l | static_cast<unsigned>(cap[0]) << (8 + l);
   }
   return bits;
+}
+
+/// KerrMinoSystem::param_per_affine (dσ/dλ = 1/Σ = w²/(1 + a²z²w²)) of the states y (SoA) on every
+/// lane, with the scalar function's operations, so its bits. Why: the scalar division of each lane
+/// before each attempt stalled the driver (perf annotate of kerrAccretionDisk.scm, issue 13).
+void mino_param_per_affine(const MinoLaneCoeffs& c, const double* y, double* out) {
+  using R = MinoLaneCoeffs;
+  using I = KerrMinoRHS;
+  constexpr int W = kPacketLanes;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const SimdD w = SimdD::load(y + I::W * W + l);
+    const SimdD z = SimdD::load(c.v[R::POLE] + l) + SimdD::load(y + I::Z * W + l);  // PolarOffset::z
+    (w * w / (SimdD(1.0) + SimdD::load(c.v[R::A2] + l) * z * z * w * w)).store(out + l);
+  }
 }
 
 /// integrate_with's set_tolerance (integrators.h) for the Mino-time system on every lane: the 1/D_i
@@ -578,6 +605,7 @@ HWY_EXPORT(inside_box_lanes);
 HWY_EXPORT(take_step_ends);
 HWY_EXPORT(mino_valid);
 HWY_EXPORT(mino_constraint);
+HWY_EXPORT(mino_param_per_affine);
 
 namespace {
 
@@ -617,7 +645,8 @@ struct Lane {
 ///   valid_lanes(y, lanes), step_checks(cfg, y, lanes, out) (optional)   the scalar system's valid,
 ///                                       and its constraint, escaped and captured (PacketStepChecks),
 ///                                       of all lanes' states at once;
-///   accepted_states_change(cfg) (optional)   false where the system never changes an accepted state.
+///   accepted_states_change(cfg) (optional)   false where the system never changes an accepted state;
+///   param_per_affine_lanes(y, out) (optional)   Sys::param_per_affine of all lanes' states at once.
 template <class Tab, class PS>
 void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   constexpr int W = kPacketLanes, N = PS::N;
@@ -648,6 +677,9 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it.
   bool accepted_states_change = true;
   if constexpr (requires { ps.accepted_states_change(cfg); }) accepted_states_change = ps.accepted_states_change(cfg);
+  // Whether the accept loop takes each attempt's state y1 (its tests or changes need it); else
+  // the loop that hands on the accepted steps takes it.
+  const bool takes_y1 = !kLaneChecks || kOwnAffine || accepted_states_change;
   auto affine = [](const Sys& s, const double* yy, double sv) {
     if constexpr (kOwnAffine) return s.affine(yy);
     return sv;
@@ -656,6 +688,9 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     if constexpr (kOwnAffine) return s.param_per_affine(yy);
     return 1.0;
   };
+  constexpr bool kLanePerAffine =
+      kOwnAffine && requires(PS& p, const double* yy, double* o) { p.param_per_affine_lanes(yy, o); };
+  HWY_ALIGN double per_affine_lanes[kLanePerAffine ? W : 1];  // PS::param_per_affine_lanes of y
 
   // integrate_with's constants (λ0 = 0).
   const double dir = cfg.direction >= 0 ? 1.0 : -1.0;
@@ -686,6 +721,14 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   auto put = [](double* soa, int l, const double* in) {
     for (int i = 0; i < N; ++i) soa[i * W + l] = in[i];
   };
+  // Each lane's y and dy also as one row (AoS), kept equal to the lane's column of y and dy; and
+  // the state y1 of its last attempt as the accept loop took it. Why: the steps are handed on and
+  // tested per lane, in rows, and gathering the columns again for every use (the step's start
+  // and its derivative, the start's affine parameter twice) was a ninth of kerrAccretionDisk.scm's
+  // tracing instructions (callgrind, issue 13). The batched steps (take_steps) do not keep the
+  // rows: only the lane-by-lane loop and systems with their own affine parameter read them, and a
+  // batching system has neither (the static_assert above).
+  HWY_ALIGN double y_row[W][N], dy_row[W][N], y1_row[W][N];
   // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step, for the lanes in
   // need_tol at once before the next attempt (PS::tolerance_inv, all lanes: a lane whose state
   // did not change gets the same values again).
@@ -718,6 +761,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       if (!ps.start(l, ys, yl)) continue;
       put(y, l, yl);
+      std::memcpy(y_row[l], yl, sizeof yl);
       Lane<Tab, N>& ln = lane[l];
       ln = Lane<Tab, N>{};
       ctl.h_old[l] = ctl.q_old[l] = ctl.after_reject[l] = 0.0;  // a fresh StepController
@@ -810,9 +854,13 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       if (need_dy) {
         ps.rhs(y, dy, need_dy);
         for (int l = 0; l < W; ++l)
-          if (need_dy >> l & 1u) ++lane[l].res.rhs_evals;
+          if (need_dy >> l & 1u) {
+            ++lane[l].res.rhs_evals;
+            get(dy, l, dy_row[l]);
+          }
         need_dy = 0;
       }
+      if constexpr (kLanePerAffine) ps.param_per_affine_lanes(y, per_affine_lanes);
       for (int l = 0; l < W; ++l) {
         Lane<Tab, N>& ln = lane[l];
         if (!ln.live || (ready >> l & 1u)) continue;
@@ -821,8 +869,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
           refill(l);
           continue;
         }
-        double yl[N];
-        if constexpr (kOwnAffine) get(y, l, yl);
+        const double* yl = y_row[l];
         const Sys& sys = ps.system(l);
         ln.remaining = cfg.lambda_max - std::fabs(affine(sys, yl, ln.lambda) - ln.affine0);
         if (!(ln.remaining > lambda_res)) {
@@ -832,7 +879,11 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         }
         ln.hstep = ln.h;
         ln.clipped = false;
-        const double ppa = per_affine(sys, yl);
+        double ppa;
+        if constexpr (kLanePerAffine)
+          ppa = per_affine_lanes[l];
+        else
+          ppa = per_affine(sys, yl);
         if constexpr (kOwnAffine) {
           ln.hmax = ctl.hmax[l] = hmax_affine * ppa;
           ln.hmin = ctl.hmin[l] = cfg.step_min * ppa;
@@ -860,8 +911,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       Lane<Tab, N>& ln = lane[l];
       auto& sys = ps.system(l);
       ln.res.rhs_evals += Tab::S - 1;
-      double yl1[N];
-      if (!kLaneChecks || kOwnAffine || accepted_states_change) get(y1, l, yl1);
+      double* yl1 = y1_row[l];
+      if (takes_y1) get(y1, l, yl1);
       const double err = attempt_err.err[l];
       const bool finite = attempt_err.finite >> l & 1u;
       bool in_domain;
@@ -899,9 +950,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       if constexpr (kOwnAffine) {
         // λ_max overshot, or a step longer than step_max in λ: retried shorter (integrate_with).
-        double yl[N];
-        get(y, l, yl);
-        const double dl = std::fabs(sys.affine(yl1) - sys.affine(yl));
+        const double dl = std::fabs(sys.affine(yl1) - sys.affine(y_row[l]));
         if (ln.affine_retries < 50) {
           if (std::isfinite(cfg.lambda_max) && dl > ln.remaining * (1.0 + 1e-12)) {
             ln.h = ln.hstep * ln.remaining / dl;
@@ -924,7 +973,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         if (cfg.reproject) sys.reproject(yl1, cfg.type);
         if constexpr (requires { sys.project_invariants(yl1); }) changed = sys.project_invariants(yl1);
         if constexpr (requires { sys.rescale(yl1, cfg.type); }) changed = sys.rescale(yl1, cfg.type) || changed;
-        put(y1, l, yl1);
+        if (cfg.reproject || changed) put(y1, l, yl1);
       }
       accepted |= 1u << l;
       if (!Tab::kFsal || cfg.reproject || changed) need_dy1 |= 1u << l;
@@ -975,10 +1024,11 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       auto& sys = ps.system(l);
       ready &= ~(1u << l);
       if (need_dy1 >> l & 1u) ++ln.res.rhs_evals;
-      double yl[N], yl1[N], dyl[N], dyl1[N];
-      get(y, l, yl);
-      get(y1, l, yl1);
-      get(dy, l, dyl);
+      const double* yl = y_row[l];
+      const double* dyl = dy_row[l];
+      double* yl1 = y1_row[l];
+      if (!takes_y1) get(y1, l, yl1);
+      double dyl1[N];
       get(dy1, l, dyl1);
       double c, scale;
       if constexpr (kLaneChecks) {
@@ -999,6 +1049,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       if constexpr (requires { ps.rebase(l, yl1); }) ps.rebase(l, yl1);
       put(y, l, yl1);
       put(dy, l, dyl1);
+      std::memcpy(y_row[l], yl1, sizeof y_row[l]);
+      std::memcpy(dy_row[l], dyl1, sizeof dyl1);
       ln.lambda = lambda1;
       set_tolerance(l);
       StopReason stop = StopReason::None;
@@ -1111,6 +1163,10 @@ struct MinoPacket {
                double* y1, double* dy1, AttemptError& err) const {
     HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
   }
+  /// KerrMinoSystem::param_per_affine of all lanes' states at once (mino_param_per_affine, SIMD).
+  void param_per_affine_lanes(const double* y, double* out) const {
+    HWY_DYNAMIC_DISPATCH(mino_param_per_affine)(coeffs, y, out);
+  }
   /// KerrMinoSystem::valid of all lanes' states at once (mino_valid, SIMD).
   unsigned valid_lanes(const double* y, unsigned lanes) const { return HWY_DYNAMIC_DISPATCH(mino_valid)(coeffs, y, lanes); }
   /// KerrMinoSystem's constraint (on SIMD lanes: mino_constraint, kerr_mino_constraint's bits),
@@ -1154,11 +1210,14 @@ struct MinoPacket {
       ends.sign[l] = b.sign;
       ends.offset[l] = b.offset;
     }
+    ends.position_only = rays.states_on_request;
     HWY_DYNAMIC_DISPATCH(mino_end_views)(coeffs, y1, dy1, ends);
   }
-  /// The accepted step of lane l in BL terms, the view of its end written by before_steps.
+  /// The accepted step of lane l in BL terms, the view of its end (or its position alone, where
+  /// the caller asks for the states: PacketRays::states_on_request) written by before_steps.
   StepAction step(int l, const StepView& s) {
     if (!rays.on_step) return ray[l]->step(s, {});
+    if (rays.states_on_request) return rays.on_step(l, ray[l]->bl_step_with_position(s));
     return rays.on_step(l, ray[l]->bl_step_with_end(s));
   }
   void rebase(int l, double* y) {

@@ -71,6 +71,10 @@ struct PacketRays {
   /// gathering each lane's StepView (the caller gathers those it needs: PacketSteps::view); returns
   /// the lanes whose rays stop (on_step's StepAction::Stop). The Mino-time packet calls on_step.
   FunctionRef<unsigned(const PacketSteps& steps)> on_steps;
+  /// on_step reads a StepView's states (y0, y1, dy0, dy1) only after StepView::ensure_states,
+  /// and its pseudo-Cartesian ends where given: an integrator may then convert the states only on
+  /// request (Carter's equations in Mino time: KerrMinoRay::bl_step_with_position).
+  bool states_on_request = false;
 };
 
 /// Whether the packet integrator serves solver `kind` (the explicit embedded pairs that

@@ -104,6 +104,28 @@ void KerrMinoRay::to_bl(const double* ym, const double* dym, EndView& v) const {
     v.xk[4 + i] = kk[i];
     v.xk[8 + i] = acc[i];
   }
+  v.has_xk = true;
+}
+
+void KerrMinoRay::fill_views(const void* ray) {
+  // The views belong to the ray (end_); the StepView that asks is const.
+  KerrMinoRay& r = *const_cast<KerrMinoRay*>(static_cast<const KerrMinoRay*>(ray));
+  // After report: the step's start is end_[start_ ^ 1], its end end_[start_].
+  for (int e = 0; e < 2; ++e) {
+    EndView& v = r.end_[r.start_ ^ (e == 0 ? 1 : 0)];
+    if (v.has_xk) continue;
+    double ym[KerrMinoRHS::N];
+    std::copy_n(r.mino_states_[2 * e], KerrMinoRHS::N, ym);
+    ym[KerrMinoRHS::Z] = v.zeta;
+    Vec4 x, kk, acc;
+    kerr_mino_to_bl(r.c, PolarOffset{v.pole}, ym, r.mino_states_[2 * e + 1], v.branch, x, kk, &acc);
+    for (int i = 0; i < 4; ++i) {
+      v.xk[i] = x[i];
+      v.xk[4 + i] = kk[i];
+      v.xk[8 + i] = acc[i];
+    }
+    v.has_xk = true;
+  }
 }
 
 StepAction KerrMinoRay::step(const StepView& s, StepCallback cb) {

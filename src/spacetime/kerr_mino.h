@@ -401,9 +401,14 @@ struct KerrMinoRay {
 
   /// The BL view of one step end as the callback sees it: xk = (x, k, dk/dλ), so that the
   /// StepView's state (x, k) is xk[0..8) and its derivative (k, dk/dλ) is xk[4..12) — k stored
-  /// once for both — and the pseudo-Cartesian position.
+  /// once for both — and the pseudo-Cartesian position. A view given on request
+  /// (bl_step_with_position) holds until then, instead of xk, the pole, ζ and θ branch its Mino
+  /// state is to be converted on (fill_views).
   struct EndView {
     double xk[12], p[4];  ///< p[3]: padding, for the packet's stores of four lanes' rows at once
+    double pole, zeta;    ///< ζ: relative to `pole`, before a re-basing (KerrMinoSystem::rebase)
+    ThetaBranch branch;
+    bool has_xk = true;  ///< xk is the view of the state (false: to be converted by fill_views)
     const double* y() const { return xk; }
     const double* dy() const { return xk + 4; }
   };
@@ -435,13 +440,45 @@ struct KerrMinoRay {
   StepView bl_step_with_end(const StepView& s) {
     if (!have0_) to_bl(s.y0, s.dy0, end_[start_]);
     track_axis(s);
+    next_end().has_xk = true;
     return report(s);
+  }
+  /// bl_step_with_end for a caller that reads the ends' BL states only on request
+  /// (PacketRays::states_on_request): next_end() holds the pseudo-Cartesian position of s's end
+  /// alone (kerr_mino_position), and the StepView's states are converted by its fill
+  /// (StepView::fill_states: fill_views). Why: the renderer tests the chord of a step against
+  /// the scene in a few of a thousand steps (the others lie in the scene's empty ball or beyond
+  /// its bounds: render/segment_cull.h), and only then reads x, k and dk/dλ; their conversion (an
+  /// arcsine, four divisions) was half of the packet's BL views (callgrind of
+  /// kerrAccretionDisk.scm, issue 13).
+  /// The Mino states of both ends are those of s, kept by reference (s outlives the callback that
+  /// may ask for the views): an unconverted view of the step's start (the previous step's end) has
+  /// the state s.y0 but for ζ, which a re-basing after that step changed (EndView::zeta).
+  StepView bl_step_with_position(const StepView& s) {
+    if (!have0_) to_bl(s.y0, s.dy0, end_[start_]);
+    track_axis(s);
+    EndView& v = next_end();
+    v.pole = sys.f.polar.pole;
+    v.zeta = s.y1[KerrMinoRHS::Z];
+    v.branch = branch;
+    v.has_xk = false;
+    mino_states_[0] = s.y0;
+    mino_states_[1] = s.dy0;
+    mino_states_[2] = s.y1;
+    mino_states_[3] = s.dy1;
+    StepView bl = report(s);
+    bl.fill_states = &fill_views;
+    bl.fill_context = this;
+    return bl;
   }
   /// The BL (x, k) of Mino state y (after the last step) to y_bl[0..7].
   void to_bl_state(const double* y, double* y_bl) const;
 
  private:
   void to_bl(const double* y, const double* dy, EndView& v) const;
+  /// StepView::fill_states of bl_step_with_position: the BL states of the views that hold only
+  /// their Mino state (EndView::has_xk), converted as to_bl would have at their step.
+  static void fill_views(const void* ray);
   /// The step between the views end_[start_] and next_end(); the view of its end is the start of
   /// the next one.
   StepView report(const StepView& s) {
@@ -454,6 +491,8 @@ struct KerrMinoRay {
   EndView end_[2];
   int start_ = 0;
   bool have0_ = false;
+  /// y0, dy0, y1, dy1 of the last step in Mino terms (bl_step_with_position), for fill_views.
+  const double* mino_states_[4] = {};
 };
 
 /// Integrates a Kerr (a = 0: Schwarzschild) geodesic given in Boyer–Lindquist (x, k) =

@@ -19,6 +19,29 @@ GEOVIS_HOT_INLINE T kerr_mino_acos_z(const T& pole, const T& zeta) {
   return select(pole > 0.0, half, kPi - half);
 }
 
+/// The pseudo-Cartesian position r (sin θ cos φ, sin θ sin φ, cos θ) (Metric::to_pseudo_cartesian)
+/// of Mino state y (ζ relative to `pole`) on the θ branch of sign `sign`, as kerr_mino_bl_view
+/// gives it (there: p), with the same operations, so the same bits: cos θ = z (clamped),
+/// sin θ = sign·√(1 − z²), one sine and cosine, of φ. For the packet's steps whose BL view is asked
+/// for only where a caller reads it (PacketRays::states_on_request): the position alone, for every
+/// step.
+template <class T>
+GEOVIS_HOT_INLINE void kerr_mino_position(const T& pole, const T& sign, const T* y, T* p) {
+  using std::sqrt;
+  enum { W = 0, Z = 1, PHI = 5 };
+  const T zeta = y[Z], z_raw = pole + zeta;
+  const T z = select(z_raw < -1.0, T(-1.0), select(1.0 < z_raw, T(1.0), z_raw));  // std::clamp(z, −1, 1)
+  const T r = 1.0 / y[W];
+  const T s2_raw = -zeta * (2.0 * pole + zeta);                // sin²θ (PolarOffset::sin2)
+  const T s_abs = sqrt(select(0.0 < s2_raw, s2_raw, T(0.0)));  // |sin θ|
+  T sp, cp;
+  sincos_t(y[PHI], sp, cp);
+  const T st = sign * s_abs;
+  p[0] = r * st * cp;
+  p[1] = r * st * sp;
+  p[2] = r * z;
+}
+
 /// kerr_mino_to_bl (kerr_mino.h, where the formulas are derived) on any number type T: BL position
 /// x and tangent k of Mino state y = (w, ζ, w', z', t, φ, λ) (ζ relative to `pole`) with
 /// σ-derivative dy, on the θ branch θ = offset + sign·acos z (ThetaBranch); dk/dλ when dk is given,
@@ -76,12 +99,5 @@ GEOVIS_HOT_INLINE void kerr_mino_bl_view(const KerrMinoCoeffs<T>& c, const Cond&
     dk[2] = (ddth * sigma - dth * dsig) * i3;
     dk[3] = (ddph * sigma - dy[PHI] * dsig) * i3;
   }
-  if (p) {
-    T sp, cp;
-    sincos_t(y[PHI], sp, cp);
-    const T st = sign * s_abs;
-    p[0] = r * st * cp;
-    p[1] = r * st * sp;
-    p[2] = r * z;
-  }
+  if (p) kerr_mino_position(pole, sign, y, p);  // r, z and |sin θ| as above
 }

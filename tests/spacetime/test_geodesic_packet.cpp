@@ -145,21 +145,23 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
     scalar[r].res = m.integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
     std::copy(y, y + 8, scalar[r].y);
   }
+  size_t next_ray = 0, finished = 0;
+  int lane_ray[kPacketLanes];
+  auto next = [&](int lane, double* y) {
+    if (next_ray == n) return false;
+    lane_ray[lane] = static_cast<int>(next_ray);
+    std::copy(y0[next_ray].begin(), y0[next_ray].end(), y);
+    ++next_ray;
+    return true;
+  };
   // The packet with its steps handed on lane by lane (on_step), and a round at a time (on_steps,
   // the views gathered by PacketSteps::view: the same steps).
   for (const bool batch : {false, true}) {
     SCOPED_TRACE(batch ? "on_steps" : "on_step");
     std::vector<RayRecord> packet(n);
     for (size_t r = 0; r < n; ++r) packet[r].stop_at = stops[r];
-    size_t next_ray = 0;
-    int lane_ray[kPacketLanes];
-    auto next = [&](int lane, double* y) {
-      if (next_ray == n) return false;
-      lane_ray[lane] = static_cast<int>(next_ray);
-      std::copy(y0[next_ray].begin(), y0[next_ray].end(), y);
-      ++next_ray;
-      return true;
-    };
+    next_ray = 0;
+    finished = 0;
     auto on_step = [&](int lane, const StepView& st) { return record(packet[lane_ray[lane]], st); };
     auto on_steps = [&](const PacketSteps& steps) {
       unsigned stop = 0;
@@ -175,7 +177,6 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
       }
       return stop;
     };
-    size_t finished = 0;
     auto done = [&](int lane, const double* y, const GeodesicResult& res) {
       RayRecord& r = packet[lane_ray[lane]];
       std::copy(y, y + 8, r.y);
@@ -204,6 +205,40 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
         ASSERT_EQ(std::memcmp(a.steps[s].data(), b.steps[s].data(), sizeof a.steps[s]), 0) << "step " << s + 1;
         ASSERT_EQ(std::memcmp(a.lambdas[s].data(), b.lambdas[s].data(), sizeof a.lambdas[s]), 0) << "step " << s + 1;
       }
+    }
+  }
+  // The states on request (PacketRays::states_on_request; the Mino-time packet converts them only
+  // then, KerrMinoRay::bl_step_with_position): asked for at every third step only, so that the
+  // step's start is a view left unconverted at the step before (across re-basings at the
+  // equator, too), they are the scalar run's to the bit — the end (y1, dy1) and the start (y0:
+  // the previous step's end).
+  next_ray = 0;
+  finished = 0;
+  std::vector<RayRecord> on_request(n);
+  auto on_step_on_request = [&](int lane, const StepView& st) {
+    RayRecord& r = on_request[lane_ray[lane]];
+    if (st.step_index % 3 == 0) {
+      st.ensure_states();
+      std::array<double, 16> s0;
+      for (int i = 0; i < 8; ++i) s0[i] = st.y0[i];
+      r.steps.push_back(s0);
+      record(r, st);
+    }
+    return st.step_index == r.stop_at ? StepAction::Stop : StepAction::Continue;
+  };
+  auto done_on_request = [&](int, const double*, const GeodesicResult&) { ++finished; };
+  for (size_t r = 0; r < n; ++r) on_request[r].stop_at = stops[r];
+  m.integrate_packet(cfg, PacketRays{next, on_step_on_request, done_on_request, {}, true});
+  ASSERT_EQ(finished, n);
+  for (size_t r = 0; r < n; ++r) {
+    SCOPED_TRACE("ray " + std::to_string(r) + ", states on request");
+    const RayRecord &a = scalar[r], &b = on_request[r];
+    ASSERT_EQ(b.steps.size(), 2 * (a.steps.size() / 3));
+    for (size_t j = 0; j < b.steps.size() / 2; ++j) {
+      const size_t s = 3 * (j + 1) - 1;  // 0-based index of step 3(j + 1)
+      ASSERT_EQ(std::memcmp(a.steps[s].data(), b.steps[2 * j + 1].data(), sizeof a.steps[s]), 0) << "step " << s + 1;
+      ASSERT_EQ(std::memcmp(a.steps[s - 1].data(), b.steps[2 * j].data(), 8 * sizeof(double)), 0)
+          << "start of step " << s + 1;
     }
   }
 }
