@@ -642,7 +642,7 @@ struct Lane {
 ///   before_steps(lanes, y, y1, dy1) (optional)   once per round, before the steps of the accepted
 ///                                       lanes (bits of `lanes`: y → y1) are handed to step;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies;
-///   valid_lanes(y, lanes), step_checks(cfg, y, lanes, out) (optional)   the scalar system's valid,
+///   valid_lanes(y, lanes), step_checks(cfg, y, lanes, out)   the scalar system's valid,
 ///                                       and its constraint, escaped and captured (PacketStepChecks),
 ///                                       of all lanes' states at once;
 ///   accepted_states_change(cfg) (optional)   false where the system never changes an accepted state;
@@ -656,12 +656,11 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     s.param_per_affine(p);
   };
   constexpr bool kScaledTol = requires(const Sys& s, const double* p, double* q) { s.tolerance_inv_scale(p, q); };
-  // A packet system that tests the states of its lanes at once (PS::valid_lanes, PS::step_checks);
-  // the others are tested lane by lane through system(l).
-  constexpr bool kLaneChecks = requires(PS& p, const double* yy, PacketStepChecks& out) {
+  // A packet system tests the states of its lanes at once (PS::valid_lanes, PS::step_checks).
+  static_assert(requires(PS& p, const double* yy, PacketStepChecks& out) {
     p.valid_lanes(yy, 0u);
     p.step_checks(cfg, yy, 0u, out);
-  };
+  });
   // A packet system that tests Sys::inside of all lanes' accepted states at once
   // (PS::inside_lanes); it must not change a state between the test and the step (rebase).
   constexpr bool kLaneInside = requires(PS& p, const double* yy) { p.inside_lanes(cfg, yy); };
@@ -670,7 +669,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // caller takes them so: PS::batch_steps), without a StepView per lane; its states need no
   // re-basing and its affine parameter is the integrator's.
   constexpr bool kBatch = requires(PS& p, const PacketSteps& s) { p.steps(s); };
-  static_assert(!kBatch || (!kOwnAffine && kLaneChecks && kLaneInside && !requires(double* yy) { ps.rebase(0, yy); }));
+  static_assert(!kBatch || (!kOwnAffine && kLaneInside && !requires(double* yy) { ps.rebase(0, yy); }));
   bool batch_steps = false;
   if constexpr (kBatch) batch_steps = ps.batch_steps();
   // Whether an accepted state may change before it is taken (reproject, project_invariants,
@@ -679,7 +678,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   if constexpr (requires { ps.accepted_states_change(cfg); }) accepted_states_change = ps.accepted_states_change(cfg);
   // Whether the accept loop takes each attempt's state y1 (its tests or changes need it); else
   // the loop that hands on the accepted steps takes it.
-  const bool takes_y1 = !kLaneChecks || kOwnAffine || accepted_states_change;
+  const bool takes_y1 = kOwnAffine || accepted_states_change;
   auto affine = [](const Sys& s, const double* yy, double sv) {
     if constexpr (kOwnAffine) return s.affine(yy);
     return sv;
@@ -903,8 +902,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       need_tol = 0;
     }
     ps.attempt(cfg.kind, ready, tol, y, dy, hv, y1, dy1, attempt_err);
-    unsigned valid = 0;
-    if constexpr (kLaneChecks) valid = ps.valid_lanes(y1, ready & attempt_err.finite);
+    const unsigned valid = ps.valid_lanes(y1, ready & attempt_err.finite);
     unsigned accepted = 0, need_dy1 = 0;
     for (int l = 0; l < W; ++l) {
       if (!(ready >> l & 1u)) continue;
@@ -915,11 +913,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       if (takes_y1) get(y1, l, yl1);
       const double err = attempt_err.err[l];
       const bool finite = attempt_err.finite >> l & 1u;
-      bool in_domain;
-      if constexpr (kLaneChecks)
-        in_domain = valid >> l & 1u;
-      else
-        in_domain = finite && sys.valid(yl1);
+      const bool in_domain = valid >> l & 1u;
       if (!in_domain || (adaptive && !(err <= 1.0))) {
         ready &= ~(1u << l);
         if (!adaptive) {
@@ -993,19 +987,9 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       ps.rhs(y1, dy1, need_dy1);
     }
     PacketStepChecks checks;
-    if constexpr (kLaneChecks) ps.step_checks(cfg, y1, accepted, checks);
+    ps.step_checks(cfg, y1, accepted, checks);
     unsigned inside = 0;  // bit l: lane l's y1 (as the step hands it on) inside the box
     if constexpr (kLaneInside) inside = ps.inside_lanes(cfg, y1);
-    // MetricSystem::escaped of lane l's new state, which sets `radius` where the ray escaped.
-    auto escaped = [&](int l, const double* yl1, double& radius) {
-      if constexpr (kLaneChecks) {
-        if (!(checks.escaped >> l & 1u)) return false;
-        radius = checks.escape_radius[l];
-        return true;
-      } else {
-        return ps.system(l).escaped(cfg, yl1, radius);
-      }
-    };
     if constexpr (requires { ps.before_steps(accepted, y, y1, dy1); }) ps.before_steps(accepted, y, y1, dy1);
     // ln.h = min(hmax, max(control.next_with_root(hstep, err, root, true, after_reject), hmin)) of
     // every accepted lane (err and root: attempt_err's; hstep = |hv|), taken below
@@ -1030,14 +1014,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       if (!takes_y1) get(y1, l, yl1);
       double dyl1[N];
       get(dy1, l, dyl1);
-      double c, scale;
-      if constexpr (kLaneChecks) {
-        c = checks.constraint[l];
-        scale = checks.constraint_scale[l];
-      } else {
-        sys.constraint(yl1, cfg.type, c, scale);
-      }
-      if (!(std::fabs(c) <= cfg.constraint_tol * scale)) {
+      if (!(std::fabs(checks.constraint[l]) <= cfg.constraint_tol * checks.constraint_scale[l])) {
         finish(l, StopReason::Constraint);
         refill(l);
         continue;
@@ -1060,9 +1037,10 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         stop = StopReason::BoundingBox;
       else if (ln.clipped)
         stop = StopReason::LambdaMax;
-      else if (escaped(l, yl1, ln.res.escape_radius))
+      else if (checks.escaped >> l & 1u) {
+        ln.res.escape_radius = checks.escape_radius[l];
         stop = StopReason::Escaped;
-      else if (kLaneChecks ? (checks.captured >> l & 1u) != 0 : sys.captured(cfg, yl1))
+      } else if (checks.captured >> l & 1u)
         stop = StopReason::Invalid;
       if (stop != StopReason::None) {
         finish(l, stop);
