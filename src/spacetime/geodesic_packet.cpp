@@ -785,6 +785,30 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     }
   };
 
+  // integrate_with's tests after lane l's step was taken, in its order: why the ray stops there
+  // (StopReason::None: it goes on); `callback_stop`: the step's callback stopped it, `in_box`: the
+  // new state is inside the bounding box. Sets the escape radius where the ray escaped.
+  auto stop_after_step = [&](int l, bool callback_stop, bool in_box, const PacketStepChecks& checks) {
+    if (callback_stop) return StopReason::Callback;
+    if (!in_box) return StopReason::BoundingBox;
+    if (lane[l].clipped) return StopReason::LambdaMax;
+    if (checks.escaped >> l & 1u) {
+      lane[l].res.escape_radius = checks.escape_radius[l];
+      return StopReason::Escaped;
+    }
+    if (checks.captured >> l & 1u) return StopReason::Invalid;
+    return StopReason::None;
+  };
+  // Lane l goes on after its step: the step size the control gave (adaptive), a fresh boundary
+  // search, the controller told that the step was accepted.
+  auto go_on = [&](int l) {
+    Lane<Tab, N>& ln = lane[l];
+    if (adaptive) ln.h = ctl.h_next[l];
+    if (!ln.after_reject) ln.h_cross = 0.0;
+    ln.after_reject = false;
+    ctl.after_reject[l] = 0.0;
+  };
+
   // The accepted steps of a round (bits of `accepted`; `need_dy1`, `checks`, `inside` as the
   // round's loop below has them) where PS hands them on at once (kBatch, batch_steps): the same
   // constraint test, step, stop tests and step size per lane as that loop, the steps handed on
@@ -820,28 +844,13 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         }
         ln.lambda = lambda1[l];
         set_tolerance(l);
-        StopReason stop = StopReason::None;
-        if (stopped >> l & 1u) {
-          stop = StopReason::Callback;
-        } else if (!(inside >> l & 1u)) {
-          stop = StopReason::BoundingBox;
-        } else if (ln.clipped) {
-          stop = StopReason::LambdaMax;
-        } else if (checks.escaped >> l & 1u) {
-          ln.res.escape_radius = checks.escape_radius[l];
-          stop = StopReason::Escaped;
-        } else if (checks.captured >> l & 1u) {
-          stop = StopReason::Invalid;
-        }
-        if (stop != StopReason::None) {
+        if (const StopReason stop = stop_after_step(l, stopped >> l & 1u, inside >> l & 1u, checks);
+            stop != StopReason::None) {
           finish(l, stop);
           refill(l);
           continue;
         }
-        if (adaptive) ln.h = ctl.h_next[l];
-        if (!ln.after_reject) ln.h_cross = 0.0;
-        ln.after_reject = false;
-        ctl.after_reject[l] = 0.0;
+        go_on(l);
       }
     }
   };
@@ -1030,28 +1039,15 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       std::memcpy(dy_row[l], dyl1, sizeof dyl1);
       ln.lambda = lambda1;
       set_tolerance(l);
-      StopReason stop = StopReason::None;
-      if (act == StepAction::Stop)
-        stop = StopReason::Callback;
-      else if (kLaneInside ? !(inside >> l & 1u) : !sys.inside(cfg, yl1))
-        stop = StopReason::BoundingBox;
-      else if (ln.clipped)
-        stop = StopReason::LambdaMax;
-      else if (checks.escaped >> l & 1u) {
-        ln.res.escape_radius = checks.escape_radius[l];
-        stop = StopReason::Escaped;
-      } else if (checks.captured >> l & 1u)
-        stop = StopReason::Invalid;
-      if (stop != StopReason::None) {
+      const bool in_box = kLaneInside ? (inside >> l & 1u) != 0 : sys.inside(cfg, yl1);
+      if (const StopReason stop = stop_after_step(l, act == StepAction::Stop, in_box, checks);
+          stop != StopReason::None) {
         finish(l, stop);
         refill(l);
         continue;
       }
-      if (adaptive) ln.h = ctl.h_next[l];
       if (!adaptive && kOwnAffine) ln.h = std::fabs(cfg.step_size) * per_affine(sys, yl1);
-      if (!ln.after_reject) ln.h_cross = 0.0;
-      ln.after_reject = false;
-      ctl.after_reject[l] = 0.0;
+      go_on(l);
     }
   }
 }
