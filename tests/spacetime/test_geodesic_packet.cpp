@@ -132,7 +132,7 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
         return given = true;
       };
       auto done = [](int, const double*, const GeodesicResult&) {};
-      EXPECT_THROW(m.integrate_packet(cfg, PacketRays{next, {}, done}), std::exception) << ex.what();
+      EXPECT_THROW(m.integrate_packet(cfg, PacketRays{next, {}, done, {}}), std::exception) << ex.what();
     }
   }
   const size_t n = y0.size();
@@ -186,7 +186,7 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
     if (batch)
       m.integrate_packet(cfg, PacketRays{next, on_step, done, on_steps});
     else
-      m.integrate_packet(cfg, PacketRays{next, on_step, done});
+      m.integrate_packet(cfg, PacketRays{next, on_step, done, {}});
     ASSERT_EQ(finished, n);
     for (size_t r = 0; r < n; ++r) {
       SCOPED_TRACE("ray " + std::to_string(r));
@@ -520,7 +520,7 @@ TEST(GeodesicPacket, RejectsOtherSolvers) {
   cfg.kind = SolverKind::BulirschStoer;
   auto next = [](int, double*) { return false; };
   auto done = [](int, const double*, const GeodesicResult&) {};
-  EXPECT_THROW(m->integrate_packet(cfg, PacketRays{next, {}, done}), Error);
+  EXPECT_THROW(m->integrate_packet(cfg, PacketRays{next, {}, done, {}}), Error);
 }
 
 // EddFinkIn and MorrisThorne test the validity and the escape of a packet's states on SIMD lanes

@@ -576,7 +576,7 @@ TEST(Integrators, NoHeapAllocationWhileIntegratingPackets) {
     };
     auto done = [&](int, const double*, const GeodesicResult&) { ++finished; };
     const long before = g_allocations.load();
-    m->integrate_packet(cfg, PacketRays{next, on_step, done});
+    m->integrate_packet(cfg, PacketRays{next, on_step, done, {}});
     EXPECT_EQ(g_allocations.load(), before) << name;
     EXPECT_EQ(finished, 20) << name;
     EXPECT_GT(steps, 20) << name;
