@@ -65,15 +65,8 @@ size_t SampledMotion::interval(double tau, size_t hint) const {
                 " is outside the computed range [" + number_text(lo) + ", " + number_text(hi) +
                 "] (extend it with `forward`/`backward` or `maxnumpoints`)");
   if (nodes_.size() == 1) return 0;
-  // The binary search below gives the last i <= size − 2 with τ_i <= τ (0 below the first node);
-  // the hint and its neighbours first (the last interval and τ within the slack of the range).
-  const size_t last = nodes_.size() - 2;
-  auto holds = [&](size_t i) { return nodes_[i].tau <= tau && (i == last || tau < nodes_[i + 1].tau); };
-  if (hint <= last) {
-    if (holds(hint)) return hint;
-    if (hint > 0 && holds(hint - 1)) return hint - 1;
-    if (hint < last && holds(hint + 1)) return hint + 1;
-  }
+  // The last i <= size − 2 with τ_i <= τ (0 below the first node): the last interval, τ within
+  // the slack of the range, and hints far from τ.
   auto it = std::upper_bound(node_tau_.begin(), node_tau_.end(), tau);
   size_t i = static_cast<size_t>(it - node_tau_.begin());
   i = i == 0 ? 0 : i - 1;
