@@ -471,8 +471,8 @@ unsigned mino_constraint(const MinoLaneCoeffs& c, const double* y, double escape
   return bits;
 }
 
-/// KerrMinoSystem::param_per_affine (dσ/dλ = 1/Σ = w²/(1 + a²z²w²)) of the states y (SoA) on every
-/// lane, with the scalar function's operations, so its bits. Why: the scalar division of each lane
+/// KerrMinoSystem::param_per_affine (kerr_mino_param_per_affine) of the states y (SoA) on every
+/// lane, the scalar function's template, so its bits. Why: the scalar division of each lane
 /// before each attempt stalled the driver (perf annotate of kerrAccretionDisk.scm, issue 13).
 void mino_param_per_affine(const MinoLaneCoeffs& c, const double* y, double* out) {
   using R = MinoLaneCoeffs;
@@ -481,7 +481,7 @@ void mino_param_per_affine(const MinoLaneCoeffs& c, const double* y, double* out
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
     const SimdD w = SimdD::load(y + I::W * W + l);
     const SimdD z = SimdD::load(c.v[R::POLE] + l) + SimdD::load(y + I::Z * W + l);  // PolarOffset::z
-    (w * w / (SimdD(1.0) + SimdD::load(c.v[R::A2] + l) * z * z * w * w)).store(out + l);
+    HWY_NAMESPACE::kerr_mino_param_per_affine(SimdD::load(c.v[R::A2] + l), w, z).store(out + l);
   }
 }
 

@@ -96,9 +96,10 @@ KerrMinoRay::KerrMinoRay(double M, double a, double r_break, const SolverConfig&
   sys.set_box(cfg, branch);
 }
 
-void KerrMinoRay::to_bl(const double* ym, const double* dym, EndView& v) const {
+void KerrMinoRay::to_bl(const PolarOffset& polar, const ThetaBranch& b, const double* ym, const double* dym,
+                        EndView& v, double* p) const {
   Vec4 x, kk, acc;
-  kerr_mino_to_bl(c, sys.f.polar, ym, dym, branch, x, kk, &acc, v.p);
+  kerr_mino_to_bl(c, polar, ym, dym, b, x, kk, &acc, p);
   for (int i = 0; i < 4; ++i) {
     v.xk[i] = x[i];
     v.xk[4 + i] = kk[i];
@@ -117,14 +118,7 @@ void KerrMinoRay::fill_views(const void* ray) {
     double ym[KerrMinoRHS::N];
     std::copy_n(r.mino_states_[2 * e], KerrMinoRHS::N, ym);
     ym[KerrMinoRHS::Z] = v.zeta;
-    Vec4 x, kk, acc;
-    kerr_mino_to_bl(r.c, PolarOffset{v.pole}, ym, r.mino_states_[2 * e + 1], v.branch, x, kk, &acc);
-    for (int i = 0; i < 4; ++i) {
-      v.xk[i] = x[i];
-      v.xk[4 + i] = kk[i];
-      v.xk[8 + i] = acc[i];
-    }
-    v.has_xk = true;
+    r.to_bl(PolarOffset{v.pole}, v.branch, ym, r.mino_states_[2 * e + 1], v, nullptr);  // v.p is given
   }
 }
 

@@ -250,8 +250,7 @@ struct KerrMinoSystem {
   double affine(const double* y) const { return y[I::LAM]; }
   /// dσ/dλ = 1/Σ at y: converts the caller's step sizes, given in λ.
   double param_per_affine(const double* y) const {
-    const double w = y[I::W], z = f.polar.z(y[I::Z]);
-    return w * w / (1.0 + k.a2 * z * z * w * w);
+    return kerr_mino_param_per_affine(k.a2, y[I::W], f.polar.z(y[I::Z]));
   }
   /// Tolerance scales (ErrorScale), as their reciprocals 1/s_i: an error δw is an error δr =
   /// δw/w², δz one of δθ = δz/|sin θ|, δw' one of δk^r = δw'/(w²Σ), δz' one of δk^θ = δz'/(|sin θ|
@@ -475,7 +474,12 @@ struct KerrMinoRay {
   void to_bl_state(const double* y, double* y_bl) const;
 
  private:
-  void to_bl(const double* y, const double* dy, EndView& v) const;
+  /// The view v of Mino state y with σ-derivative dy after the last step (its polar offset and θ
+  /// branch), with its pseudo-Cartesian position.
+  void to_bl(const double* y, const double* dy, EndView& v) const { to_bl(sys.f.polar, branch, y, dy, v, v.p); }
+  /// The view v of Mino state y on the given polar offset and θ branch; its position to p unless null.
+  void to_bl(const PolarOffset& polar, const ThetaBranch& b, const double* y, const double* dy, EndView& v,
+             double* p) const;
   /// StepView::fill_states of bl_step_with_position: the BL states of the views that hold only
   /// their Mino state (EndView::has_xk), converted as to_bl would have at their step.
   static void fill_views(const void* ray);

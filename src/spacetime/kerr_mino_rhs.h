@@ -6,6 +6,14 @@
 // instruction set: a template defined outside the target's region would be compiled for the
 // baseline and could not inline Highway's operations (as metrics/kerr_bl_accel.h).
 
+/// dσ/dλ = 1/Σ = w²/(1 + a²z²w²) (Σ = r² + a² cos²θ, w = 1/r, z = cos θ) of the Mino-time system
+/// (KerrMinoSystem::param_per_affine) on any number type T: one formula for one ray and for the
+/// lanes of a packet (geodesic_packet.cpp, mino_param_per_affine), so the same bits.
+template <class T>
+GEOVIS_HOT_INLINE T kerr_mino_param_per_affine(const T& a2, const T& w, const T& z) {
+  return w * w / (1.0 + a2 * z * z * w * w);
+}
+
 /// The right-hand side of the Mino-time system (kerr_mino.h) for state y = (w, ζ, w', z', t, φ, λ),
 /// z = pole + ζ, on any number type T; `axis` (L == 0: a bool, or a lane mask) picks the form
 /// without 1/sin²θ. One formula for one ray (KerrMinoRHS), for packets and for dual numbers.
