@@ -164,7 +164,46 @@ MotionSample ConstVelocityMotion::at_coordinate_time(double t) const {
   return at_proper_time((t - s0.x[0]) / s0.u[0]);
 }
 
-void ConstVelocityMotion::update_samples() { samples_ = {at_proper_time(0.0)}; }
+Vec4 ConstVelocityMotion::to_rest_frame(const Vec4& x) const {
+  const Mat4& l = rest_boost_;
+  Vec4 y;
+  for (int mu = 0; mu < 4; ++mu) y[mu] = (l[mu][0] * x[0] + l[mu][1] * x[1]) + (l[mu][2] * x[2] + l[mu][3] * x[3]);
+  return y;
+}
+
+Vec3 ConstVelocityMotion::rotate_to_object(const Vec4& y) const {
+  Vec3 p = spatial(y);
+  for (size_t i = first_rotation_; i < ops_.size(); ++i) {
+    // Rodrigues' formula for R(−ωt) (see the header): (a·p) a + (p − (a·p) a) cos ωt − (a × p) sin ωt,
+    // one sincos and no matrix.
+    const Vec3& a = ops_[i].axis;
+    const double phi = ops_[i].omega * y[0];
+    const double c = std::cos(phi), s = std::sin(phi);
+    const Vec3 along = dot(a, p) * a;
+    p = along + c * (p - along) - s * cross(a, p);
+  }
+  return p;
+}
+
+void ConstVelocityMotion::update_samples() {
+  samples_ = {at_proper_time(0.0)};
+  // The rest frame: Λ = B_k ⋯ B_1 of the boosts before the first rotation, column by column (each
+  // column is the image of a unit vector, boost_event being linear).
+  first_rotation_ = ops_.size();
+  for (size_t i = 0; i < ops_.size(); ++i)
+    if (!ops_[i].is_boost) {
+      first_rotation_ = i;
+      break;
+    }
+  boosts_first_ = true;
+  for (size_t i = first_rotation_; i < ops_.size(); ++i) boosts_first_ = boosts_first_ && !ops_[i].is_boost;
+  for (int nu = 0; nu < 4; ++nu) {
+    Vec4 column{{0, 0, 0, 0}};
+    column[nu] = 1;
+    for (size_t i = 0; i < first_rotation_; ++i) column = boost_event(column, ops_[i].v);
+    for (int mu = 0; mu < 4; ++mu) rest_boost_[mu][nu] = column[mu];
+  }
+}
 
 // ---- init-motion type "ConstVelocity" (docs/geovis-catalogue.md §8) ------------------------------
 

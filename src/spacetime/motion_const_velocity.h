@@ -41,6 +41,17 @@ class ConstVelocityMotion final : public Motion {
   Vec4 to_object_frame(const Vec4& x) const;
   /// Object coordinates -> lab event (inverse of to_object_frame).
   Vec4 from_object_frame(const Vec4& xo) const;
+  /// Whether every boost comes before every rotation: the object frame is then an inertial frame
+  /// (the rest frame, reached by the boosts) turned rigidly about its origin, and
+  ///   to_object_frame(x) = rotate_to_object(to_rest_frame(x))   (to rounding; test
+  /// Motion.RestFrameAndRotationComposeToTheObjectFrame).
+  bool boosts_first() const { return boosts_first_; }
+  /// Λx: the product Λ of the boosts before the first rotation applied to a lab event or vector
+  /// (linear: a segment x0 + s Δx maps to Λx0 + s ΛΔx). The rest frame of boosts_first() motions.
+  Vec4 to_rest_frame(const Vec4& x) const;
+  /// Object coordinates of the event whose rest-frame coordinates are y: the rotations after the
+  /// boosts at the rest-frame time y^0, x' = R(−ω y^0) x applied in order (boosts_first() motions).
+  Vec3 rotate_to_object(const Vec4& y) const;
   /// Differential of to_object_frame at lab event x applied to the vector v.
   Vec4 vector_to_object_frame(const Vec4& x, const Vec4& v) const;
   /// Differential of from_object_frame at object event xo applied to the vector vo.
@@ -58,6 +69,11 @@ class ConstVelocityMotion final : public Motion {
  private:
   void update_samples();
   std::vector<Op> ops_;
+  bool boosts_first_ = true;
+  /// Λ of to_rest_frame: row μ holds ∂(Λx)^μ/∂x^ν.
+  Mat4 rest_boost_{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+  /// Index in ops_ of the first rotation (ops_.size() when there is none).
+  size_t first_rotation_ = 0;
   std::vector<MotionSample> samples_;
 };
 

@@ -271,6 +271,42 @@ TEST(Motion, RollingWheel) {
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(jd[i], fd[i], 1e-8);
 }
 
+TEST(Motion, RestFrameAndRotationComposeToTheObjectFrame) {
+  // A boosts-first motion (two boosts, two rotations about different axes): Λx, then the rotations
+  // at the rest time (Rodrigues' formula), is to_object_frame's sequence of boost_event and rotation
+  // matrices to rounding, for events and along a segment (Λ linear: Λ(x0 + sΔx) = Λx0 + sΛΔx).
+  // Independently: the rest time of the lab event (t, 0) on the first boost alone is γt (time
+  // dilation), and Λ preserves the Minkowski interval.
+  ConstVelocityMotion cv;
+  cv.add_boost({0.3, -0.5, 0.2});
+  cv.add_boost({-0.1, 0.6, 0.4});
+  cv.add_rotation(0.7, {1, 2, -0.5});
+  cv.add_rotation(-1.3, {0, 0.3, 1});
+  ASSERT_TRUE(cv.boosts_first());
+  const Vec4 x0{{2.5, -1.2, 3.4, 0.8}}, dx{{-7.0, 3.1, -5.2, 4.4}};
+  for (double s : {0.0, 0.125, 0.37, 0.5, 0.91, 1.0}) {
+    const Vec4 x = x0 + s * dx;
+    const Vec4 expected = cv.to_object_frame(x);
+    const Vec4 y = cv.to_rest_frame(x0) + s * cv.to_rest_frame(dx);
+    const Vec3 X = cv.rotate_to_object(y);
+    EXPECT_NEAR(y[0], expected[0], 1e-13) << s;
+    EXPECT_NEAR(X.x, expected[1], 1e-13) << s;
+    EXPECT_NEAR(X.y, expected[2], 1e-13) << s;
+    EXPECT_NEAR(X.z, expected[3], 1e-13) << s;
+    const double interval_lab = -x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3];
+    const Vec4 r = cv.to_rest_frame(x);
+    EXPECT_NEAR(-r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3], interval_lab, 1e-12) << s;
+  }
+  ConstVelocityMotion one;
+  one.add_boost({0, -0.8, 0});
+  EXPECT_NEAR(one.to_rest_frame(Vec4{{3, 0, 0, 0}})[0], 3 / 0.6, 1e-14);
+  // A rotation before a boost: the object frame is not a rotated inertial frame.
+  ConstVelocityMotion mixed;
+  mixed.add_rotation(0.4, {1, 0, 0});
+  mixed.add_boost({0, 0.5, 0});
+  EXPECT_FALSE(mixed.boosts_first());
+}
+
 TEST(Motion, WorldlineFromPointsAndWrite) {
   std::shared_ptr<const Metric> m = make_metric("Minkowski");
   ParamSet ps("init-motion", SourceLoc{"wl.scm", 5});
