@@ -204,6 +204,7 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
   for (int i = 0; i < 3 && finite; ++i) finite = std::isfinite(cb.lo[i]) && std::isfinite(cb.hi[i]);
   if (!finite) throw Error("local object: the object inside a local frame must be bounded");
   radius_local_ = std::min(child_->outer_radius(), cb.farthest_distance_from_origin());
+  child_bounds_ = cb;
   const Metric& m = frame_.metric();
   if (!frame_.moving()) {
     const LocalFrame::State s = frame_.state(0);
@@ -236,12 +237,26 @@ LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::m
         // Boosts first: the object's time t' is the origin's proper time τ, its rotations turn the
         // axes about the resting origin, so the event x lies at object position X at τ = t'
         // exactly where LocalFrame finds it by Newton's iteration and the tetrad at τ.
-        bool boosts_first = true, rotated = false;
-        for (const ConstVelocityMotion::Op& op : cv->ops()) {
-          if (op.is_boost && rotated) boosts_first = false;
-          rotated = rotated || !op.is_boost;
+        if (cv->boosts_first()) {
+          rigid_motion_ = cv;
+          bool one_axis = true, first = true;
+          for (const ConstVelocityMotion::Op& op : cv->ops()) {
+            if (op.is_boost) continue;
+            rest_turn_rate_ += std::fabs(op.omega);
+            // (axes are stored normalized: one axis means equal components)
+            if (first) rotation_axis_ = op.axis;
+            one_axis = one_axis && op.axis.x == rotation_axis_.x && op.axis.y == rotation_axis_.y &&
+                       op.axis.z == rotation_axis_.z;
+            first = false;
+          }
+          // a·X over the box: a·c ± Σ|a_i| h_i (c its centre, h its half-widths).
+          const Vec3 c = 0.5 * (cb.lo + cb.hi), h = 0.5 * (cb.hi - cb.lo);
+          const Vec3& a = rotation_axis_;
+          const double mid = dot(a, c), half = std::fabs(a.x) * h.x + std::fabs(a.y) * h.y + std::fabs(a.z) * h.z;
+          axis_lo_ = mid - half;
+          axis_hi_ = mid + half;
+          axis_slab_ = one_axis && rest_turn_rate_ > 0;
         }
-        if (boosts_first) rigid_motion_ = cv;
       }
     }
     // Analytic motion defined for all times (ConstVelocity): the tube is built per segment from
@@ -431,25 +446,62 @@ bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
   if (!world_tube_test(seg, s0, s1)) return false;
   if (!tube_.empty() && std::fabs(seg.x1[0] - seg.x0[0]) > kLongSegment * radius_local_)
     return intersect_per_box(seg, hit);
+  if (rigid_motion_) {
+    RestSegment rest;
+    if (!rest_frame_range(seg, rest, s0, s1)) return false;
+    if (!(rest_turn_rate_ > 0)) return intersect_piece(seg, hit);
+    // The rotations turn the frame by ω y^0, linear along the segment: by |ω dy^0| (s1 − s0) over
+    // the part that can hit, in pieces of at most kMaxTurnPerPiece.
+    const double turn = rest_turn_rate_ * std::fabs(rest.dy[0]) * (s1 - s0);
+    const int n = static_cast<int>(std::clamp<double>(std::ceil(turn / kMaxTurnPerPiece), 1.0, kMaxPieces));
+    return intersect_pieces(seg, s0, s1, n, hit, &rest);
+  }
   const double turn = rotation_rate_ * std::fabs(seg.x1[0] - seg.x0[0]) * (s1 - s0);
   if (!(turn > kMaxTurnPerPiece)) return intersect_piece(seg, hit);
   const int n = static_cast<int>(std::min<double>(kMaxPieces, std::ceil(turn / kMaxTurnPerPiece)));
   return intersect_pieces(seg, s0, s1, n, hit);
 }
 
-bool LocalObject::local_event(const Vec4& x, double& tau, Vec3& X) const {
-  if (rigid_motion_) {
-    const Vec4 o = rigid_motion_->to_object_frame(x);
-    tau = o[0];
-    X = spatial(o);
-    return true;
+bool LocalObject::rest_frame_range(const Segment& seg, RestSegment& rest, double& s0, double& s1) const {
+  rest.y0 = rigid_motion_->to_rest_frame(seg.x0);
+  rest.dy = rigid_motion_->to_rest_frame(seg.x1 - seg.x0);
+  const Vec3 a = spatial(rest.y0), b = spatial(rest.dy);
+  // The rest-frame coordinates carry rounding errors of ~1e-16 (|a| + |b|): a margin far above.
+  const double margin = 1e-9 * (radius_local_ + norm(a) + norm(b));
+  // |a + s b| <= R: the quadratic of world_tube_test, in the rest frame.
+  const double r = radius_local_ + margin;
+  const double qa = dot(b, b), qb = dot(a, b), qc = dot(a, a) - r * r;
+  if (!(qa > 0)) {
+    if (!(qc <= 0)) return false;
+  } else {
+    const double disc = qb * qb - qa * qc;
+    if (!(disc >= 0)) return false;
+    const double root = std::sqrt(disc);
+    s0 = std::max(s0, (-qb - root) / qa);
+    s1 = std::min(s1, (-qb + root) / qa);
   }
+  if (axis_slab_) {
+    const double h0 = dot(rotation_axis_, a), dh = dot(rotation_axis_, b);
+    const double lo = axis_lo_ - margin, hi = axis_hi_ + margin;
+    if (dh == 0) {
+      if (!(h0 >= lo && h0 <= hi)) return false;
+    } else {
+      const double ua = (lo - h0) / dh, ub = (hi - h0) / dh;
+      s0 = std::max(s0, std::min(ua, ub));
+      s1 = std::min(s1, std::max(ua, ub));
+    }
+  }
+  return s0 <= s1;
+}
+
+bool LocalObject::local_event(const Vec4& x, double& tau, Vec3& X) const {
   if (!frame_.simultaneous_tau(x, tau)) return false;
   X = spatial(frame_.to_local(frame_.state(tau), x));
   return true;
 }
 
-bool LocalObject::intersect_pieces(const Segment& seg, double s0, double s1, int n, Hit& hit) const {
+bool LocalObject::intersect_pieces(const Segment& seg, double s0, double s1, int n, Hit& hit,
+                                   const RestSegment* rest, bool recheck) const {
   // A rotating frame: the pieces of the part inside the tube in order, the first hit is the
   // closest. Hit::s of a piece is mapped to and from the fraction of the whole segment. A piece
   // starts where the previous one ended (the same event, bit for bit), so each boundary is mapped
@@ -458,6 +510,12 @@ bool LocalObject::intersect_pieces(const Segment& seg, double s0, double s1, int
   const Vec3 dp = seg.p1 - seg.p0;
   PieceEnds ends;
   bool have_start = false;
+  // A rigid motion's end at fraction f: the rest-frame event and its rotation (no search).
+  auto rest_end = [rest, this](double f, double& tau, Vec3& X) {
+    const Vec4 y = rest->y0 + f * rest->dy;
+    tau = y[0];
+    X = rigid_motion_->rotate_to_object(y);
+  };
   for (int i = 0; i < n; ++i) {
     const double fa = s0 + (s1 - s0) * i / n, fb = i + 1 == n ? s1 : s0 + (s1 - s0) * (i + 1) / n;
     if (hit.s <= fa) return false;
@@ -466,22 +524,38 @@ bool LocalObject::intersect_pieces(const Segment& seg, double s0, double s1, int
     piece.x1 = seg.x0 + fb * dseg;
     piece.p0 = seg.p0 + fa * dp;
     piece.p1 = seg.p0 + fb * dp;
-    if (!have_start) {
-      ends.tau0 = rigid_motion_ ? 0.0 : frame_.motion()->at_coordinate_time(piece.x0[0]).tau;
-      have_start = local_event(piece.x0, ends.tau0, ends.X0);
-      if (!have_start) continue;
-    }
-    ends.tau1 = ends.tau0;
-    if (!local_event(piece.x1, ends.tau1, ends.X1)) {
-      have_start = false;
-      continue;
+    if (rest) {
+      if (!have_start) rest_end(fa, ends.tau0, ends.X0);
+      have_start = true;
+      rest_end(fb, ends.tau1, ends.X1);
+    } else {
+      if (!have_start) {
+        ends.tau0 = frame_.motion()->at_coordinate_time(piece.x0[0]).tau;
+        have_start = local_event(piece.x0, ends.tau0, ends.X0);
+        if (!have_start) continue;
+      }
+      ends.tau1 = ends.tau0;
+      if (!local_event(piece.x1, ends.tau1, ends.X1)) {
+        have_start = false;
+        continue;
+      }
     }
     Hit h = hit;
     h.s = hit.valid() ? (hit.s - fa) / (fb - fa) : hit.s;
-    if (intersect_piece(piece, h, &ends)) {
-      hit = h;
-      hit.s = fa + h.s * (fb - fa);
-      return true;
+    bool unconverged = false;
+    if (intersect_piece(piece, h, &ends, &unconverged)) {
+      // A hit whose frozen-frame refinement did not converge is an estimate: the polyline's (within
+      // R θ²/8 of the ray's path) or a frozen chord's (within R θ); a grazing ray may hit the chord
+      // and miss the body. A rigid motion maps the ends in closed form, so such a piece is tested
+      // again in kRecheckPieces pieces, whose chords lie far closer to the path; what they find
+      // (or not) stands.
+      if (unconverged && rest && !recheck) {
+        if (intersect_pieces(seg, fa, fb, kRecheckPieces, hit, rest, true)) return true;
+      } else {
+        hit = h;
+        hit.s = fa + h.s * (fb - fa);
+        return true;
+      }
     }
     ends.tau0 = ends.tau1;
     ends.X0 = ends.X1;
@@ -558,13 +632,22 @@ bool LocalObject::intersect_per_box(const Segment& seg, Hit& hit) const {
   return found;
 }
 
-bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends) const {
+bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends, bool* unconverged) const {
+  // A chord whose ends both lie beyond one face of the child's bounds misses the child (its
+  // polyline test below would), decided before anything is set up.
+  if (ends) {
+    const Bounds3& b = child_bounds_;
+    const Vec3 &p = ends->X0, &q = ends->X1;
+    if ((p.x < b.lo.x && q.x < b.lo.x) || (p.x > b.hi.x && q.x > b.hi.x) || (p.y < b.lo.y && q.y < b.lo.y) ||
+        (p.y > b.hi.y && q.y > b.hi.y) || (p.z < b.lo.z && q.z < b.lo.z) || (p.z > b.hi.z && q.z > b.hi.z))
+      return false;
+  }
   const Vec4 dseg = frame_.delta(seg.x1, seg.x0);
   Vec4 x_ref = seg.x0 + 0.5 * dseg;
   double tau = 0;
   WorldlineEvent ev;  // the last worldline event evaluated (a sampled motion's interval hint)
   if (rigid_motion_) {
-    tau = rigid_motion_->to_object_frame(x_ref)[0];  // exact: the object time is τ
+    tau = rigid_motion_->to_rest_frame(x_ref)[0];  // exact: the rest-frame time is τ
   } else if (frame_.moving() && frame_.motion()->unbounded()) {
     tau = frame_.motion()->at_coordinate_time(x_ref[0]).tau;
   } else if (frame_.moving()) {
@@ -615,11 +698,15 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     x_ref = seg.x0 + polyline->s * dseg;
     tau = ta + polyline->s * (tb - ta);
   }
+  bool converged = false;  // τ stable at the hit: the hit event lies on the body in its own frame
   for (int iter = 0; iter < 12; ++iter) {
     if (iter > 0 || tube_.empty()) {  // (a sampled tube's first search and test: above)
       double tau_new = tau;
       if (!frame_.simultaneous_tau(x_ref, tau_new, ev)) break;
-      if (best && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) break;
+      if (best && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) {
+        converged = true;
+        break;
+      }
       tau = tau_new;
       if (!tube_.empty()) {
         // The same test at the event of the refined τ (the frame is completed from it).
@@ -643,6 +730,7 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     if (!frame_.moving()) break;
     x_ref = seg.x0 + h.s * dseg;
   }
+  if (unconverged) *unconverged = !converged;
   if (!best && polyline) {
     best = polyline;
     double t_hit = tau;

@@ -16,7 +16,10 @@
 // mapped with the frame of its own time (continuous from segment to segment), then refined as
 // above; where the frame turns by more than kMaxTurnPerPiece during the part of the segment inside
 // the world tube, that part is cut into pieces. So a thin object far from the axis (a clock
-// hand's tip) is not missed. The hit's point/normal/ray_dir are in the local frame.
+// hand's tip) is not missed. A rigid ConstVelocity motion (boosts, then rotations) maps events in
+// closed form: the segment is narrowed in its rest frame to the body's sphere and rotation-axis
+// slab, cut by the exact turn of the frame, and a piece whose iteration does not converge (its hit
+// an estimate) is tested again in finer pieces. The hit's point/normal/ray_dir are in the local frame.
 #pragma once
 
 #include <cmath>
@@ -101,6 +104,9 @@ class LocalObject final : public SceneObject {
   /// the ray's true path at distance R from the axis.
   static constexpr double kMaxTurnPerPiece = 1.0 / 16;
   static constexpr int kMaxPieces = 4096;
+  /// A rigid motion's piece whose hit the frozen-frame iteration did not converge on (an estimate
+  /// from a chord, R·θ²/8 or R·θ from the path) is tested again in this many pieces.
+  static constexpr int kRecheckPieces = 64;
   /// A segment longer in coordinate time than this many body radii (a straight ray in Minkowski,
   /// render/straight_ray.h) is tested box by box against a sampled world tube.
   static constexpr double kLongSegment = 4.0;
@@ -143,14 +149,30 @@ class LocalObject final : public SceneObject {
     double tau0, tau1;
     Vec3 X0, X1;
   };
+  /// A rigid motion's segment in its rest frame: the event at fraction s is y0 + s dy
+  /// (ConstVelocityMotion::to_rest_frame is linear), at object position rotate_to_object(y).
+  struct RestSegment {
+    Vec4 y0, dy;
+  };
+  /// A rigid motion: the segment in the rest frame, and [s0, s1] narrowed to the part whose events
+  /// can lie on the body — within radius_local_ of the rest frame's origin (the rotations about it
+  /// keep |X|) and, for rotations about one axis a, in the slab of a·X over the body (they keep
+  /// a·X). False when no part can. Exact up to a margin for rounding.
+  bool rest_frame_range(const Segment& seg, RestSegment& rest, double& s0, double& s1) const;
   /// The intersection test of one piece of a segment (one frame state found by iteration);
-  /// `ends`: its ends' local coordinates when already known (rotating frames).
-  bool intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends = nullptr) const;
+  /// `ends`: its ends' local coordinates when already known (rotating frames); `unconverged`: set
+  /// to whether the frozen-frame iteration stopped before τ was stable (the hit, if any, is then
+  /// the polyline's or a frozen chord's estimate).
+  bool intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends = nullptr,
+                       bool* unconverged = nullptr) const;
   /// Local coordinates X of event x in the frame of the worldline event simultaneous with it, and
   /// that event's proper time τ (initial guess in, result out); false where there is none.
   bool local_event(const Vec4& x, double& tau, Vec3& X) const;
-  /// The rotating frame's pieces of the part [s0, s1] of a segment, in order, each end mapped once.
-  bool intersect_pieces(const Segment& seg, double s0, double s1, int n, Hit& hit) const;
+  /// The rotating frame's pieces of the part [s0, s1] of a segment, in order, each end mapped once
+  /// (a rigid motion's from `rest`, else by local_event); `recheck`: the kRecheckPieces pieces of
+  /// one whose hit was an estimate (intersect_piece's `unconverged`), not rechecked again.
+  bool intersect_pieces(const Segment& seg, double s0, double s1, int n, Hit& hit,
+                        const RestSegment* rest = nullptr, bool recheck = false) const;
   /// A sampled world tube and a segment much longer in time than the body: each tube box the
   /// segment passes is tested as its own piece (the frozen frame of one piece stays near the body).
   bool intersect_per_box(const Segment& seg, Hit& hit) const;
@@ -190,8 +212,18 @@ class LocalObject final : public SceneObject {
   Vec3 origin_at_t0_, origin_velocity_;
   /// ConstVelocity in Minkowski with every boost before every rotation: the object's frame is an
   /// inertial frame turned rigidly about its origin, and the local coordinates of an event are
-  /// its object coordinates (ConstVelocityMotion::to_object_frame), in closed form.
+  /// its object coordinates (ConstVelocityMotion::to_rest_frame, rotate_to_object), in closed form.
   const ConstVelocityMotion* rigid_motion_ = nullptr;
+  /// A rigid motion: the sum of |ω| of its rotations (the frame's largest turn per unit rest time).
+  double rest_turn_rate_ = 0;
+  /// A rigid motion whose rotations share one axis: the range [axis_lo_, axis_hi_] of a·X over the
+  /// child's bounds (rest_frame_range's slab).
+  bool axis_slab_ = false;
+  Vec3 rotation_axis_;
+  double axis_lo_ = 0, axis_hi_ = 0;
+  /// child_->bounds() (local coordinates), read once: a piece's chord beyond one of its faces
+  /// cannot hit the child.
+  Bounds3 child_bounds_;
   Bounds3 bounds_;
 };
 

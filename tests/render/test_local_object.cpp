@@ -671,6 +671,76 @@ TEST(ObjLocal, RotatingThinPaddleIsNotMissedOnALongStep) {
   EXPECT_NEAR(h400s.s * 400, h20s.s * 20, 1e-9);
 }
 
+TEST(ObjLocal, RollingPlankOnWholeRaysHitsWhereItsObjectCoordinatesEnterIt) {
+  // minkWheel.scm's motion (boost v = 0.8 along −y, then rotation ω = 0.4 about x) carrying a plank
+  // |X| <= 0.15, |Y| <= 2, |Z| <= 0.05 that turns about x, tested on whole straight rays of length
+  // 60 (one segment each, as the renderer's Minkowski rays): the segment is narrowed in the rest
+  // frame to the sphere and the slab |a·X| <= 0.15 of the rotation axis, then cut into pieces.
+  // Expected, independently of the pieces: the first event of the ray whose object coordinates
+  // (ConstVelocityMotion::to_object_frame, the sequence of boost and rotation) lie in the plank,
+  // found by scanning the ray where it crosses the plank's slab and bisecting. Every ray that
+  // enters must hit and no other. Where the frozen-frame iteration converges the hit is that
+  // event; where the plank's side sweeps across the ray it may not (the frozen chord misses at the
+  // refined τ) and the hit is a chord's estimate on a recheck piece (kRecheckPieces): its event
+  // lies within R·θ of the plank, θ the turn of that piece (measured: 1.7e-4, 1.2e-4 in λ).
+  auto metric = minkowski();
+  ConstVelocityMotion::Op boost, rot;
+  boost.v = {0, -0.8, 0};
+  rot.is_boost = false;
+  rot.omega = 0.4;
+  rot.axis = {1, 0, 0};
+  auto motion = std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{boost, rot});
+  const Vec3 lo_corner{-0.15, -2, -0.05}, hi_corner{0.15, 2, 0.05};
+  LocalObject plank(std::make_shared<Box>(lo_corner, hi_corner), LocalFrame(metric, motion));
+  const double estimate_bound =
+      plank.local_radius() * LocalObject::kMaxTurnPerPiece / LocalObject::kRecheckPieces;
+  const double t0 = 25, L = 60;
+  int entering = 0, exact = 0;
+  for (double y0 = -3.0; y0 <= 3.0; y0 += 0.25)
+    for (double z0 : {-1.5, -0.6, -0.02, 0.3, 1.1, 1.9}) {
+      for (double tilt : {0.0, 0.04}) {
+        const Vec3 p0{-25, y0, z0};
+        const Vec3 n = normalize(Vec3{1, tilt, -0.5 * tilt});
+        const Segment seg = testing::light_segment(t0, p0, n, L);
+        auto object_point = [&](double lam) {
+          const Vec4 o = motion->to_object_frame(seg.x0 + (lam / L) * (seg.x1 - seg.x0));
+          return Vec3{o[1], o[2], o[3]};
+        };
+        auto inside = [&](double lam) {
+          const Vec3 X = object_point(lam);
+          return std::fabs(X.x) <= 0.15 && std::fabs(X.y) <= 2 && std::fabs(X.z) <= 0.05;
+        };
+        // The plank's points have |x| <= 0.15 in the lab too (the boost is along y).
+        const double lo = (-0.2 - p0.x) / n.x, hi = (0.2 - p0.x) / n.x;
+        double entry = -1;
+        for (double lam = lo; lam <= hi && entry < 0; lam += 1e-5)
+          if (inside(lam)) {
+            double a = lam - 1e-5, b = lam;
+            for (int i = 0; i < 60; ++i) {
+              const double mid = 0.5 * (a + b);
+              (inside(mid) ? b : a) = mid;
+            }
+            entry = b;
+          }
+        Hit hit;
+        const bool got = plank.intersect(seg, hit);
+        const std::string where = "y0 = " + std::to_string(y0) + ", z0 = " + std::to_string(z0) +
+                                  ", tilt = " + std::to_string(tilt);
+        EXPECT_EQ(got, entry >= 0) << where;
+        if (entry < 0 || !got) continue;
+        ++entering;
+        exact += std::fabs(hit.s * L - entry) <= 1e-6;
+        const Vec3 X = object_point(hit.s * L);
+        Vec3 outside{0, 0, 0};  // distance of X beyond each face pair
+        for (int i = 0; i < 3; ++i) outside[i] = std::max({0.0, lo_corner[i] - X[i], X[i] - hi_corner[i]});
+        EXPECT_LE(norm(outside), estimate_bound) << where;
+        EXPECT_NEAR(hit.s * L, entry, 1e-3) << where;
+      }
+    }
+  EXPECT_GE(entering, 10);
+  EXPECT_GE(exact, 1);  // the face-on entries
+}
+
 TEST(ObjLocal, RotatingClockHandHasNoHolesNearItsTip) {
   // movClock.scm's hand: a cylinder of radius 0.1 from the origin to (0, 0, 1.8) turning about x
   // (ConstVelocity rotation ω = 0.5: object coordinates X = R(−ωt) x, the tip at 0.9 c), seen by
