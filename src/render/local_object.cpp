@@ -699,10 +699,23 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     tau = ta + polyline->s * (tb - ta);
   }
   bool converged = false;  // τ stable at the hit: the hit event lies on the body in its own frame
+  // A rigid motion in closed form: the simultaneous τ of an event is its rest-frame time (the
+  // root of simultaneous_tau's f), and the frozen frame at τ maps an event x to X = R(τ)(Λx)
+  // (to_local with the tetrad Λ⁻¹(0, R(τ)⁻¹ ê_i) at the origin Λ⁻¹(τ, 0), Λ a Lorentz matrix):
+  // the ends' rest-frame positions once, one rotation each per iteration, the frame once at the end.
+  Vec4 rest0, rest1;
+  if (rigid_motion_) {
+    rest0 = rigid_motion_->to_rest_frame(seg.x0);
+    rest1 = rigid_motion_->to_rest_frame(seg.x1);
+  }
+  double best_tau = tau;
   for (int iter = 0; iter < 12; ++iter) {
     if (iter > 0 || tube_.empty()) {  // (a sampled tube's first search and test: above)
       double tau_new = tau;
-      if (!frame_.simultaneous_tau(x_ref, tau_new, ev)) break;
+      if (rigid_motion_)
+        tau_new = rigid_motion_->to_rest_frame(x_ref)[0];
+      else if (!frame_.simultaneous_tau(x_ref, tau_new, ev))
+        break;
       if (best && std::fabs(tau_new - tau) <= 1e-9 * (1.0 + std::fabs(tau))) {
         converged = true;
         break;
@@ -714,23 +727,31 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
         if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) break;
       }
     }
-    const LocalFrame::State st = tube_.empty() ? frame_.state(tau) : frame_.state(ev);
-    const Vec4 X0 = frame_.to_local(st, seg.x0), X1 = frame_.to_local(st, seg.x1);
     Segment ls;
     ls.x0 = seg.x0;  // world coordinate times for Hit::time
     ls.x1 = seg.x1;
-    ls.p0 = spatial(X0);
-    ls.p1 = spatial(X1);
+    std::optional<LocalFrame::State> st;
+    if (rigid_motion_) {
+      rest0[0] = rest1[0] = tau;
+      ls.p0 = rigid_motion_->rotate_to_object(rest0);
+      ls.p1 = rigid_motion_->rotate_to_object(rest1);
+    } else {
+      st = tube_.empty() ? frame_.state(tau) : frame_.state(ev);
+      ls.p0 = spatial(frame_.to_local(*st, seg.x0));
+      ls.p1 = spatial(frame_.to_local(*st, seg.x1));
+    }
     ls.chart0 = ls.chart1 = child_->chart;
     ls.metric = seg.metric;
     Hit h = hit;
     if (!child_->intersect(ls, h)) break;  // keep the previous estimate when refinement loses it
     best = h;
     best_state = st;
+    best_tau = tau;
     if (!frame_.moving()) break;
     x_ref = seg.x0 + h.s * dseg;
   }
   if (unconverged) *unconverged = !converged;
+  if (best && !best_state) best_state = frame_.state(best_tau);  // (a rigid motion's)
   if (!best && polyline) {
     best = polyline;
     double t_hit = tau;

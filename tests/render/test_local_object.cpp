@@ -671,6 +671,38 @@ TEST(ObjLocal, RotatingThinPaddleIsNotMissedOnALongStep) {
   EXPECT_NEAR(h400s.s * 400, h20s.s * 20, 1e-9);
 }
 
+TEST(ObjLocal, RigidFrozenFrameIsTheRotatedRestFrame) {
+  // LocalObject::intersect_piece maps an event x into the frozen frame at τ of a boosts-first
+  // ConstVelocity motion as X = R(τ)(Λx) (ConstVelocityMotion::rotate_to_object of the rest-frame
+  // event with its time replaced by τ) instead of LocalFrame::to_local with the motion's tetrad at
+  // τ; and the simultaneous τ of x as its rest-frame time (Λx)^0. Both equal the general ones.
+  auto metric = minkowski();
+  ConstVelocityMotion::Op b1, b2, r1, r2;
+  b1.v = {0, -0.8, 0};
+  b2.v = {0.3, 0.1, -0.2};
+  r1.is_boost = r2.is_boost = false;
+  r1.omega = 0.4;
+  r1.axis = {1, 0, 0};
+  r2.omega = -0.7;
+  r2.axis = normalize(Vec3{0.2, 1, 0.5});
+  auto motion = std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{b1, b2, r1, r2});
+  const LocalFrame frame(metric, motion);
+  for (const Vec4& x : {Vec4{{3.0, 0.5, -2.4, 1.9}}, Vec4{{-1.2, 7.0, 0.3, -0.8}}}) {
+    double tau = 0;
+    ASSERT_TRUE(frame.simultaneous_tau(x, tau));
+    EXPECT_NEAR(tau, motion->to_rest_frame(x)[0], 1e-11);
+    for (double t_frame : {tau, tau - 0.6, tau + 2.3}) {
+      const Vec4 X = frame.to_local(frame.state(t_frame), x);
+      Vec4 y = motion->to_rest_frame(x);
+      y[0] = t_frame;
+      const Vec3 Xr = motion->rotate_to_object(y);
+      EXPECT_NEAR(Xr.x, X[1], 1e-11);
+      EXPECT_NEAR(Xr.y, X[2], 1e-11);
+      EXPECT_NEAR(Xr.z, X[3], 1e-11);
+    }
+  }
+}
+
 TEST(ObjLocal, RollingPlankOnWholeRaysHitsWhereItsObjectCoordinatesEnterIt) {
   // minkWheel.scm's motion (boost v = 0.8 along −y, then rotation ω = 0.4 about x) carrying a plank
   // |X| <= 0.15, |Y| <= 2, |Z| <= 0.05 that turns about x, tested on whole straight rays of length
