@@ -402,9 +402,17 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
     }
   }
   // Capture (geodesic.h): nothing to hit below the scene's innermost radius (0 when an object may
-  // reach the origin or its bounds are unknown: never); nothing at all without a scene.
+  // reach the origin or its bounds are unknown: never); nothing at all without a scene. Nor inside
+  // the ball that holds no surface in any chart (SegmentCull's, shrunk by its margin): a solid
+  // around the hole (GeoViS's background spheres) is hit only where a chord crosses its surface,
+  // and every chord of a captured ray lies below the radius of its start (capture.h).
   cfg_.capture_radius = job.scene ? job.scene->inner_radius() : std::numeric_limits<double>::infinity();
-  if (job.scene) cull_ = SegmentCull(*job.scene);
+  if (job.scene) {
+    cull_ = SegmentCull(*job.scene);
+    double empty_ball = std::numeric_limits<double>::infinity();
+    for (int c = 0; c < SegmentCull::kCharts; ++c) empty_ball = std::min(empty_ball, cull_.radius(c));
+    cfg_.capture_radius = std::max(cfg_.capture_radius, empty_ball);
+  }
   point_lights_ = job.metric->info().inertial_cartesian && job.lights.shadows && !job.lights.lights.empty();
   // Flat inertial coordinates: the rays are straight lines, no integrator (spacetime/straight_ray.h).
   // Here and not in the metric's integrate(): only the renderer's light rays are one step each —

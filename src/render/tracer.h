@@ -95,7 +95,8 @@ class Tracer {
   Color stop_color(StopReason reason) const;
   /// The escape radius of the rays: the scene's bounding sphere (SolverConfig::escape_radius).
   double escape_radius() const { return cfg_.escape_radius; }
-  /// The capture radius of the rays: the scene's innermost radius (SolverConfig::capture_radius).
+  /// The capture radius of the rays: the scene's innermost radius, or its empty ball's radius where
+  /// larger (SolverConfig::capture_radius).
   double capture_radius() const { return cfg_.capture_radius; }
   static constexpr int kMaxRefineLevels = 16;
   /// The steps that are not tested against the scene (render/segment_cull.h).

@@ -100,7 +100,8 @@ struct SolverConfig {
   /// Capture (spacetime/capture.h): no object lies closer than this to the origin (distance |p| in
   /// the metric's pseudo-Cartesian coordinates). A light ray below it that provably falls into the
   /// horizon without turning back stops there with StopReason::Invalid, the reason it gets at the
-  /// break radius. The renderer sets the scene's innermost radius; 0 (default): never.
+  /// break radius. The renderer sets the scene's innermost radius, or the radius of the ball that
+  /// holds none of the scene's surface where that is larger; 0 (default): never.
   double capture_radius = 0.0;
 };
 

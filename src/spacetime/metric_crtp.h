@@ -137,6 +137,12 @@ class MetricCRTP : public Metric {
   static constexpr bool kSimdEscape = requires(const M& m, const double* y, double* r) {
     { m.packet_escapes_simd(y, 1.0, 0.0, r) } -> std::same_as<unsigned>;
   };
+  /// A metric with a capture rule (`captures`, capture.h) and `unsigned packet_captures_simd(const
+  /// double* y, const SolverConfig& c) const` (all lanes, bit l: captures of lane l, for light
+  /// rays with c.capture_radius > 0) gives packets of rays their capture test on SIMD lanes.
+  static constexpr bool kSimdCapture = requires(const M& m, const double* y, const SolverConfig& c) {
+    { m.packet_captures_simd(y, c) } -> std::same_as<unsigned>;
+  };
   bool transported_screen(const Vec4& x0, const Vec4& k0, const Vec4 (&s0)[2], const Vec4& x, const Vec4& k,
                           Vec4 (&s)[2]) const override {
     if constexpr (kSeparable) {
@@ -310,10 +316,16 @@ MetricKernel MetricKernel::of(const M& m) {
             out.escaped =
                 lanes & mm.packet_escapes_simd(y, c.direction >= 0 ? 1.0 : -1.0, c.escape_radius, out.escape_radius);
         }
-        // What is left lane by lane (none for a metric with SIMD constraint and escape tests and no
-        // capture rule: the loop's gathers cost ~24 instructions per step and lane, issue 13).
-        constexpr bool kLaneByLane = !M::kSimdConstraint || !M::kSimdEscape ||
-                                     requires(const Vec4& v, const SolverConfig& cc) { mm.captures(v, v, cc); };
+        // MetricSystem::captured on SIMD lanes: its conditions on the ray, then the metric's test.
+        constexpr bool kCaptures = requires(const Vec4& v, const SolverConfig& cc) { mm.captures(v, v, cc); };
+        if constexpr (M::kSimdCapture) {
+          if (c.type == GeodesicType::Lightlike && c.capture_radius > 0.0)
+            out.captured = lanes & mm.packet_captures_simd(y, c);
+        }
+        // What is left lane by lane (none for a metric with SIMD constraint, escape and capture
+        // tests: the loop's gathers cost ~24 instructions per step and lane, issue 13).
+        constexpr bool kLaneByLane =
+            !M::kSimdConstraint || !M::kSimdEscape || (kCaptures && !M::kSimdCapture);
         if constexpr (kLaneByLane) {
           for (int l = 0; l < kPacketLanes; ++l) {
             if (!(lanes >> l & 1u)) continue;
@@ -322,7 +334,8 @@ MetricKernel MetricKernel::of(const M& m) {
             if constexpr (!M::kSimdConstraint) sys.constraint(yl, c.type, out.constraint[l], out.constraint_scale[l]);
             if constexpr (!M::kSimdEscape)
               if (sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
-            if (sys.captured(c, yl)) out.captured |= 1u << l;
+            if constexpr (!M::kSimdCapture)
+              if (sys.captured(c, yl)) out.captured |= 1u << l;
           }
         }
       },

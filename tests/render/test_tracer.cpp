@@ -977,6 +977,16 @@ TEST(Tracer, CaptureRadiusIsTheScenesInnermostRadius) {
   job.scene =
       std::make_shared<CompoundObject>(std::vector<SceneObjectPtr>{sphere, make_ring(ctx, Vec3{1, 0, 0}, 3.0, 15.0)});
   EXPECT_DOUBLE_EQ(Tracer(job).capture_radius(), 2.0);
+  // A solid sphere of radius 60 around the hole (GeoViS's background spheres): its inner radius
+  // is 0, but no surface lies within 60 (SegmentCull's empty ball, shrunk by its margin); with the
+  // ring inside it, the ring's inner radius.
+  const SceneObjectPtr around = make_sphere(ctx, Vec3{0, 0, 0}, 60.0);
+  // (The sphere's own radius is less by kScaleMargin·R for its rounding, SolidPrimitive.)
+  job.scene = around;
+  EXPECT_LE(Tracer(job).capture_radius(), 60.0 * (1.0 - SegmentCull::kMargin));
+  EXPECT_GT(Tracer(job).capture_radius(), 60.0 * (1.0 - 2 * SegmentCull::kMargin));
+  job.scene = std::make_shared<CompoundObject>(std::vector<SceneObjectPtr>{around, make_ring(ctx, Vec3{0, 0, 0}, 3.0, 15.0)});
+  EXPECT_DOUBLE_EQ(Tracer(job).capture_radius(), 3.0 * (1.0 - SegmentCull::kMargin));
   // Unknown bounds: never; no scene: nothing to hit anywhere.
   job.scene = std::make_shared<UnknownBounds>(sphere);
   EXPECT_EQ(Tracer(job).capture_radius(), 0.0);
@@ -1024,6 +1034,54 @@ TEST(Tracer, CapturedRaysKeepTheirPixelsInEveryFilter) {
                 cap.stats.steps, old.stats.steps, horizon);
     EXPECT_LT(cap.stats.steps, old.stats.steps);
   }
+}
+
+TEST(Tracer, CapturedInsideABackgroundSphereKeepsEveryPixel) {
+  // GeoViS's fallEddFinkIn geometry: ingoing Eddington–Finkelstein, a static observer at r = 10
+  // looking at the hole, inside a solid sphere of radius 30 (the "background"). Captured below
+  // the sphere's empty ball (Tracer: the capture radius is 30, though the sphere's inner radius is
+  // 0), the rays into the past horizon stop early; behind unknown bounds they run until
+  // leaves_chart stops them. The images, the per-pixel stops and the hit points must agree.
+  BuildContext ctx;
+  Diagnostics diag;
+  ctx.diag = &diag;
+  auto metric = std::shared_ptr<const Metric>(make_metric("EddFinkIn", {{"mass", 1.0}}));
+  ctx.metric = metric;
+  constexpr int N = 31;
+  RenderJob job;
+  job.metric = metric;
+  job.observer.pos = Vec4{{0, 10, 1.4, 0}};
+  job.observer.e = metric->natural_tetrad(job.observer.pos, TetradKind::Default);
+  job.camera = std::make_shared<PinholeCamera>(Vec3{-1, 0, 0}, Vec3{0, 0, 1}, 90, 90, N, N);
+  job.scene = make_sphere(ctx, Vec3{0, 0, 0}, 30.0);
+  job.solver.eps_abs = 1e-8;
+  job.solver.box_ll = Vec4{{-DBL_MAX, 0, -DBL_MAX, -DBL_MAX}};
+  job.solver.box_ur = Vec4{{DBL_MAX, 100, DBL_MAX, DBL_MAX}};
+  job.filter = Filter::RGBpdz;
+  EXPECT_GT(Tracer(job).capture_radius(), 29.0);
+  RenderOptions opt;
+  opt.progress = false;
+  opt.threads = 1;
+  const RenderResult cap = render(job, opt);
+  job.scene = std::make_shared<UnknownBounds>(job.scene);
+  EXPECT_EQ(Tracer(job).capture_radius(), 0.0);
+  const RenderResult old = render(job, opt);
+  int horizon = 0, hits = 0, differ = 0;
+  for (size_t i = 0; i < cap.data.size(); ++i) {
+    const RayStop c = ray_stop(cap.data[i]);
+    EXPECT_EQ(c, ray_stop(old.data[i])) << i;
+    horizon += c == RayStop::Horizon;
+    hits += c == RayStop::Hit;
+    if (c == RayStop::Hit)
+      for (int mu = 0; mu < 4; ++mu) EXPECT_EQ(cap.data[i].pos[mu], old.data[i].pos[mu]) << i;
+  }
+  for (int y = 0; y < N; ++y)
+    for (int x = 0; x < N; ++x)
+      for (int k = 0; k < 3; ++k) differ += cap.image.at(x, y)[k] != old.image.at(x, y)[k];
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(horizon, N * N / 10);
+  EXPECT_GT(hits, N * N / 10);
+  EXPECT_LT(cap.stats.steps, old.stats.steps);
 }
 
 }  // namespace geovis

@@ -350,3 +350,55 @@ TEST(Capture, SphericalHolesStopOnlyRaysThatFallIn) {
     }
   }
 }
+
+TEST(Capture, EddFinkInStopsOnlyPastDirectedRaysThatFallIn) {
+  // Schwarzschild in ingoing Eddington–Finkelstein coordinates (coordinate form, the packet's
+  // and the scalar integrator's): random light rays between the horizon break band and 1.5 times
+  // the photon sphere, both time orientations, integrated with capture everywhere and without:
+  // the same stop reason for every ray and never more steps. Past-directed infalling rays (the
+  // renderer's, E > 0) are captured and end where leaves_chart would end them (Invalid);
+  // future-directed ones (E < 0) cross the horizon to the singularity and must not be captured
+  // (the same steps as without).
+  auto m = make_metric("EddFinkIn", {{"mass", 1.0}});
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  const double r_band = 2.0 * (1.0 + m->horizon_eps());
+  int captured_past = 0, captured_future = 0;
+  for (int n = 0; n < 80; ++n) {
+    const bool past = n % 2 == 0;
+    const Vec4 x{{0, r_band * 1.01 + (4.5 - r_band * 1.01) * U(rng), 0.3 + 2.5 * U(rng), 0.5}};
+    const Vec3 d = normalize(Vec3{2 * U(rng) - 1, 2 * U(rng) - 1, 2 * U(rng) - 1});
+    const Vec4 k = local_null_direction(m->natural_tetrad(x, TetradKind::Default), d, past);
+    SolverConfig cfg = config(kForms[1]);
+    cfg.max_steps = 100000;
+    double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+    const GeodesicResult without = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
+    cfg.capture_radius = INFINITY;
+    double y2[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+    const GeodesicResult with = m->integrate(cfg, GeodesicSystem::Geodesic, y2, 0.0, {});
+    SCOPED_TRACE(testing::Message() << (past ? "past" : "future") << "-directed, r = " << x[1] << ": "
+                                    << stop_reason_name(with.reason) << " after " << with.steps << ", without "
+                                    << stop_reason_name(without.reason) << " after " << without.steps);
+    EXPECT_EQ(with.reason, without.reason);
+    EXPECT_LE(with.steps, without.steps);
+    if (with.steps < without.steps) {
+      EXPECT_EQ(with.reason, StopReason::Invalid);
+      EXPECT_GT(y2[1], r_band);  // stopped outside the horizon, before leaves_chart would
+      ++(past ? captured_past : captured_future);
+    }
+  }
+  EXPECT_GT(captured_past, 10);
+  EXPECT_EQ(captured_future, 0);
+  // Integrated backwards (direction −1) nothing is captured: leaves_chart reads the stored k as
+  // the direction of travel, so the capture's premise does not hold there.
+  const Vec4 x{{0, 2.5, 1.0, 0.5}};
+  const Vec4 k = local_null_direction(m->natural_tetrad(x, TetradKind::Default), Vec3{-1, 0, 0}, false);
+  SolverConfig cfg = config(kForms[1]);
+  cfg.capture_radius = INFINITY;
+  cfg.direction = -1.0;
+  double y[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  const GeodesicResult back = m->integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, {});
+  cfg.capture_radius = 0;
+  double y0[8] = {x[0], x[1], x[2], x[3], k[0], k[1], k[2], k[3]};
+  EXPECT_EQ(back.steps, m->integrate(cfg, GeodesicSystem::Geodesic, y0, 0.0, {}).steps);
+}

@@ -472,6 +472,30 @@ TEST(GeodesicPacket, RefilledLanesGiveEachRayItsScalarResult) {
   }
 }
 
+// EddFinkIn's capture test on SIMD lanes (EddFinkIn::packet_captures_simd): a fan of rays from
+// inside the photon sphere, half of them falling towards the past horizon and captured there, each
+// lane equal to its scalar run (where the scalar integrator runs EddFinkIn::captures).
+TEST(GeodesicPacket, EddFinkInCaptureOnLanesIsTheScalarOne) {
+  const auto m = make_metric("EddFinkIn");
+  SolverConfig cfg = packet_config();
+  cfg.max_steps = 400;
+  cfg.lambda_max = INFINITY;  // (a limit on λ could end the fall first: no capture, capture.h)
+  cfg.capture_radius = 10.0;
+  const auto y0 = fan(*m, 37, Vec4{{0.0, 2.8, 1.2, 0.3}});
+  int captured = 0;
+  for (const auto& y : y0) {
+    double a[kMaxSystemDim] = {}, b[kMaxSystemDim] = {};
+    std::copy(y.begin(), y.end(), a);
+    std::copy(y.begin(), y.end(), b);
+    SolverConfig none = cfg;
+    none.capture_radius = 0;
+    captured += m->integrate(cfg, GeodesicSystem::Geodesic, a, 0.0, {}).steps <
+                m->integrate(none, GeodesicSystem::Geodesic, b, 0.0, {}).steps;
+  }
+  EXPECT_GT(captured, 5);
+  for_every_target([&] { expect_packet_equals_scalar(*m, cfg, y0); });
+}
+
 // The parts of Mino-time integration a fan of rays may miss, each lane equal to its scalar run:
 // rays with L = 0 through the polar axis (θ branch switched, KerrMinoRay::track_axis), a θ range
 // in the bounding box, λ_max reached by the secant retries and a step_max in λ (its retries), the

@@ -133,6 +133,25 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
     return escapes_spherical(x[1], k[1], 1.5 * rs_, r_min, x[1], radius);
   }
 
+  /// Capture (capture.h) of the rays that leaves_chart stops at the past horizon: outside the
+  /// break band (r > r_s (1 + horizon_eps)), past-directed (E > 0, leaves_chart's sign) and moving
+  /// inward (k^r < 0) below the photon sphere. The radial equation is Schwarzschild's: with
+  /// E = g_{vμ}k^μ = −f k^v + k^r and L = r² k^φ (equatorial frame), g(k,k) = 0 gives
+  /// (k^r)² = E² − f L²/r², f = 1 − r_s/r, so A B = 1 and h² = r³/(r − r_s) as in Schwarzschild:
+  /// r falls monotonically into the band, where leaves_chart ends the ray with Invalid. The
+  /// integration must run forward (c.direction > 0): leaves_chart reads the stored k as the
+  /// direction of travel. Future-directed infalling rays (E < 0) cross the horizon to the
+  /// singularity and are not captured.
+  bool captures(const Vec4& x, const Vec4& k, const SolverConfig& c) const {
+    const double r = x[1], r_band = rs_ * (1.0 + horizon_eps());
+    if (!(c.direction > 0.0) || !(r > r_band)) return false;
+    const double E = -(1.0 - rs_ / r) * k[0] + k[1];
+    return E > 0.0 && captured_spherical(r, k[1], 1.5 * rs_, c.capture_radius) && capture_unobstructed(c, r_band);
+  }
+  /// captures on every lane of a packet, SIMD (bit l: lane l), the same comparisons and the same
+  /// operations for E; the caller checks that the rays are light rays and c.capture_radius > 0.
+  unsigned packet_captures_simd(const double* y, const SolverConfig& c) const;
+
   Tetrad natural_tetrad(const Vec4& x, TetradKind kind) const override {
     require_tetrad_kind(kind);
     const double r = x[1];
@@ -216,6 +235,23 @@ unsigned edd_fink_in_packet_escapes(double rs, const double* y, double sign, dou
   }
   return bits;
 }
+/// EddFinkIn::captures' conditions on the ray (all but the direction of integration and the
+/// box, the same for every lane) on SIMD lanes: r > r_band, E > 0, r < 1.5 r_s, r < r_max,
+/// k^r < 0 (captured_spherical), E computed by the same operations in the same order.
+unsigned edd_fink_in_packet_captures(double rs, double r_band, double r_max, const double* y) {
+  constexpr size_t W = kPacketLanes;
+  unsigned bits = 0;
+  for (size_t l = 0; l < W; l += SimdD::lanes()) {
+    const SimdD r = SimdD::load(y + 1 * W + l), kv = SimdD::load(y + 4 * W + l), kr = SimdD::load(y + 5 * W + l);
+    const SimdD E = -(SimdD(1.0) - SimdD(rs) / r) * kv + kr;
+    const SimdMask captured = r > SimdD(r_band) && E > SimdD(0.0) && r < SimdD(1.5 * rs) && r < SimdD(r_max) &&
+                              kr < SimdD(0.0);
+    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(SimdTag(), captured.m, lane_bits);
+    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+  }
+  return bits;
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -233,6 +269,12 @@ unsigned EddFinkIn::packet_is_valid_simd(const double* y) const {
 HWY_EXPORT(edd_fink_in_packet_escapes);
 unsigned EddFinkIn::packet_escapes_simd(const double* y, double sign, double r_min, double* radius) const {
   return HWY_DYNAMIC_DISPATCH(edd_fink_in_packet_escapes)(rs_, y, sign, r_min, radius);
+}
+HWY_EXPORT(edd_fink_in_packet_captures);
+unsigned EddFinkIn::packet_captures_simd(const double* y, const SolverConfig& c) const {
+  const double r_band = rs_ * (1.0 + horizon_eps());
+  if (!(c.direction > 0.0) || !capture_unobstructed(c, r_band)) return 0;
+  return HWY_DYNAMIC_DISPATCH(edd_fink_in_packet_captures)(rs_, r_band, c.capture_radius, y);
 }
 HWY_EXPORT(edd_fink_in_packet_constraint);
 void EddFinkIn::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
