@@ -228,6 +228,27 @@ HWY_INLINE void packet_constraint_simd(const MetricTensor& metric_tensor, const 
       y, target, value, scale, stride);
 }
 
+/// The same for a diagonal metric, from its template metric_diagonal(x, g) giving g_μμ (SimdD g[4]):
+/// diagonal_geodesic_constraint, the bits of geodesic_constraint on the full g_μν without its
+/// off-diagonal zeros.
+template <class MetricDiagonal>
+HWY_INLINE void packet_diagonal_constraint_simd(const MetricDiagonal& metric_diagonal, const double* y, double target,
+                                                double* value, double* scale, size_t stride) {
+  for (size_t l = 0; l < stride; l += SimdD::lanes()) {
+    Vec4T<SimdD> x, k;
+    for (int i = 0; i < 4; ++i) {
+      x[i] = SimdD::load(y + i * stride + l);
+      k[i] = SimdD::load(y + (4 + i) * stride + l);
+    }
+    SimdD g[4];
+    metric_diagonal(x, g);
+    SimdD v, s;
+    HWY_NAMESPACE::diagonal_geodesic_constraint(g, k, target, v, s);
+    v.store(value + l);
+    s.store(scale + l);
+  }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();

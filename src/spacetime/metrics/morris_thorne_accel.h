@@ -3,18 +3,26 @@
 // includes this file once for doubles (the scalar integrator) and once per SIMD target for SimdD
 // (spacetime/simd.h, the packet integrator), so both run the same operations and give the same
 // bits. No include guard: each inclusion defines the template in the namespace it is included in.
-/// ds² = −dt² + dl² + (b0² + l²)(dθ² + sin²θ dφ²) (morris_thorne.cpp); MorrisThorne::g_tmpl on
-/// every number type, and on SIMD lanes the packet's constraint test.
+/// ds² = −dt² + dl² + (b0² + l²)(dθ² + sin²θ dφ²) (morris_thorne.cpp): g_μμ, the diagonal (the
+/// packet's constraint test, diagonal_geodesic_constraint).
+template <class T>
+GEOVIS_HOT_INLINE void morris_thorne_metric_diagonal(double b02, const Vec4T<T>& x, T (&g)[4]) {
+  const T r2 = b02 + x[1] * x[1];
+  const T st = sin_t(x[2]);
+  g[0] = T(-1.0);
+  g[1] = T(1.0);
+  g[2] = r2;
+  g[3] = r2 * st * st;
+}
+
+/// The same as the full g_μν: MorrisThorne::g_tmpl on every number type.
 template <class T>
 GEOVIS_HOT_INLINE void morris_thorne_metric_tensor(double b02, const Vec4T<T>& x, Mat4T<T>& g) {
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
-  const T r2 = b02 + x[1] * x[1];
-  const T st = sin_t(x[2]);
-  g[0][0] = T(-1.0);
-  g[1][1] = T(1.0);
-  g[2][2] = r2;
-  g[3][3] = r2 * st * st;
+  T d[4];
+  morris_thorne_metric_diagonal(b02, x, d);
+  for (int i = 0; i < 4; ++i) g[i][i] = d[i];
 }
 
 template <class T>
