@@ -25,14 +25,22 @@ GEOVIS_HOT_INLINE void morris_thorne_metric_tensor(double b02, const Vec4T<T>& x
   for (int i = 0; i < 4; ++i) g[i][i] = d[i];
 }
 
+/// −Γ^μ_{ab} k^a k^b with the symbols of MorrisThorne::christoffel_closed: a^l = l ((k^θ)² +
+/// sin²θ (k^φ)²), a^θ = −2 l/(b0² + l²) k^l k^θ + sinθ cosθ (k^φ)², a^φ = −2 l/(b0² + l²) k^l k^φ −
+/// 2 cotθ k^θ k^φ. The factors that wait for sin θ and cos θ (the last to be known: sincos_t is the
+/// longest chain of a stage) are multiplied last, and cos θ/sin θ is divided last (as
+/// edd_fink_in_accel; issue 13); the products differ from the former order by rounding only (tests:
+/// the symbols against automatic differentiation, test_metrics_other.cpp).
 template <class T>
 GEOVIS_HOT_INLINE void morris_thorne_accel(double b02, const Vec4T<T>& x, const Vec4T<T>& k, Vec4T<T>& a) {
   const T l = x[1];
   T st, ct;
   sincos_t(x[2], st, ct);
   const T lr2 = l / (b02 + l * l);
+  const T k3k3 = k[3] * k[3];
+  const T k2k3x2 = 2.0 * k[2] * k[3];
   a[0] = T(0.0);
-  a[1] = l * (k[2] * k[2] + st * st * k[3] * k[3]);
-  a[2] = -2.0 * lr2 * k[1] * k[2] + st * ct * k[3] * k[3];
-  a[3] = -2.0 * lr2 * k[1] * k[3] - 2.0 * ct / st * k[2] * k[3];
+  a[1] = l * (k[2] * k[2] + st * st * k3k3);
+  a[2] = -2.0 * lr2 * k[1] * k[2] + st * ct * k3k3;
+  a[3] = -2.0 * lr2 * k[1] * k[3] - k2k3x2 * ct / st;
 }
