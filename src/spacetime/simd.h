@@ -90,6 +90,18 @@ HWY_API SimdD clear_low_word(SimdD x) {
   return SimdD(hn::BitCast(d, hn::And(hn::BitCast(du, x.v), hn::Set(du, 0xffffffff00000000ull))));
 }
 
+/// The integer n (|n| < 2^51, held in a double) as a 64-bit integer modulo 2^52 — its two's
+/// complement bits from bit 0 to bit 51, which are all that the quadrant of sincos_t (n mod 4) and
+/// the exponent field of exp_t's 2^n (n + 1023 in [1, 2046], shifted left by 52) read: n + 1.5·2^52
+/// is exact and lies in [2^52, 2^53), where the significand holds 2^51 + n, so its bits are
+/// 0x4338000000000000 + n (the fdlibm round-to-integer constant's trick). Three instructions
+/// where Highway's ConvertTo (double → int64, saturating) emulates the conversion on AVX2 with ~20
+/// (callgrind, issue 13); the same values, so the same bits as before.
+HWY_API hn::Vec<hn::RebindToSigned<SimdTag>> integer_bits(SimdD n) {
+  const hn::RebindToSigned<SimdTag> di;
+  return hn::BitCast(di, hn::Add(n.v, hn::Set(SimdTag(), 6755399441055744.0)));
+}
+
 #include "spacetime/sincos_reduced.h"  // sincos_reduced: this target's copy
 
 /// fast_sincos (fast_math.h) lane by lane: the same reduction and the same Estrin polynomials
@@ -110,7 +122,7 @@ HWY_API void sincos_t(SimdD x, SimdD& s, SimdD& c) {
   sincos_reduced(x, n, sr, cr);
   // Quadrant q = n mod 4: q odd swaps sin and cos; sin is negated for q = 2, 3, cos for q = 1, 2.
   const hn::RebindToSigned<SimdTag> di;
-  const auto q = hn::ConvertTo(di, n.v);
+  const auto q = integer_bits(n);
   const auto one = hn::Set(di, 1), two = hn::Set(di, 2);
   const auto swap = hn::RebindMask(d, hn::Eq(hn::And(q, one), one));
   const auto neg_s = hn::RebindMask(d, hn::Eq(hn::And(q, two), two));
@@ -154,7 +166,7 @@ HWY_API SimdD exp_t(SimdD x) {
   SimdD n, er;
   exp_reduced(x, n, er);
   const hn::RebindToSigned<SimdTag> di;
-  const auto bits = hn::ShiftLeft<52>(hn::Add(hn::ConvertTo(di, n.v), hn::Set(di, 1023)));
+  const auto bits = hn::ShiftLeft<52>(hn::Add(integer_bits(n), hn::Set(di, 1023)));
   return er * SimdD(hn::BitCast(d, bits));
 }
 
@@ -226,6 +238,27 @@ HWY_INLINE void packet_constraint_simd(const MetricTensor& metric_tensor, const 
         return HWY_NAMESPACE::abs_quadratic_form(g, k);
       },
       y, target, value, scale, stride);
+}
+
+/// The same for a diagonal metric, from its template metric_diagonal(x, g) giving g_μμ (SimdD g[4]):
+/// diagonal_geodesic_constraint, the bits of geodesic_constraint on the full g_μν without its
+/// off-diagonal zeros.
+template <class MetricDiagonal>
+HWY_INLINE void packet_diagonal_constraint_simd(const MetricDiagonal& metric_diagonal, const double* y, double target,
+                                                double* value, double* scale, size_t stride) {
+  for (size_t l = 0; l < stride; l += SimdD::lanes()) {
+    Vec4T<SimdD> x, k;
+    for (int i = 0; i < 4; ++i) {
+      x[i] = SimdD::load(y + i * stride + l);
+      k[i] = SimdD::load(y + (4 + i) * stride + l);
+    }
+    SimdD g[4];
+    metric_diagonal(x, g);
+    SimdD v, s;
+    HWY_NAMESPACE::diagonal_geodesic_constraint(g, k, target, v, s);
+    v.store(value + l);
+    s.store(scale + l);
+  }
 }
 
 }  // namespace HWY_NAMESPACE

@@ -644,10 +644,13 @@ TEST(GeodesicPacket, AcceptedStepControlIsTheScalarController) {
 }
 
 // SimdD's sincos_t is fast_sincos lane by lane, to the bit, on every target, including the
-// reduction's quadrants and the std::sin/std::cos route for large arguments and NaN.
+// reduction's quadrants (also of multiples n of π/2 up to |n| ~ 63 000 near the SIMD route's bound
+// |x| < 1e5, whose n mod 4 simd.h's integer_bits takes from the bits of n + 1.5·2^52) and the
+// std::sin/std::cos route for large arguments and NaN.
 TEST(Simd, SinCosIsFastSinCosLaneByLane) {
   std::vector<double> x;
   for (int i = -2000; i < 2000; ++i) x.push_back(i * 0.0123456789);
+  for (int i = -400; i < 400; ++i) x.push_back(i * 249.87654321);
   for (double v : {0.0, -0.0, M_PI / 2, M_PI, 1e5, -2e6, 1e300, double(NAN), double(INFINITY)}) x.push_back(v);
   while (x.size() % 8) x.push_back(0.5);
   std::vector<double> s(x.size()), c(x.size());

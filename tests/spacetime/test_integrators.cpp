@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 #include <vector>
 
@@ -581,4 +582,43 @@ TEST(Integrators, NoHeapAllocationWhileIntegratingPackets) {
     EXPECT_EQ(finished, 20) << name;
     EXPECT_GT(steps, 20) << name;
   }
+}
+
+// diagonal_geodesic_constraint (geodesic_constraint.h, the packet's constraint on MorrisThorne and
+// KastorTraschen) leaves out the terms of the off-diagonal zeros: value and scale must have the bits
+// of geodesic_constraint on the full matrix with abs_quadratic_form, on the diagonals of real metrics
+// (where the slicing observer exists) and inside Schwarzschild's horizon (g_tt > 0: the fallback
+// Σ|g_ij k^i k^j|), for momenta with zero, −0 and mixed-sign components and for both targets.
+TEST(Integrators, DiagonalConstraintHasTheBitsOfTheFullOne) {
+  auto bits_equal = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  std::vector<Mat4> gs;
+  const std::vector<std::pair<const char*, Vec4>> events = {
+      {"MorrisThorne", Vec4{{0, 3.0, 1.1, 0.4}}},  {"MorrisThorne", Vec4{{0, -0.2, 0.05, 2.0}}},
+      {"KastorTraschen", Vec4{{-20, 40, 0.5, 0}}}, {"KastorTraschen", Vec4{{3, 0.1, 0.0, 0.9}}},
+      {"Schwarzschild", Vec4{{0, 5.0, 1.0, 0}}},   {"Schwarzschild", Vec4{{0, 1.5, 0.3, 0}}}};
+  for (const auto& [name, x] : events) {
+    Mat4 g;
+    make_metric(name)->metric_tensor(x, g);
+    gs.push_back(g);
+  }
+  int compared = 0, fallbacks = 0;
+  for (const Mat4& g : gs) {
+    const double d[4] = {g[0][0], g[1][1], g[2][2], g[3][3]};
+    for (int i = 0; i < 64; ++i) {
+      const Vec4 k{
+          {i % 4 == 0 ? 0.0 : std::sin(1.3 * i), -std::cos(0.7 * i) * 1e3, 1e-5 * i, i % 3 == 0 ? -0.0 : 0.25 * i}};
+      for (double target : {0.0, -1.0}) {
+        double v_full, s_full, v_diag, s_diag;
+        geodesic_constraint(
+            g, k, target, [&] { return abs_quadratic_form(g, k); }, v_full, s_full);
+        diagonal_geodesic_constraint(d, k, target, v_diag, s_diag);
+        EXPECT_TRUE(bits_equal(v_diag, v_full)) << i << " " << v_diag << " " << v_full;
+        EXPECT_TRUE(bits_equal(s_diag, s_full)) << i << " " << s_diag << " " << s_full;
+        ++compared;
+        if (!(d[0] < 0.0)) ++fallbacks;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 6 * 64 * 2);
+  EXPECT_GT(fallbacks, 0);  // the horizon's inside reaches the fallback
 }

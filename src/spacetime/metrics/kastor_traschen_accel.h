@@ -12,23 +12,31 @@
 //   a^i = Ω_i (k^t)²/(Ω⁵a²) − 2(Ω_t/Ω + H) k^t k^i − (2 k^i Ω·k − Ω_i |k|²)/Ω,
 // the last term being Σ_j Γ^i_jj (k^j)² + 2 Σ_{j≠i} Γ^i_ij k^i k^j = (Ω_i(2(k^i)² − |k|²) +
 // 2k^i(Ω·k − Ω_i k^i))/Ω.
-/// ds² = −dt²/Ω² + a² Ω² (dx² + dy² + dz²) (kastor_traschen.cpp); KastorTraschen::g_tmpl on every
-/// number type, and on SIMD lanes the packet's constraint test.
+/// ds² = −dt²/Ω² + a² Ω² (dx² + dy² + dz²) (kastor_traschen.cpp): g_μμ, the diagonal (the packet's
+/// constraint test, diagonal_geodesic_constraint).
 template <class T>
-GEOVIS_HOT_INLINE void kastor_traschen_metric_tensor(const KastorTraschenParams& p, const Vec4T<T>& x, Mat4T<T>& g) {
+GEOVIS_HOT_INLINE void kastor_traschen_metric_diagonal(const KastorTraschenParams& p, const Vec4T<T>& x, T (&g)[4]) {
   using std::sqrt;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
   const T a = exp_t(p.h * x[0]);
   const T d1 = x[3] - p.z1, d2 = x[3] - p.z2;
   const T rho2 = x[1] * x[1] + x[2] * x[2];
   const T r1 = sqrt(rho2 + d1 * d1), r2 = sqrt(rho2 + d2 * d2);
   const T Om = 1.0 + (p.m1 / r1 + p.m2 / r2) / a;
-  g[0][0] = -1.0 / (Om * Om);
+  g[0] = -1.0 / (Om * Om);
   const T s = a * a * Om * Om;
-  g[1][1] = s;
-  g[2][2] = s;
-  g[3][3] = s;
+  g[1] = s;
+  g[2] = s;
+  g[3] = s;
+}
+
+/// The same as the full g_μν: KastorTraschen::g_tmpl on every number type.
+template <class T>
+GEOVIS_HOT_INLINE void kastor_traschen_metric_tensor(const KastorTraschenParams& p, const Vec4T<T>& x, Mat4T<T>& g) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) g[i][j] = T(0.0);
+  T d[4];
+  kastor_traschen_metric_diagonal(p, x, d);
+  for (int i = 0; i < 4; ++i) g[i][i] = d[i];
 }
 
 /// KastorTraschen::is_valid (kastor_traschen.cpp, which says why) on any number type: the
@@ -59,9 +67,9 @@ GEOVIS_HOT_INLINE void kastor_traschen_accel(const KastorTraschenParams& p, cons
   const T d1 = x[3] - p.z1, d2 = x[3] - p.z2;
   const T rho2 = x[1] * x[1] + x[2] * x[2];
   const T ir1 = 1.0 / sqrt(rho2 + d1 * d1), ir2 = 1.0 / sqrt(rho2 + d2 * d2);
-  const T s1 = p.m1 * ir1, s2 = p.m2 * ir2;               // m_i / r_i
+  const T s1 = p.m1 * ir1, s2 = p.m2 * ir2;                    // m_i / r_i
   const T q1 = s1 * ir1 * ir1 * ia, q2 = s2 * ir2 * ir2 * ia;  // m_i / (a r_i³)
-  const T om1 = (s1 + s2) * ia;                          // Ω − 1
+  const T om1 = (s1 + s2) * ia;                                // Ω − 1
   const T om = 1.0 + om1;
   const T q12 = q1 + q2;
   // ∂_μ Ω: Ω_i = −Σ m_k (x − x_k)_i / (a r_k³), Ω_t = −H (Ω − 1).

@@ -124,6 +124,12 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
     return true;
   }
 
+  /// pseudo_cartesian_radius of all lanes of a packet in one call on SIMD lanes (the renderer asks
+  /// once per round of steps): Metric's default made a virtual call per lane, ~3 % of
+  /// morristhorne.scm's profile (perf, issue 13). Entries of lanes outside `lanes` are undefined
+  /// (Metric's contract), so all lanes are computed.
+  void pseudo_cartesian_radii(const double* x, unsigned lanes, double* radius, int* chart) const override;
+
   /// Inverse of to_pseudo_cartesian: chart 0 gives l = +|p|, chart 1 gives l = −|p| with the
   /// angles of −p (so that l·n(θ,φ) = p again).
   Vec4 from_pseudo_cartesian(double t, const Vec3& p, int chart) const override {
@@ -156,8 +162,9 @@ void morris_thorne_packet_acceleration(double b02, const double* y, double* a) {
       y, a, kPacketLanes);
 }
 void morris_thorne_packet_constraint(double b02, const double* y, double target, double* value, double* scale) {
-  packet_constraint_simd([b02](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { morris_thorne_metric_tensor(b02, x, g); }, y,
-                         target, value, scale, kPacketLanes);
+  packet_diagonal_constraint_simd(
+      [b02](const Vec4T<SimdD>& x, SimdD(&g)[4]) { morris_thorne_metric_diagonal(b02, x, g); }, y, target, value, scale,
+      kPacketLanes);
 }
 /// MorrisThorne::is_valid on SIMD lanes: the same tests (x^2 != 0 as hn::Ne, which is false for
 /// NaN where C++'s != is true, but a NaN x^2 already fails isfinite in both).
@@ -188,6 +195,20 @@ unsigned morris_thorne_packet_escapes(const double* y, double sign, double r_min
   }
   return bits;
 }
+/// MorrisThorne::pseudo_cartesian_radius on SIMD lanes: radius |l| (bit l of the result: l > 0,
+/// chart 0).
+unsigned morris_thorne_packet_radii(const double* y, double* radius) {
+  constexpr size_t W = kPacketLanes;
+  unsigned bits = 0;
+  for (size_t l = 0; l < W; l += SimdD::lanes()) {
+    const SimdD x1 = SimdD::load(y + 1 * W + l);
+    abs(x1).store(radius + l);
+    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(SimdTag(), (x1 > SimdD(0.0)).m, lane_bits);
+    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+  }
+  return bits;
+}
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -205,6 +226,11 @@ unsigned MorrisThorne::packet_is_valid_simd(const double* y) const {
 HWY_EXPORT(morris_thorne_packet_escapes);
 unsigned MorrisThorne::packet_escapes_simd(const double* y, double sign, double r_min, double* radius) const {
   return HWY_DYNAMIC_DISPATCH(morris_thorne_packet_escapes)(y, sign, r_min, radius);
+}
+HWY_EXPORT(morris_thorne_packet_radii);
+void MorrisThorne::pseudo_cartesian_radii(const double* x, unsigned /*lanes*/, double* radius, int* chart) const {
+  const unsigned positive = HWY_DYNAMIC_DISPATCH(morris_thorne_packet_radii)(x, radius);
+  for (int l = 0; l < kPacketLanes; ++l) chart[l] = positive >> l & 1u ? 0 : 1;
 }
 HWY_EXPORT(morris_thorne_packet_constraint);
 void MorrisThorne::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {
