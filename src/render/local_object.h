@@ -61,7 +61,7 @@ class LocalFrame {
   /// The frame at the event's proper time, completed from the event: state(ev.tau) bit for bit.
   State state(const WorldlineEvent& ev) const;
   /// Proper time of the worldline event simultaneous with x in the local frame, i.e. the root of
-  /// f(τ) = g(e_(0)(τ), x − x_obj(τ)) (Newton; f' = 1 + O(acceleration)). False when it lies
+  /// f(τ) = g(e_(0)(τ), x − x_obj(τ)) (Newton, slope from WorldlineEvent). False when it lies
   /// outside the motion's proper-time range. Static frames: true, τ unchanged. `ev`: the interval
   /// hint in, the last event evaluated out (moving frames; on convergence the event at τ: the
   /// search stops at the τ whose Newton step is below the tolerance, not after that step).
