@@ -122,6 +122,11 @@ Vec4 LocalFrame::to_local(const State& s, const Vec4& x) const {
   return X;
 }
 
+Vec3 LocalFrame::to_local_spatial(const State& s, const Vec4& x) const {
+  const Vec4 dx = delta(x, s.x);
+  return {dot_skipping_zeros(s.g, s.e[1], dx), dot_skipping_zeros(s.g, s.e[2], dx), dot_skipping_zeros(s.g, s.e[3], dx)};
+}
+
 bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev) const {
   if (!motion_) return true;
   const double lo = tau_lo_, hi = tau_hi_;
@@ -514,7 +519,7 @@ bool LocalObject::rest_frame_range(const Segment& seg, RestSegment& rest, double
 
 bool LocalObject::local_event(const Vec4& x, double& tau, Vec3& X) const {
   if (!frame_.simultaneous_tau(x, tau)) return false;
-  X = spatial(frame_.to_local(frame_.state(tau), x));
+  X = frame_.to_local_spatial(frame_.state(tau), x);
   return true;
 }
 
@@ -755,8 +760,8 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
       ls.p1 = rigid_motion_->rotate_to_object(rest1);
     } else {
       st = tube_.empty() ? frame_.state(tau) : frame_.state(ev);
-      ls.p0 = spatial(frame_.to_local(*st, seg.x0));
-      ls.p1 = spatial(frame_.to_local(*st, seg.x1));
+      ls.p0 = frame_.to_local_spatial(*st, seg.x0);
+      ls.p1 = frame_.to_local_spatial(*st, seg.x1);
     }
     ls.chart0 = ls.chart1 = child_->chart;
     ls.metric = seg.metric;

@@ -77,6 +77,9 @@ class LocalFrame {
   bool passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineEvent& ev, double radius) const;
   /// Local coordinates X^a = η^{ab} g(e_(b), x − x_obj) of event x.
   Vec4 to_local(const State& s, const Vec4& x) const;
+  /// Its spatial part (X^1, X^2, X^3), bit for bit, without X^0 (the intersection tests' local
+  /// points: two per frozen-frame iteration).
+  Vec3 to_local_spatial(const State& s, const Vec4& x) const;
   /// x − y in coordinates, the periodic angle (φ of spherical/cylindrical charts) wrapped to
   /// (−π, π].
   Vec4 delta(const Vec4& x, const Vec4& y) const;

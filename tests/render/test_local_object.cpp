@@ -256,6 +256,13 @@ TEST(ObjLocal, FrameFromTheSearchedEventIsTheFrameAtItsProperTime) {
     frame.event(tau, ev);
     const LocalFrame::State from_event = frame.state(ev);
     EXPECT_EQ(from_event.tau, direct.tau);
+    // to_local_spatial is to_local's spatial part bit for bit (an event 0.7 off the body).
+    const Vec4 x = direct.x + 0.7 * direct.e[2] + 0.2 * direct.e[0];
+    const Vec4 X = frame.to_local(direct, x);
+    const Vec3 Xs = frame.to_local_spatial(direct, x);
+    EXPECT_EQ(Xs.x, X[1]);
+    EXPECT_EQ(Xs.y, X[2]);
+    EXPECT_EQ(Xs.z, X[3]);
     for (int a = 0; a < 4; ++a) {
       EXPECT_EQ(from_event.x[a], direct.x[a]) << tau;
       for (int b = 0; b < 4; ++b) {
