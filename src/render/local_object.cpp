@@ -79,6 +79,8 @@ void LocalFrame::event(double tau, WorldlineEvent& ev) const {
   ev.tau = tau;
   motion_->event_at_proper_time(tau, ev.x, ev.e0);
   metric_->metric_tensor(ev.x, ev.g);
+  ev.u_norm = 1;
+  ev.e0_rate = Vec4{{0, 0, 0, 0}};
 }
 
 LocalFrame::State LocalFrame::state(double tau) const {
@@ -120,6 +122,11 @@ Vec4 LocalFrame::to_local(const State& s, const Vec4& x) const {
   return X;
 }
 
+Vec3 LocalFrame::to_local_spatial(const State& s, const Vec4& x) const {
+  const Vec4 dx = delta(x, s.x);
+  return {dot_skipping_zeros(s.g, s.e[1], dx), dot_skipping_zeros(s.g, s.e[2], dx), dot_skipping_zeros(s.g, s.e[3], dx)};
+}
+
 bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev) const {
   if (!motion_) return true;
   const double lo = tau_lo_, hi = tau_hi_;
@@ -128,10 +135,26 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev
     // Only the event and e_(0) are needed, not the whole frame; a search started where the last
     // one ended (intersect_piece's refinement) finds that event in `ev` already.
     if (!(ev.tau == tau)) event(tau, ev);
-    // f(τ) = g(e0, x − x_obj(τ)); df/dτ = −g(u, u) + g(∇_u e0, Δx) = 1 for geodesic or uniform
-    // motion (and 1 + O(a·Δx) otherwise), so the Newton step is τ − f.
-    const double f = dot_skipping_zeros(ev.g, ev.e0, delta(x, ev.x));
-    double next = tau - f;
+    // f(τ) = g_{μν}(x_obj) e0^μ Δx^ν, Δx = x − x_obj(τ); Newton's slope is
+    //   df/dτ = −g(e0, dx_obj/dτ) + d(g_{μν} e0^μ)/dτ Δx^ν = u_norm + e0_rate·Δx
+    // (WorldlineEvent; 1 and 0 for motions that are not sampled: a unit u, and the covector's
+    // rate, zero for uniform motion in Minkowski coordinates, not evaluated). For a geodesic the
+    // rate is d(u_ν)/dτ = ½ ∂_ν g_{αβ} u^α u^β (the geodesic equation with the index lowered),
+    // zero only for the conserved components: on sphereAroundBlackhole's sampled orbit
+    // e0_rate·Δx ~ 6e-10 (the integrator's orbit is not exactly circular), and with the slope 1
+    // the first step from a node left an error of that relative size, so every search evaluated
+    // a second interpolated event to reach the tolerance below; with the rate the first step
+    // lands within it (test ObjLocal.
+    // SimultaneitySlopeOfASampledMotionIsTheDerivativeOfItsFunction). The root and the
+    // tolerance are unchanged; where the linear slope is poor (far from the worldline, outside
+    // half to twice u_norm) u_norm is taken, the slope the search had before.
+    const Vec4 dx = delta(x, ev.x);
+    const double f = dot_skipping_zeros(ev.g, ev.e0, dx);
+    const double u_norm = ev.u_norm > 0 && std::isfinite(ev.u_norm) ? ev.u_norm : 1.0;
+    const Vec4& r = ev.e0_rate;
+    double slope = u_norm + ((r[0] * dx[0] + r[1] * dx[1]) + (r[2] * dx[2] + r[3] * dx[3]));
+    if (!(slope > 0.5 * u_norm && slope < 2 * u_norm)) slope = u_norm;
+    double next = tau - f / slope;
     if (next < lo || next > hi) {
       // Outside the worldline: one retry from the boundary, then give up.
       if ((next < lo && tau == lo) || (next > hi && tau == hi)) return false;
@@ -496,7 +519,7 @@ bool LocalObject::rest_frame_range(const Segment& seg, RestSegment& rest, double
 
 bool LocalObject::local_event(const Vec4& x, double& tau, Vec3& X) const {
   if (!frame_.simultaneous_tau(x, tau)) return false;
-  X = spatial(frame_.to_local(frame_.state(tau), x));
+  X = frame_.to_local_spatial(frame_.state(tau), x);
   return true;
 }
 
@@ -737,8 +760,8 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
       ls.p1 = rigid_motion_->rotate_to_object(rest1);
     } else {
       st = tube_.empty() ? frame_.state(tau) : frame_.state(ev);
-      ls.p0 = spatial(frame_.to_local(*st, seg.x0));
-      ls.p1 = spatial(frame_.to_local(*st, seg.x1));
+      ls.p0 = frame_.to_local_spatial(*st, seg.x0);
+      ls.p1 = frame_.to_local_spatial(*st, seg.x1);
     }
     ls.chart0 = ls.chart1 = child_->chart;
     ls.metric = seg.metric;

@@ -61,7 +61,7 @@ class LocalFrame {
   /// The frame at the event's proper time, completed from the event: state(ev.tau) bit for bit.
   State state(const WorldlineEvent& ev) const;
   /// Proper time of the worldline event simultaneous with x in the local frame, i.e. the root of
-  /// f(τ) = g(e_(0)(τ), x − x_obj(τ)) (Newton; f' = 1 + O(acceleration)). False when it lies
+  /// f(τ) = g(e_(0)(τ), x − x_obj(τ)) (Newton, slope from WorldlineEvent). False when it lies
   /// outside the motion's proper-time range. Static frames: true, τ unchanged. `ev`: the interval
   /// hint in, the last event evaluated out (moving frames; on convergence the event at τ: the
   /// search stops at the τ whose Newton step is below the tolerance, not after that step).
@@ -77,6 +77,9 @@ class LocalFrame {
   bool passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineEvent& ev, double radius) const;
   /// Local coordinates X^a = η^{ab} g(e_(b), x − x_obj) of event x.
   Vec4 to_local(const State& s, const Vec4& x) const;
+  /// Its spatial part (X^1, X^2, X^3), bit for bit, without X^0 (the intersection tests' local
+  /// points: two per frozen-frame iteration).
+  Vec3 to_local_spatial(const State& s, const Vec4& x) const;
   /// x − y in coordinates, the periodic angle (φ of spherical/cylindrical charts) wrapped to
   /// (−π, π].
   Vec4 delta(const Vec4& x, const Vec4& y) const;

@@ -5,6 +5,8 @@
 
 #include "core/error.h"
 #include "core/number_text.h"
+#include "spacetime/dual.h"
+#include "spacetime/metric.h"
 #include "spacetime/tetrad.h"
 
 namespace geovis {
@@ -31,12 +33,35 @@ void quintic_basis(double s, double H[6], double dH[6]) {
 
 }  // namespace
 
+Vec4 SampledMotion::lowered_e0_rate(const MotionNode& n, const Mat4& g) const {
+  // Between nodes event_at evaluates e_(0)(τ) = u(τ)/|u(τ)| with u the interpolant's derivative,
+  // which at the node is n.u with derivative n.du. d/dτ (g_{μν} e_(0)^μ) = (∂_u g)_{μν} e_(0)^μ
+  // + g_{μν} de_(0)^μ/dτ, de_(0)/dτ = (du − e_(0) d|u|/dτ)/|u|, d|u|/dτ = −[(∂_u g)(u, u)
+  // + 2 g(u, du)]/(2|u|) (from |u|² = −g(u, u)); ∂_u g = u^λ ∂_λ g by dual numbers (exact).
+  Mat4T<DualD> gd;
+  metric_->metric_tensor(seed(n.x), gd);
+  Mat4 dg{};  // (∂_u g)_{μν}
+  for (int mu = 0; mu < 4; ++mu)
+    for (int nu = 0; nu < 4; ++nu)
+      for (int la = 0; la < 4; ++la) dg[mu][nu] += gd[mu][nu].d[la] * n.u[la];
+  const double norm_u = std::sqrt(-dot(g, n.u, n.u));
+  const Vec4 e0 = (1.0 / norm_u) * n.u;
+  const double dnorm = -(dot(dg, n.u, n.u) + 2 * dot(g, n.u, n.du)) / (2 * norm_u);
+  const Vec4 de0 = (1.0 / norm_u) * (n.du - dnorm * e0);
+  Vec4 rate{{0, 0, 0, 0}};
+  for (int nu = 0; nu < 4; ++nu)
+    for (int mu = 0; mu < 4; ++mu) rate[nu] += dg[mu][nu] * e0[mu] + g[mu][nu] * de0[mu];
+  return rate;
+}
+
 void SampledMotion::set_nodes(std::vector<MotionNode> nodes) {
   if (nodes.empty()) throw Error("motion has no samples");
   nodes_ = std::move(nodes);
   samples_.clear();
   samples_.reserve(nodes_.size());
   node_g_.resize(nodes_.size());
+  node_u_norm_.resize(nodes_.size());
+  node_e0_rate_.resize(nodes_.size());
   node_tau_.clear();
   node_tau_.reserve(nodes_.size());
   x0_increasing_ = true;
@@ -45,6 +70,8 @@ void SampledMotion::set_nodes(std::vector<MotionNode> nodes) {
     samples_.push_back(MotionSample{n.tau, n.x, n.u, n.e});
     node_tau_.push_back(n.tau);
     metric_->metric_tensor(n.x, node_g_[i]);
+    node_u_norm_[i] = -dot_skipping_zeros(node_g_[i], n.e[0], n.u);
+    node_e0_rate_[i] = lowered_e0_rate(n, node_g_[i]);
     if (i > 0 && !(n.x[0] > nodes_[i - 1].x[0])) x0_increasing_ = false;
   }
 }
@@ -110,7 +137,10 @@ void SampledMotion::event_at(double tau, WorldlineEvent& ev) const {
   if (ev.node) {
     ev.x = ev.node->x;
     ev.e0 = ev.node->e[0];
-    ev.g = node_g_[static_cast<size_t>(ev.node - samples_.data())];
+    const size_t k = static_cast<size_t>(ev.node - samples_.data());
+    ev.g = node_g_[k];
+    ev.u_norm = node_u_norm_[k];
+    ev.e0_rate = node_e0_rate_[k];
     return;
   }
   // e_(0) is the normalized u(τ): the first Gram-Schmidt step of frame_at.
@@ -118,6 +148,11 @@ void SampledMotion::event_at(double tau, WorldlineEvent& ev) const {
   interpolate_x(i, tau, ev.x, u);
   metric_->metric_tensor(ev.x, ev.g);
   ev.e0 = unit_timelike(*metric_, ev.x, ev.g, u);
+  ev.u_norm = -dot_skipping_zeros(ev.g, ev.e0, u);
+  // The nodes' rates interpolated linearly (a slope for Newton's method: its error, O(h²) of the
+  // rate's change, only slows the convergence to the same root).
+  const double s = (tau - nodes_[i].tau) / (nodes_[i + 1].tau - nodes_[i].tau);
+  ev.e0_rate = (1 - s) * node_e0_rate_[i] + s * node_e0_rate_[i + 1];
 }
 
 Tetrad SampledMotion::frame_at(const WorldlineEvent& ev) const {

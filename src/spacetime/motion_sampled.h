@@ -34,6 +34,15 @@ struct WorldlineEvent {
   Vec4 x{{0, 0, 0, 0}};
   Vec4 e0{{0, 0, 0, 0}};  ///< e_(0) = u/√(−g(u, u))
   Mat4 g{};               ///< metric tensor at x
+  /// −g(e_(0), u) for u = dx/dτ of the worldline as evaluated (the interpolant's derivative; a
+  /// node's stored u): |u| = √(−g(u, u)) since e_(0) = u/|u|, 1 as far as the integrator keeps
+  /// u a unit vector; 1 for motions that are not sampled. With e0_rate, the slope of
+  /// LocalFrame::simultaneous_tau's function.
+  double u_norm = 1;
+  /// d/dτ of the covector g_{μν}(x(τ)) e_(0)^μ(τ) along the worldline as event_at evaluates it
+  /// (exact at a node, interpolated linearly between nodes; zero for motions that are not
+  /// sampled): the simultaneity function's slope is u_norm + e0_rate·(x − x_obj).
+  Vec4 e0_rate{{0, 0, 0, 0}};
   /// Index i of the node interval [τ_i, τ_{i+1}] holding τ; the next look-up tries it first (a
   /// Newton iteration stays in or near one interval).
   size_t interval = 0;
@@ -78,11 +87,15 @@ class SampledMotion : public Motion {
   /// returned as computed, not interpolated.
   const MotionSample* node_at(size_t i, double tau) const;
   void interpolate_x(size_t i, double tau, Vec4& x, Vec4& u) const;
+  /// WorldlineEvent::e0_rate at node n (metric tensor g there).
+  Vec4 lowered_e0_rate(const MotionNode& n, const Mat4& g) const;
 
   std::shared_ptr<const Metric> metric_;
   std::vector<MotionNode> nodes_;
   std::vector<MotionSample> samples_;
   std::vector<Mat4> node_g_;  ///< metric tensor at each node (simultaneity searches start at nodes)
+  std::vector<double> node_u_norm_;  ///< WorldlineEvent::u_norm at each node
+  std::vector<Vec4> node_e0_rate_;   ///< WorldlineEvent::e0_rate at each node
   /// nodes_[i].tau, contiguous: interval()'s binary search (a simultaneity search's first Newton step
   /// from a node lands several intervals away) touches one cache line per step over nodes_.
   std::vector<double> node_tau_;

@@ -256,6 +256,13 @@ TEST(ObjLocal, FrameFromTheSearchedEventIsTheFrameAtItsProperTime) {
     frame.event(tau, ev);
     const LocalFrame::State from_event = frame.state(ev);
     EXPECT_EQ(from_event.tau, direct.tau);
+    // to_local_spatial is to_local's spatial part bit for bit (an event 0.7 off the body).
+    const Vec4 x = direct.x + 0.7 * direct.e[2] + 0.2 * direct.e[0];
+    const Vec4 X = frame.to_local(direct, x);
+    const Vec3 Xs = frame.to_local_spatial(direct, x);
+    EXPECT_EQ(Xs.x, X[1]);
+    EXPECT_EQ(Xs.y, X[2]);
+    EXPECT_EQ(Xs.z, X[3]);
     for (int a = 0; a < 4; ++a) {
       EXPECT_EQ(from_event.x[a], direct.x[a]) << tau;
       for (int b = 0; b < 4; ++b) {
@@ -263,6 +270,84 @@ TEST(ObjLocal, FrameFromTheSearchedEventIsTheFrameAtItsProperTime) {
         EXPECT_EQ(from_event.g[a][b], direct.g[a][b]) << tau;
       }
     }
+  }
+}
+
+TEST(ObjLocal, SimultaneitySlopeOfASampledMotionIsTheDerivativeOfItsFunction) {
+  // simultaneous_tau's Newton slope u_norm + e0_rate·(x − x_obj) must be df/dτ of
+  // f(τ) = g(e_(0)(τ), x − x_obj(τ)) as event_at evaluates it: checked against a central difference
+  // of f itself (independent of the dual-number derivative of g and of the stored du), at nodes
+  // and between them, on the circular orbit at r = 6M of paper §3 and a radial fall (where
+  // e_(0) and g change fastest). On the orbit the slope is what makes the first Newton step from
+  // a node land within the search's tolerance (one interpolated event per search instead of two).
+  // The orbit as sphereAroundBlackhole.scm computes it: paper §3's, over ±500.
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  ParamSet circular("init-motion", SourceLoc{"orbit.scm", 1});
+  circular.add("type", "Geodesic");
+  circular.add("pos", std::vector<double>{0.0, 6.0, 1.5707963, 0.0});
+  circular.add("localvel", std::vector<double>{0.0, 0.0, 0.5});
+  circular.add("e0", std::vector<double>{1, 0, 0, 0});
+  circular.add("e1", std::vector<double>{0, 0, -1, 0});
+  circular.add("e2", std::vector<double>{0, 0, 0, -1});
+  circular.add("e3", std::vector<double>{0, 1, 0, 0});
+  circular.add("maxnumpoints", 1000);
+  circular.add("forward", 500.0);
+  circular.add("backward", 500.0);
+  ParamSet fall("init-motion", SourceLoc{"fall.scm", 1});
+  fall.add("type", "Geodesic");
+  fall.add("pos", std::vector<double>{0.0, 10.0, M_PI / 2, 0.0});
+  fall.add("localvel", std::vector<double>{0, 0, 0});
+  fall.add("maxnumpoints", 1000);
+  fall.add("forward", 30.0);
+  SolverConfig fall_solver;
+  fall_solver.step_ctrl = false;
+  fall_solver.step_size = 0.05;
+  bool orbit = true;
+  for (const MotionPtr& motion :
+       {make_motion(circular, m, testing_support::paper_solver()), make_motion(fall, m, fall_solver)}) {
+    const LocalFrame frame(m, motion);
+    const auto& samples = motion->samples();
+    for (size_t k : {size_t{20}, size_t{150}, samples.size() / 2, samples.size() - 20}) {
+      for (double offset : {0.0, 0.37}) {  // a node, and between two nodes
+        const double tau = samples[k].tau + offset * (samples[k + 1].tau - samples[k].tau);
+        WorldlineEvent ev;
+        frame.event(tau, ev);
+        // An event 0.8 away from the body along e_(1) + e_(3), shifted in time by 0.3.
+        Vec4 x = ev.x;
+        const LocalFrame::State st = frame.state(tau);
+        for (int mu = 0; mu < 4; ++mu) x[mu] += 0.8 * (st.e[1][mu] + st.e[3][mu]) + 0.3 * st.e[0][mu];
+        auto f = [&](double t) {
+          WorldlineEvent e;
+          frame.event(t, e);
+          return dot(e.g, e.e0, frame.delta(x, e.x));
+        };
+        const Vec4 dx = frame.delta(x, ev.x);
+        const double slope = ev.u_norm + (ev.e0_rate[0] * dx[0] + ev.e0_rate[1] * dx[1]) +
+                             (ev.e0_rate[2] * dx[2] + ev.e0_rate[3] * dx[3]);
+        const double h = 1e-4;
+        const double central = (f(tau + h) - f(tau - h)) / (2 * h);
+        // Exact at a node (up to the difference's O(h²) ~ 1e-9); between nodes the rate is
+        // interpolated linearly (O(h_node²) of its change).
+        EXPECT_NEAR(slope, central, offset == 0 ? 1e-7 : 1e-4) << k << " " << offset;
+        EXPECT_NEAR(ev.u_norm, 1.0, 1e-6);  // the integrator keeps u a unit vector
+        if (orbit && offset == 0) {
+          // One Newton step from the node, then the step the search takes at its event: below
+          // simultaneous_tau's tolerance 1e-12 (1 + |τ|).
+          const double tau1 = tau - dot(ev.g, ev.e0, dx) / slope;
+          WorldlineEvent ev1;
+          frame.event(tau1, ev1);
+          const double f1 = dot(ev1.g, ev1.e0, frame.delta(x, ev1.x));
+          EXPECT_LT(std::fabs(f1 / ev1.u_norm), 1e-12 * (1 + std::fabs(tau1))) << k;
+          // With the slope 1 of a unit four-velocity alone the step would stay far above it: the
+          // slope's correction matters.
+          const double tau1_unit = tau - dot(ev.g, ev.e0, dx);
+          frame.event(tau1_unit, ev1);
+          EXPECT_GT(std::fabs(dot(ev1.g, ev1.e0, frame.delta(x, ev1.x))), 1e-12 * (1 + std::fabs(tau1)))
+              << k << " tau " << tau;
+        }
+      }
+    }
+    orbit = false;
   }
 }
 
