@@ -434,6 +434,29 @@ void mino_end_positions(const MinoLaneCoeffs& c, const double* y, const double* 
   }
 }
 
+/// The tests of KerrMinoSystem after a step on the states y (SoA) of every lane, with the scalar
+/// tests' comparisons: bit l of the result where lane l's ζ is to be re-based (!(|ζ| <= 1),
+/// KerrMinoSystem::rebase), bit 8 + l where its w, t and φ lie in the box (KerrMinoSystem::inside
+/// but for θ; box = w_lo, w_hi, t_lo, t_hi, φ_lo, φ_hi, the same for every ray).
+unsigned mino_state_tests(const double* box, const double* y) {
+  using I = KerrMinoRHS;
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  unsigned bits = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const SimdD w = SimdD::load(y + I::W * W + l), t = SimdD::load(y + I::T * W + l);
+    const SimdD phi = SimdD::load(y + I::PHI * W + l), zeta = SimdD::load(y + I::Z * W + l);
+    const SimdMask rebase = !(fabs(zeta) <= SimdD(1.0));
+    const SimdMask in = w >= SimdD(box[0]) && w <= SimdD(box[1]) && t >= SimdD(box[2]) && t <= SimdD(box[3]) &&
+                        phi >= SimdD(box[4]) && phi <= SimdD(box[5]);
+    uint8_t r[8] = {}, b[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(d, rebase.m, r);
+    hn::StoreMaskBits(d, in.m, b);
+    bits |= static_cast<unsigned>(r[0]) << l | static_cast<unsigned>(b[0]) << (8 + l);
+  }
+  return bits;
+}
+
 /// KerrMinoSystem::valid of the states y (SoA) on every lane in `lanes`: bit l set where lane l's
 /// state is valid — 0 < w < w_break and, on the axis branch (L = 0), |z| <= 1 + 1e-3, else
 /// sin²θ > 0 — with the scalar test's operations, all lanes at once.
@@ -621,6 +644,7 @@ HWY_EXPORT(mino_attempt);
 HWY_EXPORT(mino_tolerance);
 HWY_EXPORT(mino_end_views);
 HWY_EXPORT(mino_end_positions);
+HWY_EXPORT(mino_state_tests);
 HWY_EXPORT(accepted_step_control);
 HWY_EXPORT(inside_box_lanes);
 HWY_EXPORT(take_step_ends);
@@ -701,9 +725,10 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it.
   bool accepted_states_change = true;
   if constexpr (requires { ps.accepted_states_change(cfg); }) accepted_states_change = ps.accepted_states_change(cfg);
-  // Whether the accept loop takes each attempt's state y1 (its tests or changes need it); else
-  // the loop that hands on the accepted steps takes it.
-  const bool takes_y1 = kOwnAffine || accepted_states_change;
+  // Whether the accept loop may take an attempt's state y1 as a row (its changes need it; a PS
+  // may tell the lanes whose state cannot change: PS::accepted_state_may_change); the loop that
+  // hands on the accepted steps lane by lane takes it again.
+  const bool takes_y1 = accepted_states_change;
   auto affine = [](const Sys& s, const double* yy, double sv) {
     if constexpr (kOwnAffine) return s.affine(yy);
     return sv;
@@ -716,7 +741,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     p.param_per_affine_lanes(yy, o);
   };
   HWY_ALIGN double per_affine_lanes[kLanePerAffine ? W : 1];  // PS::param_per_affine_lanes of y
-  static_assert(!kBatch || !kOwnAffine || (kLanePerAffine && requires { Sys::kAffineIndex; }));
+  static_assert(!kOwnAffine || requires { Sys::kAffineIndex; });
+  static_assert(!kBatch || !kOwnAffine || kLanePerAffine);
   // The affine parameter of lane l's state in `soa` (y or y1), read in place; sv: the integration
   // variable, which is the affine parameter of a system without one of its own.
   auto affine_at = [](const double* soa, int l, double sv) {
@@ -960,7 +986,6 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       auto& sys = ps.system(l);
       ln.res.rhs_evals += Tab::S - 1;
       double* yl1 = y1_row[l];
-      if (takes_y1) get(y1, l, yl1);
       const double err = attempt_err.err[l];
       const bool finite = attempt_err.finite >> l & 1u;
       const bool in_domain = valid >> l & 1u;
@@ -994,7 +1019,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       if constexpr (kOwnAffine) {
         // λ_max overshot, or a step longer than step_max in λ: retried shorter (integrate_with).
-        const double dl = std::fabs(sys.affine(yl1) - affine_at(y, l, ln.lambda));
+        const double dl = std::fabs(affine_at(y1, l, 0.0) - affine_at(y, l, 0.0));
         if (ln.affine_retries < 50) {
           if (std::isfinite(cfg.lambda_max) && dl > ln.remaining * (1.0 + 1e-12)) {
             ln.h = ln.hstep * ln.remaining / dl;
@@ -1013,7 +1038,11 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         ln.clipped = dl >= ln.remaining * (1.0 - 1e-12);
       }
       bool changed = false;
-      if (accepted_states_change) {
+      bool may_change = takes_y1;
+      if constexpr (requires { ps.accepted_state_may_change(cfg, l, y1); })
+        may_change = may_change && ps.accepted_state_may_change(cfg, l, y1);
+      if (may_change) {
+        get(y1, l, yl1);
         if (cfg.reproject) sys.reproject(yl1, cfg.type);
         if constexpr (requires { sys.project_invariants(yl1); }) changed = sys.project_invariants(yl1);
         if constexpr (requires { sys.rescale(yl1, cfg.type); }) changed = sys.rescale(yl1, cfg.type) || changed;
@@ -1061,7 +1090,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       const double* yl = y_row[l];
       const double* dyl = dy_row[l];
       double* yl1 = y1_row[l];
-      if (!takes_y1) get(y1, l, yl1);
+      get(y1, l, yl1);
       double dyl1[N];
       get(dy1, l, dyl1);
       if (!(std::fabs(checks.constraint[l]) <= cfg.constraint_tol * checks.constraint_scale[l])) {
@@ -1257,6 +1286,14 @@ struct MinoPacket {
   }
   /// The steps go to PacketRays::on_steps a round at a time where it is set.
   bool batch_steps() const { return static_cast<bool>(rays.on_steps); }
+  /// Whether lane l's accepted state (in y1, SoA) may be changed: re-projected (c.reproject), or
+  /// projected onto the polar first integral near the axis — KerrMinoSystem::project_invariants'
+  /// first tests, on ζ alone. Why: the other states need not be gathered (~25 instructions per
+  /// lane and attempt on kerrAccretionDisk.scm, callgrind, issue 13).
+  bool accepted_state_may_change(const SolverConfig& c, int l, const double* y1) {
+    const KerrMinoSystem& s = system(l);
+    return c.reproject || (!s.k.axis && s.f.polar.sin2(y1[KerrMinoRHS::Z * kPacketLanes + l]) < 0.1);
+  }
   /// The accepted steps of a round (s: Mino states, SoA) handed on at once: the positions of their
   /// ends on all lanes at once (mino_end_positions, on the θ branch after the step) as
   /// PacketSteps::p1, each lane's BL view only where the caller asks for it (lane_view); then each
@@ -1316,17 +1353,25 @@ struct MinoPacket {
   unsigned after_steps(const SolverConfig& c, unsigned lanes, double* y) {
     using I = KerrMinoRHS;
     constexpr int W = kPacketLanes;
-    unsigned inside = 0;
-    for (unsigned todo = lanes; todo != 0; todo &= todo - 1) {
+    if (!lanes) return 0;
+    // The box in w, t and φ is the same for every ray (KerrMinoSystem::set_box).
+    const KerrMinoSystem& any = system(std::countr_zero(lanes));
+    const double box[6] = {any.w_lo, any.w_hi, c.box_ll[0], c.box_ur[0], c.box_ll[3], c.box_ur[3]};
+    const unsigned bits = HWY_DYNAMIC_DISPATCH(mino_state_tests)(box, y);
+    for (unsigned todo = bits & lanes; todo != 0; todo &= todo - 1) {
       const int l = std::countr_zero(todo);
-      // The components rebase and inside read.
       double yl[I::N] = {};
+      yl[I::Z] = y[I::Z * W + l];
+      rebase(l, yl);  // reads and changes ζ alone
+      y[I::Z * W + l] = yl[I::Z];
+    }
+    unsigned inside = bits >> 8 & lanes;
+    if (!any.theta_boxed) return inside;
+    for (unsigned todo = inside; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      double yl[I::N] = {};  // the components inside reads
       for (const int i : {I::W, I::Z, I::T, I::PHI}) yl[i] = y[i * W + l];
-      if (!(std::fabs(yl[I::Z]) <= 1.0)) {  // KerrMinoSystem::rebase's test
-        rebase(l, yl);
-        y[I::Z * W + l] = yl[I::Z];
-      }
-      if (system(l).inside(c, yl)) inside |= 1u << l;
+      if (!system(l).inside(c, yl)) inside &= ~(1u << l);
     }
     return inside;
   }

@@ -481,17 +481,22 @@ struct KerrMinoRay {
   /// the position p1 (kerr_mino_position, which the caller computed). The states are converted as
   /// bl_step_with_position's (fill_views): on request where `on_request`, else at once. So every
   /// view is the one bl_step gives, to the bit; s's states are kept by reference as there.
+  /// Where the previous step was viewed so too, its end's view (converted, if it was asked for)
+  /// is the start's.
   StepView bl_step_viewed(const StepView& s, double pole0, double zeta0, const double* p1, bool on_request) {
     using I = KerrMinoRHS;
-    EndView& v0 = end_[start_];
-    v0.pole = pole0;
-    v0.zeta = zeta0;
-    v0.branch = branch;
-    v0.has_xk = false;
-    double y0[I::N];
-    for (int i = 0; i < I::N; ++i) y0[i] = s.y0[i];
-    y0[I::Z] = zeta0;
-    kerr_mino_position<double>(pole0, branch.sign, y0, v0.p);
+    if (s.step_index != viewed_step_ + 1) {
+      EndView& v0 = end_[start_];
+      v0.pole = pole0;
+      v0.zeta = zeta0;
+      v0.branch = branch;
+      v0.has_xk = false;
+      double y0[I::N];
+      for (int i = 0; i < I::N; ++i) y0[i] = s.y0[i];
+      y0[I::Z] = zeta0;
+      kerr_mino_position<double>(pole0, branch.sign, y0, v0.p);
+    }
+    viewed_step_ = s.step_index;
     EndView& v1 = next_end();
     v1.pole = sys.f.polar.pole;
     v1.zeta = s.y1[I::Z];
@@ -536,6 +541,7 @@ struct KerrMinoRay {
   EndView end_[2];
   int start_ = 0;
   bool have0_ = false;
+  int viewed_step_ = -1;  ///< the step bl_step_viewed gave last (-1: none)
   /// y0, dy0, y1, dy1 of the last step in Mino terms (bl_step_with_position), for fill_views.
   const double* mino_states_[4] = {};
 };
