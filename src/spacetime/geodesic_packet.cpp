@@ -684,6 +684,11 @@ struct Lane {
 ///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
 ///   steps(PacketSteps), batch_steps() (optional)   the accepted steps of a round at once instead of
 ///                                       step, where batch_steps() (returns the lanes to stop);
+///   after_steps(cfg, lanes, y) (optional)   with steps: after the batched steps of the lanes in
+///                                       `lanes` became their states y, the system's re-basing and
+///                                       its box test (returns the lanes inside);
+///   accepted_state_may_change(cfg, l, y1) (optional)   false where lane l's accepted state y1
+///                                       cannot be changed (reproject, project_invariants, rescale);
 ///   before_steps(lanes, y, y1, dy1) (optional)   once per round, before the steps of the accepted
 ///                                       lanes (bits of `lanes`: y → y1) are handed to step;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies;
@@ -723,12 +728,11 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   if constexpr (kBatch) batch_steps = ps.batch_steps();
   // Whether an accepted state may change before it is taken (reproject, project_invariants,
   // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it.
+  // The accept loop takes the state of a lane as a row only to change it (and not where PS tells
+  // that it cannot change: PS::accepted_state_may_change); the loop that hands on the accepted
+  // steps lane by lane takes it itself.
   bool accepted_states_change = true;
   if constexpr (requires { ps.accepted_states_change(cfg); }) accepted_states_change = ps.accepted_states_change(cfg);
-  // Whether the accept loop may take an attempt's state y1 as a row (its changes need it; a PS
-  // may tell the lanes whose state cannot change: PS::accepted_state_may_change); the loop that
-  // hands on the accepted steps lane by lane takes it again.
-  const bool takes_y1 = accepted_states_change;
   auto affine = [](const Sys& s, const double* yy, double sv) {
     if constexpr (kOwnAffine) return s.affine(yy);
     return sv;
@@ -1038,7 +1042,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         ln.clipped = dl >= ln.remaining * (1.0 - 1e-12);
       }
       bool changed = false;
-      bool may_change = takes_y1;
+      bool may_change = accepted_states_change;
       if constexpr (requires { ps.accepted_state_may_change(cfg, l, y1); })
         may_change = may_change && ps.accepted_state_may_change(cfg, l, y1);
       if (may_change) {
@@ -1226,9 +1230,7 @@ struct MinoPacket {
     HWY_DYNAMIC_DISPATCH(mino_param_per_affine)(coeffs, y, out);
   }
   /// KerrMinoSystem::valid of all lanes' states at once (mino_valid, SIMD).
-  unsigned valid_lanes(const double* y, unsigned lanes) const {
-    return HWY_DYNAMIC_DISPATCH(mino_valid)(coeffs, y, lanes);
-  }
+  unsigned valid_lanes(const double* y, unsigned lanes) const { return HWY_DYNAMIC_DISPATCH(mino_valid)(coeffs, y, lanes); }
   /// KerrMinoSystem's constraint (on SIMD lanes: mino_constraint, kerr_mino_constraint's bits),
   /// escaped and captured of the accepted states y (SoA) of the lanes in `lanes`. Escape and
   /// capture are tested lane by lane, and the costly part of each (the turning-point and

@@ -239,7 +239,9 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
       unsigned stop = 0;
       for (int l = 0; l < kPacketLanes; ++l) {
         if (!(steps.lanes >> l & 1u)) continue;
-        if (steps.step_index[l] % 3 == 0) {
+        // The view of each step but every third one's before (3k + 1), so that a view asked for
+        // (3k) starts where the view before it (3k − 1), never converted, ended.
+        if (steps.step_index[l] % 3 != 1) {
           double views[4][8];
           if (on_step_on_request(l, steps.view(l, views)) == StepAction::Stop) stop |= 1u << l;
         } else if (steps.step_index[l] == on_request[lane_ray[l]].stop_at) {
