@@ -223,18 +223,10 @@ GEOVIS_HOT_INLINE RayState::ChordEnd chord_end(const Metric& m, const double* y,
   return test_chord(rs, st, e0.p, e1.p, e0.chart, e1.chart);
 }
 
-/// The hit search's test of one accepted step: its chord (pseudo-Cartesian segment, paper §2.3)
-/// against the scene (test_chord), unless the chord lies in the scene's empty ball of its chart
-/// or beyond its bounding box (SegmentCull: a few compares, before the ends are transformed where
-/// the ball already excludes the chord). The common case of an integrator that gives each step's
-/// pseudo-Cartesian end (StepView::p1: the Mino-time paths), after a first step whose end was
-/// such a point too, here: test_step_general's steps with both ends known (chart 0), no Metric
-/// call.
-///
-/// test_step_at: the same for a step whose view `view()` gives (a StepView, or a reference to
-/// one) and whose end's pseudo-Cartesian position p1 (chart 0) is known without it: the view is
-/// made only for a chord that is tested, or for the ray's first step (the packet's batched steps
-/// in Mino time, PacketSteps::p1).
+/// test_step's common case (below) for a step whose view `view()` gives (a StepView, or a
+/// reference to one) and whose end's pseudo-Cartesian position p1 (chart 0) is known without it:
+/// the view is made only for a chord that is tested, or for the ray's first step (the packet's
+/// batched steps in Mino time, PacketSteps::p1).
 template <class View>
 GEOVIS_HOT_INLINE StepAction test_step_at(RayState& rs, const Vec3& p1, View&& view) {
   if (!rs.scene) return StepAction::Continue;
@@ -248,6 +240,13 @@ GEOVIS_HOT_INLINE StepAction test_step_at(RayState& rs, const Vec3& p1, View&& v
   return test_chord(rs, st, e0.p, p1, e0.chart, 0);
 }
 
+/// The hit search's test of one accepted step: its chord (pseudo-Cartesian segment, paper §2.3)
+/// against the scene (test_chord), unless the chord lies in the scene's empty ball of its chart
+/// or beyond its bounding box (SegmentCull: a few compares, before the ends are transformed where
+/// the ball already excludes the chord). The common case of an integrator that gives each step's
+/// pseudo-Cartesian end (StepView::p1: the Mino-time paths), after a first step whose end was
+/// such a point too, here: test_step_general's steps with both ends known (chart 0), no Metric
+/// call.
 StepAction test_step(RayState& rs, const StepView& st) {
   if (!rs.scene) return StepAction::Continue;
   if (!st.p1) return test_step_general(rs, st);
@@ -540,12 +539,6 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
     return false;
   };
   auto on_step = [&](int lane, const StepView& st) { return test_step(lanes[lane].rs, st); };
-  // The steps of a round of the packet in the metric's coordinates: test_step of each lane's step,
-  // its common case first without the step's view — after a first step, a chord whose new end's
-  // radius (for all lanes at once: Metric::pseudo_cartesian_radii) puts it in the scene's empty
-  // ball is skipped (test_step_general's result and RayState::prev for it). The per-step virtual
-  // radius, the lane's gathered StepView and the call per lane and step were ~150 instructions per
-  // step on fallEddFinkIn, where nearly every chord lies in the empty ball (callgrind, issue 13).
   // The steps of a round of the packet in Mino time, with the positions of their ends
   // (PacketSteps::p1): test_step's common case on those, a lane's view (a call into the
   // integrator) made only for a chord that is tested (test_step_at).
@@ -561,6 +554,12 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
     }
     return stop;
   };
+  // The steps of a round of the packet in the metric's coordinates: test_step of each lane's step,
+  // its common case first without the step's view — after a first step, a chord whose new end's
+  // radius (for all lanes at once: Metric::pseudo_cartesian_radii) puts it in the scene's empty
+  // ball is skipped (test_step_general's result and RayState::prev for it). The per-step virtual
+  // radius, the lane's gathered StepView and the call per lane and step were ~150 instructions per
+  // step on fallEddFinkIn, where nearly every chord lies in the empty ball (callgrind, issue 13).
   auto on_steps = [&](const PacketSteps& steps) {
     if (steps.p1) return on_steps_at(steps);
     double radius[kPacketLanes];
