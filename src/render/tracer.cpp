@@ -223,6 +223,23 @@ GEOVIS_HOT_INLINE RayState::ChordEnd chord_end(const Metric& m, const double* y,
   return test_chord(rs, st, e0.p, e1.p, e0.chart, e1.chart);
 }
 
+/// test_step's common case (below) for a step whose view `view()` gives (a StepView, or a
+/// reference to one) and whose end's pseudo-Cartesian position p1 (chart 0) is known without it:
+/// the view is made only for a chord that is tested, or for the ray's first step (the packet's
+/// batched steps in Mino time, PacketSteps::p1).
+template <class View>
+GEOVIS_HOT_INLINE StepAction test_step_at(RayState& rs, const Vec3& p1, View&& view) {
+  if (!rs.scene) return StepAction::Continue;
+  if (!(rs.have_prev && rs.prev.have_p)) return test_step_general(rs, view());
+  const RayState::ChordEnd e0 = rs.prev;
+  rs.prev = RayState::ChordEnd{p1, dot(p1, p1), 0, true};
+  const SegmentCull& cull = *rs.cull;
+  if (cull.inside_empty_ball(e0.chart, e0.radius2, 0, rs.prev.radius2)) return StepAction::Continue;
+  if (cull.outside_bounds(e0.p, p1)) return StepAction::Continue;
+  decltype(auto) st = view();
+  return test_chord(rs, st, e0.p, p1, e0.chart, 0);
+}
+
 /// The hit search's test of one accepted step: its chord (pseudo-Cartesian segment, paper §2.3)
 /// against the scene (test_chord), unless the chord lies in the scene's empty ball of its chart
 /// or beyond its bounding box (SegmentCull: a few compares, before the ends are transformed where
@@ -232,14 +249,8 @@ GEOVIS_HOT_INLINE RayState::ChordEnd chord_end(const Metric& m, const double* y,
 /// call.
 StepAction test_step(RayState& rs, const StepView& st) {
   if (!rs.scene) return StepAction::Continue;
-  if (!(st.p1 && rs.have_prev && rs.prev.have_p)) return test_step_general(rs, st);
-  const RayState::ChordEnd e0 = rs.prev;
-  const Vec3 p1{st.p1[0], st.p1[1], st.p1[2]};
-  rs.prev = RayState::ChordEnd{p1, dot(p1, p1), 0, true};
-  const SegmentCull& cull = *rs.cull;
-  if (cull.inside_empty_ball(e0.chart, e0.radius2, 0, rs.prev.radius2)) return StepAction::Continue;
-  if (cull.outside_bounds(e0.p, p1)) return StepAction::Continue;
-  return test_chord(rs, st, e0.p, p1, e0.chart, 0);
+  if (!st.p1) return test_step_general(rs, st);
+  return test_step_at(rs, Vec3{st.p1[0], st.p1[1], st.p1[2]}, [&st]() -> const StepView& { return st; });
 }
 
 /// Hit search: integrates the ray (integrate_ray) and tests every accepted step (test_step).
@@ -536,6 +547,21 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
     return false;
   };
   auto on_step = [&](int lane, const StepView& st) { return test_step(lanes[lane].rs, st); };
+  // The steps of a round of the packet in Mino time, with the positions of their ends
+  // (PacketSteps::p1): test_step's common case on those, a lane's view (a call into the
+  // integrator) made only for a chord that is tested (test_step_at).
+  auto on_steps_at = [&](const PacketSteps& steps) {
+    unsigned stop = 0;
+    constexpr int W = kPacketLanes;
+    for (unsigned todo = steps.lanes; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      const Vec3 p1{steps.p1[l], steps.p1[W + l], steps.p1[2 * W + l]};
+      double views[4][8];
+      auto view = [&steps, &views, l] { return steps.view(l, views); };
+      if (test_step_at(lanes[l].rs, p1, view) == StepAction::Stop) stop |= 1u << l;
+    }
+    return stop;
+  };
   // The steps of a round of the packet in the metric's coordinates: test_step of each lane's step,
   // its common case first without the step's view — after a first step, a chord whose new end's
   // radius (for all lanes at once: Metric::pseudo_cartesian_radii) puts it in the scene's empty
@@ -543,6 +569,7 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
   // radius, the lane's gathered StepView and the call per lane and step were ~150 instructions per
   // step on fallEddFinkIn, where nearly every chord lies in the empty ball (callgrind, issue 13).
   auto on_steps = [&](const PacketSteps& steps) {
+    if (steps.p1) return on_steps_at(steps);
     double radius[kPacketLanes];
     int chart[kPacketLanes];
     m.pseudo_cartesian_radii(steps.y1, steps.lanes, radius, chart);

@@ -414,6 +414,49 @@ void mino_end_views(const MinoLaneCoeffs& c, const double* y, const double* dy, 
   }
 }
 
+/// kerr_mino_position (kerr_mino_bl.h) of the states y (SoA) on every lane, on the θ branches of
+/// sign `sign`, to p (SoA, 3 rows of kPacketLanes): the positions of the step ends of the lanes in
+/// `lanes` (the others, whose y may be a rejected attempt, NaN, are viewed at φ = 0, as in
+/// mino_end_views).
+void mino_end_positions(const MinoLaneCoeffs& c, const double* y, const double* sign, unsigned lanes, double* p) {
+  constexpr int N = KerrMinoRHS::N, W = kPacketLanes;
+  const SimdTag d;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const uint8_t bits = static_cast<uint8_t>(lanes >> l);
+    const SimdMask active{hn::LoadMaskBits(d, &bits)};
+    SimdD ys[N];
+    for (int i = 0; i < N; ++i) ys[i] = SimdD::load(y + i * W + l);
+    ys[KerrMinoRHS::PHI] = select(active, ys[KerrMinoRHS::PHI], SimdD(0.0));
+    SimdD pp[3];
+    HWY_NAMESPACE::kerr_mino_position(SimdD::load(c.v[MinoLaneCoeffs::POLE] + l), SimdD::load(sign + l), ys,
+                                      pp);  // this target's copy
+    for (int i = 0; i < 3; ++i) pp[i].store(p + i * W + l);
+  }
+}
+
+/// The tests of KerrMinoSystem after a step on the states y (SoA) of every lane, with the scalar
+/// tests' comparisons: bit l of the result where lane l's ζ is to be re-based (!(|ζ| <= 1),
+/// KerrMinoSystem::rebase), bit 8 + l where its w, t and φ lie in the box (KerrMinoSystem::inside
+/// but for θ; box = w_lo, w_hi, t_lo, t_hi, φ_lo, φ_hi, the same for every ray).
+unsigned mino_state_tests(const double* box, const double* y) {
+  using I = KerrMinoRHS;
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  unsigned bits = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const SimdD w = SimdD::load(y + I::W * W + l), t = SimdD::load(y + I::T * W + l);
+    const SimdD phi = SimdD::load(y + I::PHI * W + l), zeta = SimdD::load(y + I::Z * W + l);
+    const SimdMask rebase = !(fabs(zeta) <= SimdD(1.0));
+    const SimdMask in = w >= SimdD(box[0]) && w <= SimdD(box[1]) && t >= SimdD(box[2]) && t <= SimdD(box[3]) &&
+                        phi >= SimdD(box[4]) && phi <= SimdD(box[5]);
+    uint8_t r[8] = {}, b[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(d, rebase.m, r);
+    hn::StoreMaskBits(d, in.m, b);
+    bits |= static_cast<unsigned>(r[0]) << l | static_cast<unsigned>(b[0]) << (8 + l);
+  }
+  return bits;
+}
+
 /// KerrMinoSystem::valid of the states y (SoA) on every lane in `lanes`: bit l set where lane l's
 /// state is valid — 0 < w < w_break and, on the axis branch (L = 0), |z| <= 1 + 1e-3, else
 /// sin²θ > 0 — with the scalar test's operations, all lanes at once.
@@ -600,6 +643,8 @@ HWY_EXPORT(mino_rhs);
 HWY_EXPORT(mino_attempt);
 HWY_EXPORT(mino_tolerance);
 HWY_EXPORT(mino_end_views);
+HWY_EXPORT(mino_end_positions);
+HWY_EXPORT(mino_state_tests);
 HWY_EXPORT(accepted_step_control);
 HWY_EXPORT(inside_box_lanes);
 HWY_EXPORT(take_step_ends);
@@ -639,6 +684,11 @@ struct Lane {
 ///   step(l, StepView), done(l, y, res)  the accepted steps and the end, in the system's variables;
 ///   steps(PacketSteps), batch_steps() (optional)   the accepted steps of a round at once instead of
 ///                                       step, where batch_steps() (returns the lanes to stop);
+///   after_steps(cfg, lanes, y) (optional)   with steps: after the batched steps of the lanes in
+///                                       `lanes` became their states y, the system's re-basing and
+///                                       its box test (returns the lanes inside);
+///   accepted_state_may_change(cfg, l, y1) (optional)   false where lane l's accepted state y1
+///                                       cannot be changed (reproject, project_invariants, rescale);
 ///   before_steps(lanes, y, y1, dy1) (optional)   once per round, before the steps of the accepted
 ///                                       lanes (bits of `lanes`: y → y1) are handed to step;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies;
@@ -657,28 +707,32 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   };
   constexpr bool kScaledTol = requires(const Sys& s, const double* p, double* q) { s.tolerance_inv_scale(p, q); };
   // A packet system tests the states of its lanes at once (PS::valid_lanes, PS::step_checks).
-  static_assert(requires(PS& p, const double* yy, PacketStepChecks& out) {
+  static_assert(requires(PS & p, const double* yy, PacketStepChecks& out) {
     p.valid_lanes(yy, 0u);
     p.step_checks(cfg, yy, 0u, out);
   });
   // A packet system that tests Sys::inside of all lanes' accepted states at once
   // (PS::inside_lanes); it must not change a state between the test and the step (rebase).
-  constexpr bool kLaneInside = requires(PS& p, const double* yy) { p.inside_lanes(cfg, yy); };
+  constexpr bool kLaneInside = requires(PS & p, const double* yy) { p.inside_lanes(cfg, yy); };
   static_assert(!kLaneInside || !requires(double* yy) { ps.rebase(0, yy); });
   // A packet system that can hand the accepted steps of a round on at once (PS::steps, where its
-  // caller takes them so: PS::batch_steps), without a StepView per lane; its states need no
-  // re-basing and its affine parameter is the integrator's.
-  constexpr bool kBatch = requires(PS& p, const PacketSteps& s) { p.steps(s); };
-  static_assert(!kBatch || (!kOwnAffine && kLaneInside && !requires(double* yy) { ps.rebase(0, yy); }));
+  // caller takes them so: PS::batch_steps), without a StepView per lane. Its states need no
+  // re-basing and it tests them against the box before the steps (PS::inside_lanes), or it does
+  // both after the steps have become the lanes' states (PS::after_steps); an affine parameter of
+  // its own is a component of the state (Sys::kAffineIndex), and its dσ/dλ is given for all lanes
+  // at once (kLanePerAffine): the batched steps keep no rows (y_row).
+  constexpr bool kBatch = requires(PS & p, const PacketSteps& s) { p.steps(s); };
+  constexpr bool kAfterSteps = requires(PS & p, double* yy) { p.after_steps(cfg, 0u, yy); };
+  static_assert(!kBatch || kAfterSteps || (kLaneInside && !requires(double* yy) { ps.rebase(0, yy); }));
   bool batch_steps = false;
   if constexpr (kBatch) batch_steps = ps.batch_steps();
   // Whether an accepted state may change before it is taken (reproject, project_invariants,
   // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it.
+  // The accept loop takes the state of a lane as a row only to change it (and not where PS tells
+  // that it cannot change: PS::accepted_state_may_change); the loop that hands on the accepted
+  // steps lane by lane takes it itself.
   bool accepted_states_change = true;
   if constexpr (requires { ps.accepted_states_change(cfg); }) accepted_states_change = ps.accepted_states_change(cfg);
-  // Whether the accept loop takes each attempt's state y1 (its tests or changes need it); else
-  // the loop that hands on the accepted steps takes it.
-  const bool takes_y1 = kOwnAffine || accepted_states_change;
   auto affine = [](const Sys& s, const double* yy, double sv) {
     if constexpr (kOwnAffine) return s.affine(yy);
     return sv;
@@ -687,9 +741,18 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     if constexpr (kOwnAffine) return s.param_per_affine(yy);
     return 1.0;
   };
-  constexpr bool kLanePerAffine =
-      kOwnAffine && requires(PS& p, const double* yy, double* o) { p.param_per_affine_lanes(yy, o); };
+  constexpr bool kLanePerAffine = kOwnAffine && requires(PS & p, const double* yy, double* o) {
+    p.param_per_affine_lanes(yy, o);
+  };
   HWY_ALIGN double per_affine_lanes[kLanePerAffine ? W : 1];  // PS::param_per_affine_lanes of y
+  static_assert(!kOwnAffine || requires { Sys::kAffineIndex; });
+  static_assert(!kBatch || !kOwnAffine || kLanePerAffine);
+  // The affine parameter of lane l's state in `soa` (y or y1), read in place; sv: the integration
+  // variable, which is the affine parameter of a system without one of its own.
+  auto affine_at = [](const double* soa, int l, double sv) {
+    if constexpr (kOwnAffine) return soa[Sys::kAffineIndex * W + l];
+    return sv;
+  };
 
   // integrate_with's constants (λ0 = 0).
   const double dir = cfg.direction >= 0 ? 1.0 : -1.0;
@@ -725,8 +788,9 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // tested per lane, in rows, and gathering the columns again for every use (the step's start
   // and its derivative, the start's affine parameter twice) was a ninth of kerrAccretionDisk.scm's
   // tracing instructions (callgrind, issue 13). The batched steps (take_steps) do not keep the
-  // rows: only the lane-by-lane loop and systems with their own affine parameter read them, and a
-  // batching system has neither (the static_assert above).
+  // rows: only the lane-by-lane loop and dσ/dλ of a system without param_per_affine_lanes read
+  // them (the affine parameter is read in place: affine_at), and a batching system has neither
+  // (the static_asserts above).
   HWY_ALIGN double y_row[W][N], dy_row[W][N], y1_row[W][N];
   // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step, for the lanes in
   // need_tol at once before the next attempt (PS::tolerance_inv, all lanes: a lane whose state
@@ -820,7 +884,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     if constexpr (kBatch) {
       ready &= ~accepted;
       unsigned stepping = 0;  // the accepted lanes whose constraint holds: they take their step
-      double lambda0[W], lambda1[W];
+      // The affine parameter at both ends, and the integration variable after the step.
+      double lambda0[W], lambda1[W], param1[W];
       int step_index[W];
       for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
         const int l = std::countr_zero(todo);
@@ -829,11 +894,13 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         if (!(std::fabs(checks.constraint[l]) <= cfg.constraint_tol * checks.constraint_scale[l])) continue;
         stepping |= 1u << l;
         step_index[l] = ++ln.res.steps;
-        lambda0[l] = ln.lambda;
-        lambda1[l] = ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
+        param1[l] = !kOwnAffine && ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
+        lambda0[l] = affine_at(y, l, ln.lambda);
+        lambda1[l] = affine_at(y1, l, param1[l]);
       }
       const unsigned stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, step_index});
       HWY_DYNAMIC_DISPATCH(take_step_ends)(stepping, y1, dy1, y, dy, N);
+      if constexpr (kAfterSteps) inside = ps.after_steps(cfg, stepping, y);
       for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
         const int l = std::countr_zero(todo);
         Lane<Tab, N>& ln = lane[l];
@@ -842,13 +909,18 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
           refill(l);
           continue;
         }
-        ln.lambda = lambda1[l];
+        ln.lambda = param1[l];
         set_tolerance(l);
         if (const StopReason stop = stop_after_step(l, stopped >> l & 1u, inside >> l & 1u, checks);
             stop != StopReason::None) {
           finish(l, stop);
           refill(l);
           continue;
+        }
+        if (!adaptive && kOwnAffine) {
+          double yl[N];
+          get(y, l, yl);
+          ln.h = std::fabs(cfg.step_size) * per_affine(ps.system(l), yl);
         }
         go_on(l);
       }
@@ -877,9 +949,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
           refill(l);
           continue;
         }
-        const double* yl = y_row[l];
         const Sys& sys = ps.system(l);
-        ln.remaining = cfg.lambda_max - std::fabs(affine(sys, yl, ln.lambda) - ln.affine0);
+        ln.remaining = cfg.lambda_max - std::fabs(affine_at(y, l, ln.lambda) - ln.affine0);
         if (!(ln.remaining > lambda_res)) {
           finish(l, StopReason::LambdaMax);
           refill(l);
@@ -891,7 +962,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         if constexpr (kLanePerAffine)
           ppa = per_affine_lanes[l];
         else
-          ppa = per_affine(sys, yl);
+          ppa = per_affine(sys, y_row[l]);
         if constexpr (kOwnAffine) {
           ln.hmax = ctl.hmax[l] = hmax_affine * ppa;
           ln.hmin = ctl.hmin[l] = cfg.step_min * ppa;
@@ -919,7 +990,6 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       auto& sys = ps.system(l);
       ln.res.rhs_evals += Tab::S - 1;
       double* yl1 = y1_row[l];
-      if (takes_y1) get(y1, l, yl1);
       const double err = attempt_err.err[l];
       const bool finite = attempt_err.finite >> l & 1u;
       const bool in_domain = valid >> l & 1u;
@@ -953,7 +1023,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       if constexpr (kOwnAffine) {
         // λ_max overshot, or a step longer than step_max in λ: retried shorter (integrate_with).
-        const double dl = std::fabs(sys.affine(yl1) - sys.affine(y_row[l]));
+        const double dl = std::fabs(affine_at(y1, l, 0.0) - affine_at(y, l, 0.0));
         if (ln.affine_retries < 50) {
           if (std::isfinite(cfg.lambda_max) && dl > ln.remaining * (1.0 + 1e-12)) {
             ln.h = ln.hstep * ln.remaining / dl;
@@ -972,7 +1042,11 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         ln.clipped = dl >= ln.remaining * (1.0 - 1e-12);
       }
       bool changed = false;
-      if (accepted_states_change) {
+      bool may_change = accepted_states_change;
+      if constexpr (requires { ps.accepted_state_may_change(cfg, l, y1); })
+        may_change = may_change && ps.accepted_state_may_change(cfg, l, y1);
+      if (may_change) {
+        get(y1, l, yl1);
         if (cfg.reproject) sys.reproject(yl1, cfg.type);
         if constexpr (requires { sys.project_invariants(yl1); }) changed = sys.project_invariants(yl1);
         if constexpr (requires { sys.rescale(yl1, cfg.type); }) changed = sys.rescale(yl1, cfg.type) || changed;
@@ -1020,7 +1094,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       const double* yl = y_row[l];
       const double* dyl = dy_row[l];
       double* yl1 = y1_row[l];
-      if (!takes_y1) get(y1, l, yl1);
+      get(y1, l, yl1);
       double dyl1[N];
       get(dy1, l, dyl1);
       if (!(std::fabs(checks.constraint[l]) <= cfg.constraint_tol * checks.constraint_scale[l])) {
@@ -1107,6 +1181,16 @@ struct MinoPacket {
   MinoLaneCoeffs coeffs;
   MinoEndViews ends;
   KerrMinoRay::EndView scratch_end;  ///< where the views of lanes without a step go
+  // The steps handed on a round at a time (steps): the lanes whose rays can pass through the axis
+  // (L = 0: their θ branch can change); the polar offset and ζ of each lane's state as the end of
+  // its last step, before a re-basing (the view of the next step's start,
+  // KerrMinoRay::bl_step_viewed); the positions of the step ends (SoA); the round's steps and the
+  // Mino states of the lane whose view was asked for last (lane_view).
+  unsigned axis_lanes = 0;
+  alignas(64) double start_pole[kPacketLanes] = {}, start_zeta[kPacketLanes] = {};
+  alignas(64) double end_p[3][kPacketLanes] = {};
+  const PacketSteps* round = nullptr;
+  double view_states[4][KerrMinoRHS::N] = {};
 
   KerrMinoSystem& system(int l) { return ray[l]->sys; }
   /// The ray from BL (x, k); one that starts outside the metric's validity domain goes to
@@ -1127,6 +1211,10 @@ struct MinoPacket {
         c.M,   c.a,  c.a2, c.E,  c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0,
         c.sin2_floor, r.sys.w_break};
     for (int i = 0; i < R::kRows; ++i) coeffs.v[i][l] = row[i];
+    axis_lanes = (axis_lanes & ~(1u << l)) | (c.axis ? 1u << l : 0u);
+    ends.sign[l] = r.branch.sign;
+    start_pole[l] = r.sys.f.polar.pole;
+    start_zeta[l] = y[KerrMinoRHS::Z];
     return true;
   }
   void rhs(const double* y, double* dy, unsigned) const { HWY_DYNAMIC_DISPATCH(mino_rhs)(coeffs, y, dy); }
@@ -1171,7 +1259,7 @@ struct MinoPacket {
   /// has after its step, written straight into each ray's next_end() (mino_end_views), which step
   /// then reports. Without a step callback none are needed.
   void before_steps(unsigned lanes, const double* y, const double* y1, const double* dy1) {
-    if (!rays.on_step) return;
+    if (!rays.on_step || batch_steps()) return;
     using I = KerrMinoRHS;
     constexpr int W = kPacketLanes;
     for (int l = 0; l < W; ++l) {
@@ -1197,6 +1285,97 @@ struct MinoPacket {
   void rebase(int l, double* y) {
     ray[l]->sys.rebase(y);
     coeffs.v[MinoLaneCoeffs::POLE][l] = ray[l]->sys.f.polar.pole;
+  }
+  /// The steps go to PacketRays::on_steps a round at a time where it is set.
+  bool batch_steps() const { return static_cast<bool>(rays.on_steps); }
+  /// Whether lane l's accepted state (in y1, SoA) may be changed: re-projected (c.reproject), or
+  /// projected onto the polar first integral near the axis — KerrMinoSystem::project_invariants'
+  /// first tests, on ζ alone. Why: the other states need not be gathered (~25 instructions per
+  /// lane and attempt on kerrAccretionDisk.scm, callgrind, issue 13).
+  bool accepted_state_may_change(const SolverConfig& c, int l, const double* y1) {
+    const KerrMinoSystem& s = system(l);
+    return c.reproject || (!s.k.axis && s.f.polar.sin2(y1[KerrMinoRHS::Z * kPacketLanes + l]) < 0.1);
+  }
+  /// The accepted steps of a round (s: Mino states, SoA) handed on at once: the positions of their
+  /// ends on all lanes at once (mino_end_positions, on the θ branch after the step) as
+  /// PacketSteps::p1, each lane's BL view only where the caller asks for it (lane_view); then each
+  /// lane's θ branch and the offset and ζ of its new state are kept for its next step. Why: the
+  /// lane-by-lane hand-over (the gathered rows, the ray's view bookkeeping, a call per lane and
+  /// step) was ~200 instructions per step on kerrAccretionDisk.scm, whose chords are nearly all
+  /// culled from their ends' positions alone (callgrind, issue 13).
+  unsigned steps(const PacketSteps& s) {
+    using I = KerrMinoRHS;
+    constexpr int W = kPacketLanes;
+    // Only a ray through the axis changes its θ branch (KerrMinoRay::branch_after).
+    for (unsigned todo = s.lanes & axis_lanes; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      ends.sign[l] = ray[l]->branch_after(s.y0[I::DZ * W + l], s.y1[I::Z * W + l], s.y1[I::DZ * W + l]).sign;
+    }
+    HWY_DYNAMIC_DISPATCH(mino_end_positions)(coeffs, s.y1, ends.sign, s.lanes, end_p[0]);
+    PacketSteps bl = s;
+    bl.p1 = end_p[0];
+    bl.lane_view = &MinoPacket::lane_view;
+    bl.lane_view_context = this;
+    round = &bl;
+    const unsigned stopped = rays.on_steps(bl);
+    round = nullptr;
+    for (unsigned todo = s.lanes & axis_lanes; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      ray[l]->branch = ray[l]->branch_after(s.y0[I::DZ * W + l], s.y1[I::Z * W + l], s.y1[I::DZ * W + l]);
+    }
+    for (unsigned todo = s.lanes; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      start_pole[l] = coeffs.v[MinoLaneCoeffs::POLE][l];
+      start_zeta[l] = s.y1[I::Z * W + l];
+    }
+    return stopped;
+  }
+  /// PacketSteps::lane_view of the round being handed on: lane l's step in BL terms
+  /// (KerrMinoRay::bl_step_viewed), its states converted on request where the caller reads them
+  /// so (PacketRays::states_on_request).
+  static StepView lane_view(void* context, int l) {
+    MinoPacket& p = *static_cast<MinoPacket*>(context);
+    constexpr int W = kPacketLanes, N = KerrMinoRHS::N;
+    const PacketSteps& s = *p.round;
+    for (int i = 0; i < N; ++i) {
+      p.view_states[0][i] = s.y0[i * W + l];
+      p.view_states[1][i] = s.y1[i * W + l];
+      p.view_states[2][i] = s.dy0[i * W + l];
+      p.view_states[3][i] = s.dy1[i * W + l];
+    }
+    const double p1[3] = {p.end_p[0][l], p.end_p[1][l], p.end_p[2][l]};
+    const StepView mino{
+        s.lambda0[l],   s.lambda1[l], p.view_states[0], p.view_states[1], p.view_states[2], p.view_states[3], N,
+        s.step_index[l]};
+    return p.ray[l]->bl_step_viewed(mino, p.start_pole[l], p.start_zeta[l], p1, p.rays.states_on_request);
+  }
+  /// After the steps of the lanes in `lanes` became their states y (SoA): the re-basing of those
+  /// that crossed the equator (rebase), then KerrMinoSystem::inside of each (bit l: lane l), in the
+  /// order of the lane-by-lane steps.
+  unsigned after_steps(const SolverConfig& c, unsigned lanes, double* y) {
+    using I = KerrMinoRHS;
+    constexpr int W = kPacketLanes;
+    if (!lanes) return 0;
+    // The box in w, t and φ is the same for every ray (KerrMinoSystem::set_box).
+    const KerrMinoSystem& any = system(std::countr_zero(lanes));
+    const double box[6] = {any.w_lo, any.w_hi, c.box_ll[0], c.box_ur[0], c.box_ll[3], c.box_ur[3]};
+    const unsigned bits = HWY_DYNAMIC_DISPATCH(mino_state_tests)(box, y);
+    for (unsigned todo = bits & lanes; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      double yl[I::N] = {};
+      yl[I::Z] = y[I::Z * W + l];
+      rebase(l, yl);  // reads and changes ζ alone
+      y[I::Z * W + l] = yl[I::Z];
+    }
+    unsigned inside = bits >> 8 & lanes;
+    if (!any.theta_boxed) return inside;
+    for (unsigned todo = inside; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      double yl[I::N] = {};  // the components inside reads
+      for (const int i : {I::W, I::Z, I::T, I::PHI}) yl[i] = y[i * W + l];
+      if (!system(l).inside(c, yl)) inside &= ~(1u << l);
+    }
+    return inside;
   }
   void done(int l, const double* y, const GeodesicResult& res) {
     double ys[kDim];

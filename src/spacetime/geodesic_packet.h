@@ -43,9 +43,18 @@ struct PacketSteps {
   const double* lambda0;  ///< per lane
   const double* lambda1;
   const int* step_index;  ///< per lane, 1 for the first accepted step
+  /// Where the integrator has them at hand (Carter's equations in Mino time): the pseudo-Cartesian
+  /// positions of the step ends (StepView::p1), SoA, 3 rows of kPacketLanes; else null.
+  const double* p1 = nullptr;
+  /// Where set (the Mino-time packet, whose y0, y1, dy0, dy1 are its own variables): lane l's step
+  /// as on_step would be handed it, in the metric's coordinates, from lane_view(lane_view_context,
+  /// l); valid until the next call. Else view gathers y0, y1, dy0, dy1, the metric's (x, k).
+  StepView (*lane_view)(void* context, int l) = nullptr;
+  void* lane_view_context = nullptr;
 
-  /// Lane l's step as a StepView, its four states gathered into `buf`.
+  /// Lane l's step as a StepView, its four states gathered into `buf` (or lane_view's).
   StepView view(int l, double (&buf)[4][8]) const {
+    if (lane_view) return lane_view(lane_view_context, l);
     for (int i = 0; i < 8; ++i) {
       buf[0][i] = y0[i * kPacketLanes + l];
       buf[1][i] = y1[i * kPacketLanes + l];
@@ -69,7 +78,8 @@ struct PacketRays {
   /// May be empty. Where set, the packet in the metric's coordinates (integrate_geodesic_packet)
   /// hands its accepted steps a round at a time here instead of to on_step, the same steps without
   /// gathering each lane's StepView (the caller gathers those it needs: PacketSteps::view); returns
-  /// the lanes whose rays stop (on_step's StepAction::Stop). The Mino-time packet calls on_step.
+  /// the lanes whose rays stop (on_step's StepAction::Stop). So does the Mino-time packet
+  /// (integrate_kerr_mino_packet), with the positions of the step ends (PacketSteps::p1).
   FunctionRef<unsigned(const PacketSteps& steps)> on_steps;
   /// on_step reads a StepView's states (y0, y1, dy0, dy1) only after StepView::ensure_states,
   /// and its pseudo-Cartesian ends where given: an integrator may then convert the states only on

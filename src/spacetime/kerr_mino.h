@@ -246,8 +246,10 @@ struct KerrMinoSystem {
   double w_break;  ///< 1/r_break: the horizon margin of the metric
 
   GEOVIS_HOT_INLINE void operator()(const double* y, double* dy) const { f(y, dy); }
-  /// λ of state y (the driver integrates in σ).
-  double affine(const double* y) const { return y[I::LAM]; }
+  /// λ of state y (the driver integrates in σ): its component kAffineIndex (the packet driver
+  /// reads it from its lanes' states in place, integrate_lanes).
+  static constexpr int kAffineIndex = I::LAM;
+  double affine(const double* y) const { return y[kAffineIndex]; }
   /// dσ/dλ = 1/Σ at y: converts the caller's step sizes, given in λ.
   double param_per_affine(const double* y) const {
     return kerr_mino_param_per_affine(k.a2, y[I::W], f.polar.z(y[I::Z]));
@@ -470,6 +472,50 @@ struct KerrMinoRay {
     bl.fill_context = this;
     return bl;
   }
+  /// The accepted Mino step s in BL terms for a caller that follows the θ branch itself (track_axis
+  /// after every step) and asks for the views of only some of the steps (the packet's steps handed
+  /// on a round at a time, PacketRays::on_steps: the renderer tests ~1 chord in 580 on the Kerr
+  /// disk, render/segment_cull.h): the view of the step's start on (pole0, zeta0), the polar
+  /// offset and ζ its state had as the previous step's end (before a re-basing, KerrMinoSystem::
+  /// rebase), and the current branch; of its end on the current offset and branch_after(s), with
+  /// the position p1 (kerr_mino_position, which the caller computed). The states are converted as
+  /// bl_step_with_position's (fill_views): on request where `on_request`, else at once. So every
+  /// view is the one bl_step gives, to the bit; s's states are kept by reference as there.
+  /// Where the previous step was viewed so too, its end's view (converted, if it was asked for)
+  /// is the start's.
+  StepView bl_step_viewed(const StepView& s, double pole0, double zeta0, const double* p1, bool on_request) {
+    using I = KerrMinoRHS;
+    if (s.step_index != viewed_step_ + 1) {
+      EndView& v0 = end_[start_];
+      v0.pole = pole0;
+      v0.zeta = zeta0;
+      v0.branch = branch;
+      v0.has_xk = false;
+      double y0[I::N];
+      for (int i = 0; i < I::N; ++i) y0[i] = s.y0[i];
+      y0[I::Z] = zeta0;
+      kerr_mino_position<double>(pole0, branch.sign, y0, v0.p);
+    }
+    viewed_step_ = s.step_index;
+    EndView& v1 = next_end();
+    v1.pole = sys.f.polar.pole;
+    v1.zeta = s.y1[I::Z];
+    v1.branch = branch_after(s.y0[I::DZ], s.y1[I::Z], s.y1[I::DZ]);
+    v1.has_xk = false;
+    for (int i = 0; i < 3; ++i) v1.p[i] = p1[i];
+    mino_states_[0] = s.y0;
+    mino_states_[1] = s.dy0;
+    mino_states_[2] = s.y1;
+    mino_states_[3] = s.dy1;
+    StepView bl = report(s);
+    if (on_request) {
+      bl.fill_states = &fill_views;
+      bl.fill_context = this;
+    } else {
+      fill_views(this);
+    }
+    return bl;
+  }
   /// The BL (x, k) of Mino state y (after the last step) to y_bl[0..7].
   void to_bl_state(const double* y, double* y_bl) const;
 
@@ -495,6 +541,7 @@ struct KerrMinoRay {
   EndView end_[2];
   int start_ = 0;
   bool have0_ = false;
+  int viewed_step_ = -1;  ///< the step bl_step_viewed gave last (-1: none)
   /// y0, dy0, y1, dy1 of the last step in Mino terms (bl_step_with_position), for fill_views.
   const double* mino_states_[4] = {};
 };

@@ -91,6 +91,7 @@ void for_every_target(F body) {
 struct RayRecord {
   std::vector<std::array<double, 16>> steps;  ///< (y1, dy1) of each accepted step
   std::vector<std::array<double, 2>> lambdas;
+  std::vector<std::array<double, 3>> positions;  ///< StepView::p1 of each step, where given
   double y[8] = {};
   GeodesicResult res;
   int stop_at = 0;  ///< the step callback stops the ray at this step (0: never)
@@ -104,6 +105,7 @@ StepAction record(RayRecord& r, const StepView& st) {
   }
   r.steps.push_back(s);
   r.lambdas.push_back({st.lambda0, st.lambda1});
+  if (st.p1) r.positions.push_back({st.p1[0], st.p1[1], st.p1[2]});
   return st.step_index == r.stop_at ? StepAction::Stop : StepAction::Continue;
 }
 
@@ -205,40 +207,66 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
         ASSERT_EQ(std::memcmp(a.steps[s].data(), b.steps[s].data(), sizeof a.steps[s]), 0) << "step " << s + 1;
         ASSERT_EQ(std::memcmp(a.lambdas[s].data(), b.lambdas[s].data(), sizeof a.lambdas[s]), 0) << "step " << s + 1;
       }
+      // The pseudo-Cartesian ends where the integrator gives them (Mino time): the scalar run's.
+      ASSERT_EQ(b.positions.size(), a.positions.size());
+      for (size_t s = 0; s < a.positions.size(); ++s)
+        ASSERT_EQ(std::memcmp(a.positions[s].data(), b.positions[s].data(), sizeof a.positions[s]), 0)
+            << "position, step " << s + 1;
     }
   }
   // The states on request (PacketRays::states_on_request; the Mino-time packet converts them only
   // then, KerrMinoRay::bl_step_with_position): asked for at every third step only, so that the
   // step's start is a view left unconverted at the step before (across re-basings at the
   // equator, too), they are the scalar run's to the bit — the end (y1, dy1) and the start (y0:
-  // the previous step's end).
-  next_ray = 0;
-  finished = 0;
-  std::vector<RayRecord> on_request(n);
-  auto on_step_on_request = [&](int lane, const StepView& st) {
-    RayRecord& r = on_request[lane_ray[lane]];
-    if (st.step_index % 3 == 0) {
-      st.ensure_states();
-      std::array<double, 16> s0;
-      for (int i = 0; i < 8; ++i) s0[i] = st.y0[i];
-      r.steps.push_back(s0);
-      record(r, st);
-    }
-    return st.step_index == r.stop_at ? StepAction::Stop : StepAction::Continue;
-  };
-  auto done_on_request = [&](int, const double*, const GeodesicResult&) { ++finished; };
-  for (size_t r = 0; r < n; ++r) on_request[r].stop_at = stops[r];
-  m.integrate_packet(cfg, PacketRays{next, on_step_on_request, done_on_request, {}, true});
-  ASSERT_EQ(finished, n);
-  for (size_t r = 0; r < n; ++r) {
-    SCOPED_TRACE("ray " + std::to_string(r) + ", states on request");
-    const RayRecord &a = scalar[r], &b = on_request[r];
-    ASSERT_EQ(b.steps.size(), 2 * (a.steps.size() / 3));
-    for (size_t j = 0; j < b.steps.size() / 2; ++j) {
-      const size_t s = 3 * (j + 1) - 1;  // 0-based index of step 3(j + 1)
-      ASSERT_EQ(std::memcmp(a.steps[s].data(), b.steps[2 * j + 1].data(), sizeof a.steps[s]), 0) << "step " << s + 1;
-      ASSERT_EQ(std::memcmp(a.steps[s - 1].data(), b.steps[2 * j].data(), 8 * sizeof(double)), 0)
-          << "start of step " << s + 1;
+  // the previous step's end). Lane by lane and a round at a time (on_steps: the views of the
+  // other steps are never made).
+  for (const bool batch : {false, true}) {
+    next_ray = 0;
+    finished = 0;
+    std::vector<RayRecord> on_request(n);
+    auto on_step_on_request = [&](int lane, const StepView& st) {
+      RayRecord& r = on_request[lane_ray[lane]];
+      if (st.step_index % 3 == 0) {
+        st.ensure_states();
+        std::array<double, 16> s0;
+        for (int i = 0; i < 8; ++i) s0[i] = st.y0[i];
+        r.steps.push_back(s0);
+        record(r, st);
+      }
+      return st.step_index == r.stop_at ? StepAction::Stop : StepAction::Continue;
+    };
+    auto on_steps_on_request = [&](const PacketSteps& steps) {
+      unsigned stop = 0;
+      for (int l = 0; l < kPacketLanes; ++l) {
+        if (!(steps.lanes >> l & 1u)) continue;
+        // The view of each step but every third one's before (3k + 1), so that a view asked for
+        // (3k) starts where the view before it (3k − 1), never converted, ended.
+        if (steps.step_index[l] % 3 != 1) {
+          double views[4][8];
+          if (on_step_on_request(l, steps.view(l, views)) == StepAction::Stop) stop |= 1u << l;
+        } else if (steps.step_index[l] == on_request[lane_ray[l]].stop_at) {
+          stop |= 1u << l;
+        }
+      }
+      return stop;
+    };
+    auto done_on_request = [&](int, const double*, const GeodesicResult&) { ++finished; };
+    for (size_t r = 0; r < n; ++r) on_request[r].stop_at = stops[r];
+    if (batch)
+      m.integrate_packet(cfg, PacketRays{next, on_step_on_request, done_on_request, on_steps_on_request, true});
+    else
+      m.integrate_packet(cfg, PacketRays{next, on_step_on_request, done_on_request, {}, true});
+    ASSERT_EQ(finished, n);
+    for (size_t r = 0; r < n; ++r) {
+      SCOPED_TRACE("ray " + std::to_string(r) + ", states on request" + (batch ? ", on_steps" : ""));
+      const RayRecord &a = scalar[r], &b = on_request[r];
+      ASSERT_EQ(b.steps.size(), 2 * (a.steps.size() / 3));
+      for (size_t j = 0; j < b.steps.size() / 2; ++j) {
+        const size_t s = 3 * (j + 1) - 1;  // 0-based index of step 3(j + 1)
+        ASSERT_EQ(std::memcmp(a.steps[s].data(), b.steps[2 * j + 1].data(), sizeof a.steps[s]), 0) << "step " << s + 1;
+        ASSERT_EQ(std::memcmp(a.steps[s - 1].data(), b.steps[2 * j].data(), 8 * sizeof(double)), 0)
+            << "start of step " << s + 1;
+      }
     }
   }
 }
