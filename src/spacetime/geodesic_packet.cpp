@@ -1293,8 +1293,7 @@ struct MinoPacket {
   /// first tests, on ζ alone. Why: the other states need not be gathered (~25 instructions per
   /// lane and attempt on kerrAccretionDisk.scm, callgrind, issue 13).
   bool accepted_state_may_change(const SolverConfig& c, int l, const double* y1) {
-    const KerrMinoSystem& s = system(l);
-    return c.reproject || (!s.k.axis && s.f.polar.sin2(y1[KerrMinoRHS::Z * kPacketLanes + l]) < 0.1);
+    return c.reproject || system(l).may_project(y1[KerrMinoRHS::Z * kPacketLanes + l]);
   }
   /// The accepted steps of a round (s: Mino states, SoA) handed on at once: the positions of their
   /// ends on all lanes at once (mino_end_positions, on the θ branch after the step) as

@@ -276,10 +276,16 @@ struct KerrMinoSystem {
   GEOVIS_HOT_INLINE bool project_invariants(double* y) const {
     if (k.axis) return false;
     const double s2 = f.polar.sin2(y[I::Z]);
-    if (!(s2 < 0.1)) return false;
+    if (!(s2 < kAxisProjectionSin2)) return false;
     return project_near_axis(y, s2);
   }
-  /// project_invariants at sin²θ = s2 < 0.1.
+  /// The sin²θ below which project_invariants projects.
+  static constexpr double kAxisProjectionSin2 = 0.1;
+  /// Whether project_invariants may change a state whose ζ is `zeta` (its first tests).
+  GEOVIS_HOT_INLINE bool may_project(double zeta) const {
+    return !k.axis && f.polar.sin2(zeta) < kAxisProjectionSin2;
+  }
+  /// project_invariants at sin²θ = s2 < kAxisProjectionSin2.
   bool project_near_axis(double* y, double s2) const {
     const double v = y[I::DZ], z = f.polar.z(y[I::Z]);
     const double inv = v * v - k.Z_of_sin2(s2);                      // z'² − Z
