@@ -25,6 +25,16 @@ using testing::make_segment;
 
 std::shared_ptr<const Metric> minkowski() { return std::shared_ptr<const Metric>(make_metric("Minkowski")); }
 
+/// minkWheel.scm's motion: boost v = 0.8 along −y, then rotation ω = 0.4 about +x.
+std::shared_ptr<ConstVelocityMotion> minkwheel_motion() {
+  ConstVelocityMotion::Op boost, rot;
+  boost.v = {0, -0.8, 0};
+  rot.is_boost = false;
+  rot.omega = 0.4;
+  rot.axis = {1, 0, 0};
+  return std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{boost, rot});
+}
+
 /// Inertial motion in Minkowski: origin event x_start, 3-velocity v; tetrad = boosted
 /// Cartesian axes (Jackson eq. 11.98): e_(0) = γ(1, v), e_(j) = (γ v_j, δ_jk + (γ−1) v_j v_k/v²).
 class UniformMotion final : public Motion {
@@ -282,17 +292,7 @@ TEST(ObjLocal, SimultaneitySlopeOfASampledMotionIsTheDerivativeOfItsFunction) {
   // a node land within the search's tolerance (one interpolated event per search instead of two).
   // The orbit as sphereAroundBlackhole.scm computes it: paper §3's, over ±500.
   std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
-  ParamSet circular("init-motion", SourceLoc{"orbit.scm", 1});
-  circular.add("type", "Geodesic");
-  circular.add("pos", std::vector<double>{0.0, 6.0, 1.5707963, 0.0});
-  circular.add("localvel", std::vector<double>{0.0, 0.0, 0.5});
-  circular.add("e0", std::vector<double>{1, 0, 0, 0});
-  circular.add("e1", std::vector<double>{0, 0, -1, 0});
-  circular.add("e2", std::vector<double>{0, 0, 0, -1});
-  circular.add("e3", std::vector<double>{0, 1, 0, 0});
-  circular.add("maxnumpoints", 1000);
-  circular.add("forward", 500.0);
-  circular.add("backward", 500.0);
+  const ParamSet circular = testing_support::paper_orbit_params(500.0, 500.0, 1.5707963);
   ParamSet fall("init-motion", SourceLoc{"fall.scm", 1});
   fall.add("type", "Geodesic");
   fall.add("pos", std::vector<double>{0.0, 10.0, M_PI / 2, 0.0});
@@ -662,12 +662,7 @@ TEST(ObjLocal, RollingWheelMaterialVelocity) {
   // point at local X moves with ω × X in the rest frame, so the contact point is at rest in the
   // lab and the top moves with 2v/(1 + v²).
   auto metric = minkowski();
-  ConstVelocityMotion::Op boost, rot;
-  boost.v = {0, -0.8, 0};
-  rot.is_boost = false;
-  rot.omega = 0.4;
-  rot.axis = {1, 0, 0};
-  auto motion = std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{boost, rot});
+  auto motion = minkwheel_motion();
   LocalObject wheel(std::make_shared<Cylinder>(Vec3{-0.15, 0, 0}, Vec3{0.15, 0, 0}, 2, 2), LocalFrame(metric, motion));
   int hits = 0;
   for (double y0 : {-1.5, -0.5, 0.0, 0.7}) {
@@ -801,12 +796,7 @@ TEST(ObjLocal, RollingPlankOnWholeRaysHitsWhereItsObjectCoordinatesEnterIt) {
   // refined τ) and the hit is a chord's estimate on a recheck piece (kRecheckPieces): its event
   // lies within R·θ of the plank, θ the turn of that piece (measured: 1.7e-4, 1.2e-4 in λ).
   auto metric = minkowski();
-  ConstVelocityMotion::Op boost, rot;
-  boost.v = {0, -0.8, 0};
-  rot.is_boost = false;
-  rot.omega = 0.4;
-  rot.axis = {1, 0, 0};
-  auto motion = std::make_shared<ConstVelocityMotion>(std::vector<ConstVelocityMotion::Op>{boost, rot});
+  auto motion = minkwheel_motion();
   const Vec3 lo_corner{-0.15, -2, -0.05}, hi_corner{0.15, 2, 0.05};
   LocalObject plank(std::make_shared<Box>(lo_corner, hi_corner), LocalFrame(metric, motion));
   const double estimate_bound =

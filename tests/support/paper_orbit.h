@@ -11,18 +11,20 @@
 
 namespace geovis::testing_support {
 
-inline ParamSet paper_orbit_params() {
+/// theta: the start's θ (sphereAroundBlackhole.scm writes 1.5707963); forward, backward: the
+/// proper-time range.
+inline ParamSet paper_orbit_params(double forward = 70.0, double backward = 10.0, double theta = M_PI / 2) {
   ParamSet ps("init-motion", SourceLoc{"orbit.scm", 20});
   ps.add("type", "Geodesic");
-  ps.add("pos", std::vector<double>{0.0, 6.0, M_PI / 2, 0.0});
+  ps.add("pos", std::vector<double>{0.0, 6.0, theta, 0.0});
   ps.add("localvel", std::vector<double>{0.0, 0.0, 0.5});
   ps.add("e0", std::vector<double>{1, 0, 0, 0});
   ps.add("e1", std::vector<double>{0, 0, -1, 0});
   ps.add("e2", std::vector<double>{0, 0, 0, -1});
   ps.add("e3", std::vector<double>{0, 1, 0, 0});
   ps.add("maxnumpoints", 1000);
-  ps.add("forward", 70.0);
-  ps.add("backward", 10.0);
+  ps.add("forward", forward);
+  ps.add("backward", backward);
   return ps;
 }
 
