@@ -18,6 +18,20 @@ constexpr double kPi = 3.14159265358979323846;
 
 Vec3 spatial(const Vec4& v) { return {v[1], v[2], v[3]}; }
 
+/// Narrows [s0, s1] to the part of the line A + s B inside the ball |·| <= R (the quadratic
+/// |B|² s² + 2 (A·B) s + |A|² − R² <= 0); false where no part of [s0, s1] is inside. A line
+/// that does not move (B = 0) is inside for every s or none, and [s0, s1] stays as it is.
+bool narrow_to_ball(const Vec3& A, const Vec3& B, double R, double& s0, double& s1) {
+  const double a = dot(B, B), b = dot(A, B), c = dot(A, A) - R * R;
+  if (!(a > 0)) return c <= 0;
+  const double disc = b * b - a * c;
+  if (!(disc >= 0)) return false;
+  const double root = std::sqrt(disc);
+  s0 = std::max(s0, (-b - root) / a);
+  s1 = std::min(s1, (-b + root) / a);
+  return s0 <= s1;
+}
+
 int periodic_index_of(const Metric& m) {
   switch (m.info().coord_type) {
     case CoordType::Spherical: return 3;    // (t, r, θ, φ)
@@ -409,14 +423,7 @@ bool LocalObject::world_tube_test(const Segment& seg, double& s0, double& s1) co
       // any length (a straight ray across the whole scene is one segment).
       const Vec3 A = seg.p0 - (origin_at_t0_ + seg.x0[0] * origin_velocity_);
       const Vec3 B = (seg.p1 - seg.p0) - (seg.x1[0] - seg.x0[0]) * origin_velocity_;
-      const double a = dot(B, B), b = dot(A, B), c = dot(A, A) - radius_pc_ * radius_pc_;
-      if (!(a > 0)) return c <= 0;
-      const double disc = b * b - a * c;
-      if (!(disc >= 0)) return false;
-      const double root = std::sqrt(disc);
-      s0 = std::max(0.0, (-b - root) / a);
-      s1 = std::min(1.0, (-b + root) / a);
-      return s0 <= s1;
+      return narrow_to_ball(A, B, radius_pc_, s0, s1);
     }
     const double ta = std::min(seg.x0[0], seg.x1[0]) - tube_margin_t_;
     const double tb = std::max(seg.x0[0], seg.x1[0]) + tube_margin_t_;
@@ -491,18 +498,8 @@ bool LocalObject::rest_frame_range(const Segment& seg, RestSegment& rest, double
   const Vec3 a = spatial(rest.y0), b = spatial(rest.dy);
   // The rest-frame coordinates carry rounding errors of ~1e-16 (|a| + |b|): a margin far above.
   const double margin = 1e-9 * (radius_local_ + norm(a) + norm(b));
-  // |a + s b| <= R: the quadratic of world_tube_test, in the rest frame.
-  const double r = radius_local_ + margin;
-  const double qa = dot(b, b), qb = dot(a, b), qc = dot(a, a) - r * r;
-  if (!(qa > 0)) {
-    if (!(qc <= 0)) return false;
-  } else {
-    const double disc = qb * qb - qa * qc;
-    if (!(disc >= 0)) return false;
-    const double root = std::sqrt(disc);
-    s0 = std::max(s0, (-qb - root) / qa);
-    s1 = std::min(s1, (-qb + root) / qa);
-  }
+  // |a + s b| <= R: world_tube_test's quadratic, in the rest frame.
+  if (!narrow_to_ball(a, b, radius_local_ + margin, s0, s1)) return false;
   if (axis_slab_) {
     const double h0 = dot(rotation_axis_, a), dh = dot(rotation_axis_, b);
     const double lo = axis_lo_ - margin, hi = axis_hi_ + margin;
@@ -658,13 +655,7 @@ bool LocalObject::intersect_per_box(const Segment& seg, Hit& hit) const {
 bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends, bool* unconverged) const {
   // A chord whose ends both lie beyond one face of the child's bounds misses the child (its
   // polyline test below would), decided before anything is set up.
-  if (ends) {
-    const Bounds3& b = child_bounds_;
-    const Vec3 &p = ends->X0, &q = ends->X1;
-    if ((p.x < b.lo.x && q.x < b.lo.x) || (p.x > b.hi.x && q.x > b.hi.x) || (p.y < b.lo.y && q.y < b.lo.y) ||
-        (p.y > b.hi.y && q.y > b.hi.y) || (p.z < b.lo.z && q.z < b.lo.z) || (p.z > b.hi.z && q.z > b.hi.z))
-      return false;
-  }
+  if (ends && child_bounds_.segment_beyond_a_face(ends->X0, ends->X1)) return false;
   const Vec4 dseg = frame_.delta(seg.x1, seg.x0);
   Vec4 x_ref = seg.x0 + 0.5 * dseg;
   double tau = 0;

@@ -54,6 +54,14 @@ struct Bounds3 {
     const Vec3 far{std::max(-lo.x, hi.x), std::max(-lo.y, hi.y), std::max(-lo.z, hi.z)};
     return std::sqrt(dot(far, far));
   }
+  /// The segment from p to q lies beyond one face of the box (both ends beyond the same face; the
+  /// half-space is convex), so it misses the box. A NaN coordinate puts it beyond no face of its
+  /// axis.
+  bool segment_beyond_a_face(const Vec3& p, const Vec3& q) const {
+    bool out = false;
+    for (int i = 0; i < 3; ++i) out |= (p[i] < lo[i] && q[i] < lo[i]) | (p[i] > hi[i] && q[i] > hi[i]);
+    return out;
+  }
   static Bounds3 infinite() {
     const double inf = std::numeric_limits<double>::infinity();
     return {Vec3{-inf, -inf, -inf}, Vec3{inf, inf, inf}};

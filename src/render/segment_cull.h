@@ -45,12 +45,7 @@ class SegmentCull {
   }
   /// The chord from p0 to p1 (pseudo-Cartesian) lies beyond one face of the scene's (widened)
   /// bounding box (a NaN coordinate puts it beyond no face of its axis).
-  bool outside_bounds(const Vec3& p0, const Vec3& p1) const {
-    bool out = false;
-    for (int i = 0; i < 3; ++i)
-      out |= (p0[i] < box_.lo[i] && p1[i] < box_.lo[i]) | (p0[i] > box_.hi[i] && p1[i] > box_.hi[i]);
-    return out;
-  }
+  bool outside_bounds(const Vec3& p0, const Vec3& p1) const { return box_.segment_beyond_a_face(p0, p1); }
   /// The (shrunk) radius of the empty ball of `chart` (0: none; +∞: no object in that chart).
   double radius(int chart) const { return chart >= 0 && chart < kCharts ? radius_[chart] : 0.0; }
   /// The (widened) bounding box outside which nothing is hit (infinite: none; empty: no object).
