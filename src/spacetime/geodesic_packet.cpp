@@ -441,7 +441,6 @@ void mino_end_positions(const MinoLaneCoeffs& c, const double* y, const double* 
 unsigned mino_state_tests(const double* box, const double* y) {
   using I = KerrMinoRHS;
   constexpr int W = kPacketLanes;
-  const SimdTag d;
   unsigned bits = 0;
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
     const SimdD w = SimdD::load(y + I::W * W + l), t = SimdD::load(y + I::T * W + l);
@@ -449,10 +448,7 @@ unsigned mino_state_tests(const double* box, const double* y) {
     const SimdMask rebase = !(fabs(zeta) <= SimdD(1.0));
     const SimdMask in = w >= SimdD(box[0]) && w <= SimdD(box[1]) && t >= SimdD(box[2]) && t <= SimdD(box[3]) &&
                         phi >= SimdD(box[4]) && phi <= SimdD(box[5]);
-    uint8_t r[8] = {}, b[8] = {};  // StoreMaskBits writes up to 8 bytes
-    hn::StoreMaskBits(d, rebase.m, r);
-    hn::StoreMaskBits(d, in.m, b);
-    bits |= static_cast<unsigned>(r[0]) << l | static_cast<unsigned>(b[0]) << (8 + l);
+    bits |= mask_bits(rebase) << l | mask_bits(in) << (8 + l);
   }
   return bits;
 }
@@ -464,7 +460,6 @@ unsigned mino_valid(const MinoLaneCoeffs& c, const double* y, unsigned lanes) {
   using R = MinoLaneCoeffs;
   using I = KerrMinoRHS;
   constexpr int W = kPacketLanes;
-  const SimdTag d;
   unsigned bits = 0;
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
     auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
@@ -474,9 +469,7 @@ unsigned mino_valid(const MinoLaneCoeffs& c, const double* y, unsigned lanes) {
     const SimdMask off_axis = -zeta * (2.0 * pole + zeta) > SimdD(0.0);  // PolarOffset::sin2
     const SimdMask ok =
         w > SimdD(0.0) && w < at(R::W_BREAK) && ((axis && near_pole) || (!axis && off_axis));
-    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
-    hn::StoreMaskBits(d, ok.m, lane_bits);
-    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+    bits |= mask_bits(ok) << l;
   }
   return bits & lanes;
 }
@@ -492,7 +485,6 @@ unsigned mino_constraint(const MinoLaneCoeffs& c, const double* y, double escape
   using R = MinoLaneCoeffs;
   using I = KerrMinoRHS;
   constexpr int W = kPacketLanes;
-  const SimdTag d;
   unsigned bits = 0;
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
     auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
@@ -506,10 +498,7 @@ unsigned mino_constraint(const MinoLaneCoeffs& c, const double* y, double escape
     const SimdD w = ys[I::W], dw = ys[I::DW];
     const SimdMask may_escape = w * SimdD(escape_radius) < SimdD(1.0) && SimdD(outward) * dw > SimdD(0.0);
     const SimdMask may_be_captured = w * SimdD(capture_radius) > SimdD(1.0) && SimdD(-outward) * dw > SimdD(0.0);
-    uint8_t esc[8] = {}, cap[8] = {};  // StoreMaskBits writes up to 8 bytes
-    hn::StoreMaskBits(d, may_escape.m, esc);
-    hn::StoreMaskBits(d, may_be_captured.m, cap);
-    bits |= static_cast<unsigned>(esc[0]) << l | static_cast<unsigned>(cap[0]) << (8 + l);
+    bits |= mask_bits(may_escape) << l | mask_bits(may_be_captured) << (8 + l);
   }
   return bits;
 }
@@ -606,9 +595,7 @@ unsigned inside_box_lanes(const double* box, const double* y) {
       const SimdD x = SimdD::load(y + i * W + l);
       in = in && x >= SimdD(box[i]) && x <= SimdD(box[4 + i]);
     }
-    uint8_t b[8] = {};
-    hn::StoreMaskBits(d, in.m, b);
-    bits |= static_cast<unsigned>(b[0]) << l;
+    bits |= mask_bits(in) << l;
   }
   return bits;
 }

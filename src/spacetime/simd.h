@@ -186,6 +186,14 @@ HWY_INLINE void packet_acceleration_simd(const F& accel, const double* y, double
   }
 }
 
+/// The lanes of one vector where m holds, as bits (bit i: lane i of the vector); a packet's
+/// functions shift them to the vector's first lane.
+HWY_API unsigned mask_bits(SimdMask m) {
+  uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
+  hn::StoreMaskBits(SimdTag(), m.m, lane_bits);
+  return lane_bits[0];
+}
+
 /// A metric's condition on the position x (a template over the number type giving a lane mask,
 /// e.g. its validity domain) on a packet of `stride` lanes in structure-of-arrays layout (y holds
 /// x^μ in its first 4 rows of `stride` doubles): bit l set where it holds on lane l.
@@ -195,9 +203,7 @@ HWY_INLINE unsigned packet_position_mask_simd(const Condition& condition, const 
   for (size_t l = 0; l < stride; l += SimdD::lanes()) {
     Vec4T<SimdD> x;
     for (int i = 0; i < 4; ++i) x[i] = SimdD::load(y + i * stride + l);
-    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
-    hn::StoreMaskBits(SimdTag(), condition(x).m, lane_bits);
-    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+    bits |= mask_bits(condition(x)) << l;
   }
   return bits;
 }

@@ -229,9 +229,7 @@ unsigned edd_fink_in_packet_escapes(double rs, const double* y, double sign, dou
     const SimdD r = SimdD::load(y + 1 * W + l), dr = SimdD(sign) * SimdD::load(y + 5 * W + l);
     const SimdMask escaped = r > SimdD(1.5 * rs) && dr > SimdD(0.0) && r > SimdD(r_min);
     r.store(radius + l);
-    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
-    hn::StoreMaskBits(SimdTag(), escaped.m, lane_bits);
-    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+    bits |= mask_bits(escaped) << l;
   }
   return bits;
 }
@@ -246,9 +244,7 @@ unsigned edd_fink_in_packet_captures(double rs, double r_band, double r_max, con
     const SimdD E = -(SimdD(1.0) - SimdD(rs) / r) * kv + kr;
     const SimdMask captured = r > SimdD(r_band) && E > SimdD(0.0) && r < SimdD(1.5 * rs) && r < SimdD(r_max) &&
                               kr < SimdD(0.0);
-    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
-    hn::StoreMaskBits(SimdTag(), captured.m, lane_bits);
-    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+    bits |= mask_bits(captured) << l;
   }
   return bits;
 }

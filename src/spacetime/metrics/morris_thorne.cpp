@@ -189,9 +189,7 @@ unsigned morris_thorne_packet_escapes(const double* y, double sign, double r_min
     const SimdD r = s * x1, dr = s * (SimdD(sign) * SimdD::load(y + 5 * W + l));
     const SimdMask escaped = r > SimdD(0.0) && dr > SimdD(0.0) && r > SimdD(r_min);
     r.store(radius + l);
-    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
-    hn::StoreMaskBits(SimdTag(), escaped.m, lane_bits);
-    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+    bits |= mask_bits(escaped) << l;
   }
   return bits;
 }
@@ -203,9 +201,7 @@ unsigned morris_thorne_packet_radii(const double* y, double* radius) {
   for (size_t l = 0; l < W; l += SimdD::lanes()) {
     const SimdD x1 = SimdD::load(y + 1 * W + l);
     abs(x1).store(radius + l);
-    uint8_t lane_bits[8] = {};  // StoreMaskBits writes up to 8 bytes
-    hn::StoreMaskBits(SimdTag(), (x1 > SimdD(0.0)).m, lane_bits);
-    bits |= static_cast<unsigned>(lane_bits[0]) << l;
+    bits |= mask_bits(x1 > SimdD(0.0)) << l;
   }
   return bits;
 }
