@@ -1072,8 +1072,9 @@ TEST(Tracer, CapturedInsideABackgroundSphereKeepsEveryPixel) {
     EXPECT_EQ(c, ray_stop(old.data[i])) << i;
     horizon += c == RayStop::Horizon;
     hits += c == RayStop::Hit;
-    if (c == RayStop::Hit)
+    if (c == RayStop::Hit) {
       for (int mu = 0; mu < 4; ++mu) EXPECT_EQ(cap.data[i].pos[mu], old.data[i].pos[mu]) << i;
+    }
   }
   for (int y = 0; y < N; ++y)
     for (int x = 0; x < N; ++x)

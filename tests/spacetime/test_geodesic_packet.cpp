@@ -173,8 +173,9 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
         const StepView st = steps.view(l, views);
         // The step starts where the lane's previous one ended.
         RayRecord& r = packet[lane_ray[l]];
-        if (!r.steps.empty())
+        if (!r.steps.empty()) {
           for (int i = 0; i < 8; ++i) EXPECT_TRUE(same_bits(st.y0[i], r.steps.back()[i])) << "y0[" << i << "]";
+        }
         if (record(r, st) == StepAction::Stop) stop |= 1u << l;
       }
       return stop;
@@ -599,7 +600,9 @@ TEST(GeodesicPacket, SimdValidityAndEscapeAsTheScalarTests) {
         escaped += reason == StopReason::Escaped;
       }
       EXPECT_GT(escaped, 0) << "no ray escapes";
-      if (std::string(name) == "EddFinkIn" && direction > 0) EXPECT_GT(invalid, 0) << "no ray reaches r_min";
+      if (std::string(name) == "EddFinkIn" && direction > 0) {
+        EXPECT_GT(invalid, 0) << "no ray reaches r_min";
+      }
       for_every_target([&] { expect_packet_equals_scalar(*m, cfg, rays); });
     }
   }
