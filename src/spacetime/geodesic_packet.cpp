@@ -91,6 +91,8 @@ struct LaneSteps {
   alignas(64) double h_cross[kPacketLanes] = {};    ///< the first step that left the domain (0: none)
   alignas(64) double affine0[kPacketLanes] = {};    ///< the affine parameter at the start
   alignas(64) double remaining[kPacketLanes] = {};  ///< λ_max less the affine distance run so far
+  alignas(64) int64_t rhs_evals[kPacketLanes] = {};  ///< GeodesicResult::rhs_evals
+  alignas(32) int steps[kPacketLanes] = {};          ///< GeodesicResult::steps (PacketSteps::step_index)
 };
 
 /// What lane_setup reads besides the lanes' step state.
@@ -679,17 +681,32 @@ unsigned lane_setup(unsigned lanes, const LaneSetupParams& p, LaneSteps& s, Pack
   return out;
 }
 
-/// integrate_with's tests of the attempts of all lanes (integrators.h), with its comparisons: bits
-/// 0–7 the lanes whose step is rejected (not in `valid`, the lanes whose y1 is finite and in the
-/// domain, or adaptive and !(err <= 1)). With an affine parameter of its own (affine0, affine1: its
-/// rows in y and y1; else null, and bits 8–23 are 0), for the step's length dl = |λ1 − λ0| in it:
+/// n more on the counts of the lanes in `lanes` (SoA, e.g. LaneSteps::rhs_evals).
+template <class T>
+HWY_INLINE void add_on_lanes(unsigned lanes, T n, T* count) {
+  constexpr int W = kPacketLanes;
+  const hn::Rebind<T, SimdTag> d;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += hn::Lanes(d)) {
+    const uint8_t bits = static_cast<uint8_t>(lanes >> l);
+    const auto v = hn::Load(d, count + l);
+    hn::Store(hn::IfThenElse(hn::LoadMaskBits(d, &bits), hn::Add(v, hn::Set(d, n)), v), d, count + l);
+  }
+}
+
+/// integrate_with's tests of the attempts of the lanes in `ready` (integrators.h), with its
+/// comparisons, after their S − 1 evaluations of the right-hand side (s.rhs_evals). The bits,
+/// of all lanes: 0–7 the lanes whose step is rejected (not in `valid`, the lanes whose y1 is
+/// finite and in the domain, or adaptive and !(err <= 1)). With an affine parameter of its own
+/// (affine0, affine1: its rows in y and y1; else null, and bits 8–23 are 0), for the step's length
+/// dl = |λ1 − λ0| in it:
 /// bits 8–15 where dl exceeds remaining·(1 + 1e-12) (λ_max finite) or hmax_affine·(1 + 1e-12)
 /// (the step is retried shorter), bits 16–23 where dl >= remaining·(1 − 1e-12) (it ends at λ_max).
-unsigned lane_attempt_tests(unsigned valid, const double* err, bool adaptive, const double* affine0,
-                            const double* affine1, const double* remaining, bool lambda_max_finite,
+unsigned lane_attempt_tests(unsigned ready, int64_t stage_evals, unsigned valid, const double* err, bool adaptive,
+                            const double* affine0, const double* affine1, LaneSteps& s, bool lambda_max_finite,
                             double hmax_affine) {
   constexpr int W = kPacketLanes;
   const SimdTag d;
+  add_on_lanes(ready, stage_evals, s.rhs_evals);
   unsigned out = 0;
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
     const uint8_t bits = static_cast<uint8_t>(valid >> l);
@@ -698,7 +715,7 @@ unsigned lane_attempt_tests(unsigned valid, const double* err, bool adaptive, co
     out |= mask_bits(!accept) << l;
     if (!affine0) continue;
     const SimdD dl = fabs(SimdD::load(affine1 + l) - SimdD::load(affine0 + l));
-    const SimdD rem = SimdD::load(remaining + l);
+    const SimdD rem = SimdD::load(s.remaining + l);
     SimdMask longer = dl > SimdD(hmax_affine) * SimdD(1.0 + 1e-12);
     if (lambda_max_finite) longer = longer || dl > rem * SimdD(1.0 + 1e-12);
     out |= mask_bits(longer) << (8 + l) | mask_bits(dl >= rem * SimdD(1.0 - 1e-12)) << (16 + l);
@@ -706,14 +723,27 @@ unsigned lane_attempt_tests(unsigned valid, const double* err, bool adaptive, co
   return out;
 }
 
-/// The lanes whose accepted state keeps the constraint: |C| <= tol·scale (integrate_with's test,
-/// its comparison; NaN fails).
-unsigned constraint_holds(const double* constraint, const double* scale, double tol) {
+/// integrate_with's tests and counts after the accepted attempts of the lanes in `accepted`: one
+/// more evaluation of the right-hand side on the lanes in need_dy1 (s.rhs_evals); bits 0–7 the
+/// lanes whose accepted state keeps the constraint, |C| <= tol·scale (its comparison; NaN fails),
+/// which take their step (one more in s.steps); bits 8–15 those of them that reach max_steps.
+unsigned lane_step_tests(unsigned accepted, unsigned need_dy1, const double* constraint, const double* scale,
+                         double tol, int max_steps, LaneSteps& s) {
   constexpr int W = kPacketLanes;
-  unsigned out = 0;
+  add_on_lanes(need_dy1, int64_t{1}, s.rhs_evals);
+  unsigned stepping = 0;
   for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes())
-    out |= mask_bits(fabs(SimdD::load(constraint + l)) <= SimdD(tol) * SimdD::load(scale + l)) << l;
-  return out;
+    stepping |= mask_bits(fabs(SimdD::load(constraint + l)) <= SimdD(tol) * SimdD::load(scale + l)) << l;
+  stepping &= accepted;
+  add_on_lanes(stepping, 1, s.steps);
+  const hn::Rebind<int, SimdTag> di;
+  unsigned at_max = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += hn::Lanes(di)) {
+    uint8_t bits[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(di, hn::Not(hn::Lt(hn::Load(di, s.steps + l), hn::Set(di, max_steps))), bits);
+    at_max |= unsigned{bits[0]} << l;
+  }
+  return stepping | (at_max & stepping) << 8;
 }
 
 /// After the steps of the lanes in `stepped`: their integration variable λ = param1; the lanes in
@@ -781,7 +811,7 @@ HWY_EXPORT(mino_constraint);
 HWY_EXPORT(mino_param_per_affine);
 HWY_EXPORT(lane_setup);
 HWY_EXPORT(lane_attempt_tests);
-HWY_EXPORT(constraint_holds);
+HWY_EXPORT(lane_step_tests);
 HWY_EXPORT(lanes_go_on);
 HWY_EXPORT(mino_may_project);
 HWY_EXPORT(copy_lanes);
@@ -795,7 +825,7 @@ namespace {
 /// tolerance, projection, re-basing — chosen by the same `requires`). The per-lane state is SoA
 /// (LaneSteps, PacketStepControl) and the common path of every lane — the set-up of its trial
 /// step, the tests of its attempt, the hand-over of its step and going on — runs on SIMD lanes
-/// with the scalar loop's operations (lane_setup, lane_attempt_tests, constraint_holds,
+/// with the scalar loop's operations (lane_setup, lane_attempt_tests, lane_step_tests,
 /// lanes_go_on); only the lanes that leave it (a rejected or retried step, a state to project, a
 /// ray that ends) are handled one by one, in lane order, as the scalar loop handles them.
 /// PS provides
@@ -898,12 +928,12 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // Each lane's run of integrate_with: its step state (s), its step controller (ExplicitRK::
   // control: h_old, q_old in ctl) and the inputs of the step control after accepted steps
   // (after_reject, hmin, hmax), done for all accepted lanes at once before their steps are handed
-  // on (packet_accepted_step_control); its result with the step count apart (steps: the
-  // PacketSteps::step_index of the batched steps) and its retries of steps too long in λ.
+  // on (packet_accepted_step_control); its result with the counts apart (in s) and its retries of
+  // steps too long in λ.
   LaneSteps s;
   PacketStepControl ctl{};
   GeodesicResult res[W];
-  int steps[W] = {}, affine_retries[W] = {};
+  int affine_retries[W] = {};
   const LaneSetupParams setup{kOwnAffine ? affine_row(y) : nullptr,
                               kOwnAffine ? per_affine_lanes : nullptr,
                               cfg.lambda_max,
@@ -943,7 +973,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     get(y, l, yl);
     GeodesicResult& rl = res[l];
     rl.reason = r;
-    rl.steps = steps[l];
+    rl.steps = s.steps[l];
+    rl.rhs_evals = s.rhs_evals[l];
     rl.lambda = affine(ps.system(l), yl, s.lambda[l]);
     double scale;
     ps.system(l).constraint(yl, cfg.type, rl.constraint_drift, scale);
@@ -965,7 +996,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       put(y, l, yl);
       if (!batch_steps) std::memcpy(y_row[l], yl, sizeof yl);
       res[l] = GeodesicResult{};
-      steps[l] = affine_retries[l] = 0;
+      s.steps[l] = affine_retries[l] = 0;
+      s.rhs_evals[l] = 0;
       retried &= ~bit;
       at_max = (at_max & ~bit) | (cfg.max_steps <= 0 ? bit : 0u);
       s.lambda[l] = s.h_cross[l] = 0.0;
@@ -988,13 +1020,6 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       need_dy |= bit;
       return;
-    }
-  };
-  // One more accepted step of the lanes in `lanes`, and which of them reach cfg.max_steps.
-  auto count_steps = [&](unsigned lanes) {
-    for (unsigned todo = lanes; todo != 0; todo &= todo - 1) {
-      const int l = std::countr_zero(todo);
-      if (++steps[l] >= cfg.max_steps) at_max |= 1u << l;
     }
   };
 
@@ -1031,17 +1056,16 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   auto take_steps = [&](unsigned accepted, unsigned need_dy1, const PacketStepChecks& checks, unsigned inside) {
     if constexpr (kBatch) {
       ready &= ~accepted;
-      for (unsigned todo = need_dy1; todo != 0; todo &= todo - 1) ++res[std::countr_zero(todo)].rhs_evals;
       // The accepted lanes whose constraint holds: they take their step.
-      const unsigned stepping =
-          accepted & HWY_DYNAMIC_DISPATCH(constraint_holds)(checks.constraint, checks.constraint_scale,
-                                                            cfg.constraint_tol);
-      count_steps(stepping);
+      const unsigned counted = HWY_DYNAMIC_DISPATCH(lane_step_tests)(
+          accepted, need_dy1, checks.constraint, checks.constraint_scale, cfg.constraint_tol, cfg.max_steps, s);
+      const unsigned stepping = counted & 0xffu;
+      at_max |= counted >> 8;
       // The affine parameter at both ends: the states' own, or the integration variable before
       // and after the step.
       const double* lambda0 = kOwnAffine ? affine_row(y) : s.lambda;
       const double* lambda1 = kOwnAffine ? affine_row(y1) : s.param1;
-      const unsigned stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, steps});
+      const unsigned stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, s.steps});
       HWY_DYNAMIC_DISPATCH(take_step_ends)(stepping, y1, dy1, y, dy, N);
       if constexpr (kAfterSteps) inside = ps.after_steps(cfg, stepping, y);
       set_tolerance(stepping);
@@ -1073,7 +1097,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         ps.rhs(y, dy, need_dy);
         for (unsigned todo = need_dy; todo != 0; todo &= todo - 1) {
           const int l = std::countr_zero(todo);
-          ++res[l].rhs_evals;
+          ++s.rhs_evals[l];
           if (!batch_steps) get(dy, l, dy_row[l]);
         }
         need_dy = 0;
@@ -1100,10 +1124,9 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     }
     ps.attempt(cfg.kind, ready, tol, y, dy, hv, y1, dy1, attempt_err);
     const unsigned valid = ps.valid_lanes(y1, ready & attempt_err.finite);
-    for (unsigned todo = ready; todo != 0; todo &= todo - 1) res[std::countr_zero(todo)].rhs_evals += Tab::S - 1;
-    const unsigned tests = HWY_DYNAMIC_DISPATCH(lane_attempt_tests)(
-        valid, attempt_err.err, adaptive, affine_row(y), affine_row(y1), s.remaining, std::isfinite(cfg.lambda_max),
-        hmax_affine);
+    const unsigned tests = HWY_DYNAMIC_DISPATCH(lane_attempt_tests)(ready, Tab::S - 1, valid, attempt_err.err, adaptive,
+                                                                    affine_row(y), affine_row(y1), s,
+                                                                    std::isfinite(cfg.lambda_max), hmax_affine);
     // The rejected steps, lane by lane (integrate_with's step control after a rejection).
     for (unsigned todo = tests & ready; todo != 0; todo &= todo - 1) {
       const int l = std::countr_zero(todo);
@@ -1211,7 +1234,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       const int l = std::countr_zero(todo);
       auto& sys = ps.system(l);
       ready &= ~(1u << l);
-      if (need_dy1 >> l & 1u) ++res[l].rhs_evals;
+      if (need_dy1 >> l & 1u) ++s.rhs_evals[l];
       const double* yl = y_row[l];
       const double* dyl = dy_row[l];
       double yl1[N], dyl1[N];
@@ -1222,10 +1245,10 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         refill(l);
         continue;
       }
-      count_steps(1u << l);
+      if (++s.steps[l] >= cfg.max_steps) at_max |= 1u << l;
       const double lambda1 = s.param1[l];
       const StepAction act = ps.step(
-          l, StepView{affine(sys, yl, s.lambda[l]), affine(sys, yl1, lambda1), yl, yl1, dyl, dyl1, N, steps[l]});
+          l, StepView{affine(sys, yl, s.lambda[l]), affine(sys, yl1, lambda1), yl, yl1, dyl, dyl1, N, s.steps[l]});
       if constexpr (requires { ps.rebase(l, yl1); }) ps.rebase(l, yl1);
       put(y, l, yl1);
       put(dy, l, dyl1);
