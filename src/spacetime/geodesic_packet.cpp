@@ -818,6 +818,31 @@ HWY_EXPORT(copy_lanes);
 
 namespace {
 
+/// The index of the SIMD target Highway chose (hwy::ChosenTarget) in the tables of HWY_EXPORT:
+/// the entry HWY_DYNAMIC_DISPATCH calls, looked up once per packet run (the packet systems'
+/// `target`, GEOVIS_PACKET_DISPATCH). Why: HWY_DYNAMIC_DISPATCH looks it up in every call (a call
+/// into Highway and a few instructions; ~17 calls per round of a packet, ~8 instructions each:
+/// callgrind, issue 13).
+size_t packet_target() {
+  hwy::ChosenTarget& chosen = hwy::GetChosenTarget();
+  if (!chosen.IsInitialized()) chosen.Update(hwy::SupportedTargets());  // as the first HWY_DYNAMIC_DISPATCH does
+  return chosen.GetIndex();
+}
+
+/// Entry `target` (packet_target) of a table of HWY_EXPORT; a table of one entry (a build for one
+/// target, where HWY_DYNAMIC_DISPATCH is the static call) has only that one.
+template <class F, size_t n>
+F packet_table_entry(F const (&table)[n], size_t target) {
+  return table[n == 1 ? 0 : target];
+}
+
+}  // namespace
+
+/// HWY_DYNAMIC_DISPATCH(FUNC) for the target index `target` (packet_target).
+#define GEOVIS_PACKET_DISPATCH(FUNC, target) (*packet_table_entry(HWY_DISPATCH_TABLE(FUNC), target))
+
+namespace {
+
 /// Integrates the rays of `rays` on the lanes of packet system PS, each lane exactly as
 /// integrate_with<ExplicitRK<Tab>> (integrators.h, Tab: the tableau of cfg.kind; DOP853 for its
 /// tableau, step_error_norm_lanes) integrates PS's scalar system of the lane from λ = 0: the same
@@ -1057,7 +1082,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     if constexpr (kBatch) {
       ready &= ~accepted;
       // The accepted lanes whose constraint holds: they take their step.
-      const unsigned counted = HWY_DYNAMIC_DISPATCH(lane_step_tests)(
+      const unsigned counted = GEOVIS_PACKET_DISPATCH(lane_step_tests, ps.target)(
           accepted, need_dy1, checks.constraint, checks.constraint_scale, cfg.constraint_tol, cfg.max_steps, s);
       const unsigned stepping = counted & 0xffu;
       at_max |= counted >> 8;
@@ -1066,12 +1091,12 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       const double* lambda0 = kOwnAffine ? affine_row(y) : s.lambda;
       const double* lambda1 = kOwnAffine ? affine_row(y1) : s.param1;
       const unsigned stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, s.steps});
-      HWY_DYNAMIC_DISPATCH(take_step_ends)(stepping, y1, dy1, y, dy, N);
+      GEOVIS_PACKET_DISPATCH(take_step_ends, ps.target)(stepping, y1, dy1, y, dy, N);
       if constexpr (kAfterSteps) inside = ps.after_steps(cfg, stepping, y);
       set_tolerance(stepping);
       // stop_after_step's reasons, all lanes at once.
       const unsigned go = stepping & ~(stopped | ~inside | clipped | checks.escaped | checks.captured);
-      HWY_DYNAMIC_DISPATCH(lanes_go_on)(stepping, go, adaptive, s, ctl);
+      GEOVIS_PACKET_DISPATCH(lanes_go_on, ps.target)(stepping, go, adaptive, s, ctl);
       if (!adaptive && kOwnAffine) {
         for (unsigned todo = go; todo != 0; todo &= todo - 1) {
           const int l = std::countr_zero(todo);
@@ -1105,7 +1130,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       const unsigned todo = live & ~ready;
       if (!todo) break;
       if constexpr (kOwnAffine) ps.param_per_affine_lanes(y, per_affine_lanes);
-      const unsigned set = HWY_DYNAMIC_DISPATCH(lane_setup)(todo, setup, s, ctl, hv);
+      const unsigned set = GEOVIS_PACKET_DISPATCH(lane_setup, ps.target)(todo, setup, s, ctl, hv);
       clipped = (clipped & ~todo) | (set >> 8 & todo);
       // The lanes that stop before the step (max_steps, then λ_max, as integrate_with tests them).
       const unsigned stop = todo & (at_max | set);
@@ -1124,7 +1149,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     }
     ps.attempt(cfg.kind, ready, tol, y, dy, hv, y1, dy1, attempt_err);
     const unsigned valid = ps.valid_lanes(y1, ready & attempt_err.finite);
-    const unsigned tests = HWY_DYNAMIC_DISPATCH(lane_attempt_tests)(ready, Tab::S - 1, valid, attempt_err.err, adaptive,
+    const unsigned tests = GEOVIS_PACKET_DISPATCH(lane_attempt_tests, ps.target)(ready, Tab::S - 1, valid, attempt_err.err, adaptive,
                                                                     affine_row(y), affine_row(y1), s,
                                                                     std::isfinite(cfg.lambda_max), hmax_affine);
     // The rejected steps, lane by lane (integrate_with's step control after a rejection).
@@ -1222,7 +1247,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     // ln.h = min(hmax, max(control.next_with_root(hstep, err, root, true, after_reject), hmin)) of
     // every accepted lane (err and root: attempt_err's; hstep = |hv|), taken below
     // by those that go on. A lane that stops here is refilled with a fresh controller or stays idle.
-    if (adaptive) HWY_DYNAMIC_DISPATCH(accepted_step_control)(accepted, hv, attempt_err.err, attempt_err.root, ctl);
+    if (adaptive) GEOVIS_PACKET_DISPATCH(accepted_step_control, ps.target)(accepted, hv, attempt_err.err, attempt_err.root, ctl);
     if constexpr (kBatch) {
       if (batch_steps) {
         take_steps(accepted, need_dy1, checks, inside);
@@ -1275,6 +1300,7 @@ struct CoordinatePacket {
   static constexpr int N = kDim;
   const MetricKernel& metric;
   const PacketRays& rays;
+  size_t target = packet_target();  ///< the SIMD functions' (GEOVIS_PACKET_DISPATCH)
   GeodesicRHS<MetricKernel> f{metric};
   MetricSystem<MetricKernel, GeodesicRHS<MetricKernel>> sys{metric, f};
 
@@ -1286,17 +1312,16 @@ struct CoordinatePacket {
   void rhs(const double* y, double* dy, unsigned lanes) const { packet_rhs(metric, y, dy, lanes); }
   void attempt(SolverKind kind, unsigned lanes, const LaneTolerance& tol, const double* y, const double* dy,
                const double* h, double* y1, double* dy1, AttemptError& err) const {
-    // Looked up per call: before the first dispatch the table entry is Highway's target chooser.
-    HWY_DYNAMIC_DISPATCH(rk_attempt)(kind, metric, lanes, tol, y, dy, h, y1, dy1, err);
+    GEOVIS_PACKET_DISPATCH(rk_attempt, target)(kind, metric, lanes, tol, y, dy, h, y1, dy1, err);
   }
   /// MetricSystem's tests of all lanes' states at once, with the metric's functions inlined
   /// (MetricKernel::packet_valid, packet_step_checks).
   unsigned valid_lanes(const double* y, unsigned lanes) const { return metric.packet_valid(y, lanes); }
   /// MetricSystem::inside of all lanes' states at once (inside_box_lanes).
-  static unsigned inside_lanes(const SolverConfig& c, const double* y) {
+  unsigned inside_lanes(const SolverConfig& c, const double* y) const {
     const double box[8] = {c.box_ll[0], c.box_ll[1], c.box_ll[2], c.box_ll[3],
                            c.box_ur[0], c.box_ur[1], c.box_ur[2], c.box_ur[3]};
-    return HWY_DYNAMIC_DISPATCH(inside_box_lanes)(box, y);
+    return GEOVIS_PACKET_DISPATCH(inside_box_lanes, target)(box, y);
   }
   /// MetricSystem::reproject and rescale (the only ones that change an accepted state here).
   bool accepted_states_change(const SolverConfig& c) const {
@@ -1334,6 +1359,7 @@ struct MinoPacket {
   alignas(64) double end_p[3][kPacketLanes] = {};
   const PacketSteps* round = nullptr;
   double view_states[4][KerrMinoRHS::N] = {};
+  size_t target = packet_target();  ///< the SIMD functions' (GEOVIS_PACKET_DISPATCH)
 
   KerrMinoSystem& system(int l) { return ray[l]->sys; }
   /// The ray from BL (x, k); one that starts outside the metric's validity domain goes to
@@ -1360,20 +1386,20 @@ struct MinoPacket {
     start_zeta[l] = y[KerrMinoRHS::Z];
     return true;
   }
-  void rhs(const double* y, double* dy, unsigned) const { HWY_DYNAMIC_DISPATCH(mino_rhs)(coeffs, y, dy); }
+  void rhs(const double* y, double* dy, unsigned) const { GEOVIS_PACKET_DISPATCH(mino_rhs, target)(coeffs, y, dy); }
   void tolerance_inv(double eps_abs, double eps_rel, const double* y, double* inv) const {
-    HWY_DYNAMIC_DISPATCH(mino_tolerance)(coeffs, eps_abs, eps_rel, y, inv);
+    GEOVIS_PACKET_DISPATCH(mino_tolerance, target)(coeffs, eps_abs, eps_rel, y, inv);
   }
   void attempt(SolverKind kind, unsigned, const LaneTolerance& tol, const double* y, const double* dy, const double* h,
                double* y1, double* dy1, AttemptError& err) const {
-    HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
+    GEOVIS_PACKET_DISPATCH(mino_attempt, target)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
   }
   /// KerrMinoSystem::param_per_affine of all lanes' states at once (mino_param_per_affine, SIMD).
   void param_per_affine_lanes(const double* y, double* out) const {
-    HWY_DYNAMIC_DISPATCH(mino_param_per_affine)(coeffs, y, out);
+    GEOVIS_PACKET_DISPATCH(mino_param_per_affine, target)(coeffs, y, out);
   }
   /// KerrMinoSystem::valid of all lanes' states at once (mino_valid, SIMD).
-  unsigned valid_lanes(const double* y, unsigned lanes) const { return HWY_DYNAMIC_DISPATCH(mino_valid)(coeffs, y, lanes); }
+  unsigned valid_lanes(const double* y, unsigned lanes) const { return GEOVIS_PACKET_DISPATCH(mino_valid, target)(coeffs, y, lanes); }
   /// KerrMinoSystem's constraint (on SIMD lanes: mino_constraint, kerr_mino_constraint's bits),
   /// escaped and captured of the accepted states y (SoA) of the lanes in `lanes`. Escape and
   /// capture are tested lane by lane, and the costly part of each (the turning-point and
@@ -1384,7 +1410,7 @@ struct MinoPacket {
     // The lanes past the first tests of escaped and captured, which most steps fail (SIMD, with
     // their expressions); only those are gathered and tested here.
     const unsigned candidates =
-        HWY_DYNAMIC_DISPATCH(mino_constraint)(coeffs, y, c.escape_radius, c.capture_radius,
+        GEOVIS_PACKET_DISPATCH(mino_constraint, target)(coeffs, y, c.escape_radius, c.capture_radius,
                                               c.direction >= 0 ? -1.0 : 1.0, out.constraint, out.constraint_scale);
     const unsigned may_escape = candidates & lanes, may_be_captured = candidates >> 8 & lanes;
     out.escaped = out.captured = 0;
@@ -1416,7 +1442,7 @@ struct MinoPacket {
       ends.offset[l] = b.offset;
     }
     ends.position_only = rays.states_on_request;
-    HWY_DYNAMIC_DISPATCH(mino_end_views)(coeffs, y1, dy1, ends);
+    GEOVIS_PACKET_DISPATCH(mino_end_views, target)(coeffs, y1, dy1, ends);
   }
   /// The accepted step of lane l in BL terms, the view of its end (or its position alone, where
   /// the caller asks for the states: PacketRays::states_on_request) written by before_steps.
@@ -1438,7 +1464,7 @@ struct MinoPacket {
   /// attempt on kerrAccretionDisk.scm, callgrind, issue 13).
   unsigned accepted_states_may_change(const SolverConfig& c, const double* y1, unsigned lanes) const {
     if (c.reproject) return lanes;
-    return HWY_DYNAMIC_DISPATCH(mino_may_project)(coeffs, y1) & lanes;
+    return GEOVIS_PACKET_DISPATCH(mino_may_project, target)(coeffs, y1) & lanes;
   }
   /// The accepted steps of a round (s: Mino states, SoA) handed on at once: the positions of their
   /// ends on all lanes at once (mino_end_positions, on the θ branch after the step) as
@@ -1455,7 +1481,7 @@ struct MinoPacket {
       const int l = std::countr_zero(todo);
       ends.sign[l] = ray[l]->branch_after(s.y0[I::DZ * W + l], s.y1[I::Z * W + l], s.y1[I::DZ * W + l]).sign;
     }
-    HWY_DYNAMIC_DISPATCH(mino_end_positions)(coeffs, s.y1, ends.sign, s.lanes, end_p[0]);
+    GEOVIS_PACKET_DISPATCH(mino_end_positions, target)(coeffs, s.y1, ends.sign, s.lanes, end_p[0]);
     PacketSteps bl = s;
     bl.p1 = end_p[0];
     bl.lane_view = &MinoPacket::lane_view;
@@ -1469,7 +1495,7 @@ struct MinoPacket {
     }
     const double* const from[2] = {coeffs.v[MinoLaneCoeffs::POLE], s.y1 + I::Z * W};
     double* const to[2] = {start_pole, start_zeta};
-    HWY_DYNAMIC_DISPATCH(copy_lanes)(s.lanes, from, to, 2);
+    GEOVIS_PACKET_DISPATCH(copy_lanes, target)(s.lanes, from, to, 2);
     return stopped;
   }
   /// PacketSteps::lane_view of the round being handed on: lane l's step in BL terms
@@ -1501,7 +1527,7 @@ struct MinoPacket {
     // The box in w, t and φ is the same for every ray (KerrMinoSystem::set_box).
     const KerrMinoSystem& any = system(std::countr_zero(lanes));
     const double box[6] = {any.w_lo, any.w_hi, c.box_ll[0], c.box_ur[0], c.box_ll[3], c.box_ur[3]};
-    const unsigned bits = HWY_DYNAMIC_DISPATCH(mino_state_tests)(box, y);
+    const unsigned bits = GEOVIS_PACKET_DISPATCH(mino_state_tests, target)(box, y);
     for (unsigned todo = bits & lanes; todo != 0; todo &= todo - 1) {
       const int l = std::countr_zero(todo);
       double yl[I::N] = {};
