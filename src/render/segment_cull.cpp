@@ -85,8 +85,7 @@ SegmentCull::SegmentCull(const SceneObject& scene) {
 unsigned SegmentCull::chart0_chords_skipped(unsigned lanes, const double* p0, const double* r0_squared,
                                             const double* p1, double* next_p, double* next_r0_squared) const {
   const double region[7] = {radius2_[0], box_.lo.x, box_.lo.y, box_.lo.z, box_.hi.x, box_.hi.y, box_.hi.z};
-  return HWY_DYNAMIC_DISPATCH(chart0_chords_skipped_lanes)(region, lanes, p0, r0_squared, p1, next_p,
-                                                           next_r0_squared);
+  return HWY_DYNAMIC_DISPATCH(chart0_chords_skipped_lanes)(region, lanes, p0, r0_squared, p1, next_p, next_r0_squared);
 }
 
 }  // namespace geovis

@@ -84,13 +84,13 @@ struct AttemptError {
 /// instructions per lane and step in Mino time, ~170 in the metric's coordinates: callgrind of
 /// integrate_lanes, issue 13).
 struct LaneSteps {
-  alignas(64) double lambda[kPacketLanes] = {};     ///< the integration variable
-  alignas(64) double h[kPacketLanes] = {};          ///< the step size the control proposes
-  alignas(64) double hstep[kPacketLanes] = {};      ///< the attempt's step size (h clipped to λ_max)
-  alignas(64) double param1[kPacketLanes] = {};     ///< the integration variable after that step
-  alignas(64) double h_cross[kPacketLanes] = {};    ///< the first step that left the domain (0: none)
-  alignas(64) double affine0[kPacketLanes] = {};    ///< the affine parameter at the start
-  alignas(64) double remaining[kPacketLanes] = {};  ///< λ_max less the affine distance run so far
+  alignas(64) double lambda[kPacketLanes] = {};      ///< the integration variable
+  alignas(64) double h[kPacketLanes] = {};           ///< the step size the control proposes
+  alignas(64) double hstep[kPacketLanes] = {};       ///< the attempt's step size (h clipped to λ_max)
+  alignas(64) double param1[kPacketLanes] = {};      ///< the integration variable after that step
+  alignas(64) double h_cross[kPacketLanes] = {};     ///< the first step that left the domain (0: none)
+  alignas(64) double affine0[kPacketLanes] = {};     ///< the affine parameter at the start
+  alignas(64) double remaining[kPacketLanes] = {};   ///< λ_max less the affine distance run so far
   alignas(64) int64_t rhs_evals[kPacketLanes] = {};  ///< GeodesicResult::rhs_evals
   alignas(32) int steps[kPacketLanes] = {};          ///< GeodesicResult::steps (PacketSteps::step_index)
 };
@@ -959,7 +959,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   PacketStepControl ctl{};
   GeodesicResult res[W];
   int affine_retries[W] = {};
-  const LaneSetupParams setup{kOwnAffine ? affine_row(y) : nullptr,
+  const LaneSetupParams setup{affine_row(y),
                               kOwnAffine ? per_affine_lanes : nullptr,
                               cfg.lambda_max,
                               lambda_res,
@@ -982,8 +982,10 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     for (int i = 0; i < N; ++i) soa[i * W + l] = in[i];
   };
   // Each lane's y and dy also as one row (AoS), kept equal to the lane's column of y and dy, for
-  // the steps handed on lane by lane (PS::step) in rows. The batched steps (take_steps) do not
-  // keep the rows.
+  // the steps handed on lane by lane (PS::step), in rows. Why: gathering the columns again for
+  // every use (the step's start and its derivative) was a ninth of kerrAccretionDisk.scm's tracing
+  // instructions when its steps were handed on so (callgrind, issue 13). The batched steps
+  // (take_steps) read neither and do not keep the rows.
   HWY_ALIGN double y_row[W][N], dy_row[W][N];
   // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step, for the lanes in
   // need_tol at once before the next attempt (PS::tolerance_inv, all lanes: a lane whose state
@@ -1149,9 +1151,9 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     }
     ps.attempt(cfg.kind, ready, tol, y, dy, hv, y1, dy1, attempt_err);
     const unsigned valid = ps.valid_lanes(y1, ready & attempt_err.finite);
-    const unsigned tests = GEOVIS_PACKET_DISPATCH(lane_attempt_tests, ps.target)(ready, Tab::S - 1, valid, attempt_err.err, adaptive,
-                                                                    affine_row(y), affine_row(y1), s,
-                                                                    std::isfinite(cfg.lambda_max), hmax_affine);
+    const unsigned tests = GEOVIS_PACKET_DISPATCH(lane_attempt_tests, ps.target)(
+        ready, Tab::S - 1, valid, attempt_err.err, adaptive, affine_row(y), affine_row(y1), s,
+        std::isfinite(cfg.lambda_max), hmax_affine);
     // The rejected steps, lane by lane (integrate_with's step control after a rejection).
     for (unsigned todo = tests & ready; todo != 0; todo &= todo - 1) {
       const int l = std::countr_zero(todo);
@@ -1247,7 +1249,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     // ln.h = min(hmax, max(control.next_with_root(hstep, err, root, true, after_reject), hmin)) of
     // every accepted lane (err and root: attempt_err's; hstep = |hv|), taken below
     // by those that go on. A lane that stops here is refilled with a fresh controller or stays idle.
-    if (adaptive) GEOVIS_PACKET_DISPATCH(accepted_step_control, ps.target)(accepted, hv, attempt_err.err, attempt_err.root, ctl);
+    if (adaptive)
+      GEOVIS_PACKET_DISPATCH(accepted_step_control, ps.target)(accepted, hv, attempt_err.err, attempt_err.root, ctl);
     if constexpr (kBatch) {
       if (batch_steps) {
         take_steps(accepted, need_dy1, checks, inside);
@@ -1399,7 +1402,9 @@ struct MinoPacket {
     GEOVIS_PACKET_DISPATCH(mino_param_per_affine, target)(coeffs, y, out);
   }
   /// KerrMinoSystem::valid of all lanes' states at once (mino_valid, SIMD).
-  unsigned valid_lanes(const double* y, unsigned lanes) const { return GEOVIS_PACKET_DISPATCH(mino_valid, target)(coeffs, y, lanes); }
+  unsigned valid_lanes(const double* y, unsigned lanes) const {
+    return GEOVIS_PACKET_DISPATCH(mino_valid, target)(coeffs, y, lanes);
+  }
   /// KerrMinoSystem's constraint (on SIMD lanes: mino_constraint, kerr_mino_constraint's bits),
   /// escaped and captured of the accepted states y (SoA) of the lanes in `lanes`. Escape and
   /// capture are tested lane by lane, and the costly part of each (the turning-point and
@@ -1409,9 +1414,9 @@ struct MinoPacket {
     static_assert(W <= 8, "mino_constraint's candidate bits: 8 per test");
     // The lanes past the first tests of escaped and captured, which most steps fail (SIMD, with
     // their expressions); only those are gathered and tested here.
-    const unsigned candidates =
-        GEOVIS_PACKET_DISPATCH(mino_constraint, target)(coeffs, y, c.escape_radius, c.capture_radius,
-                                              c.direction >= 0 ? -1.0 : 1.0, out.constraint, out.constraint_scale);
+    const unsigned candidates = GEOVIS_PACKET_DISPATCH(mino_constraint, target)(
+        coeffs, y, c.escape_radius, c.capture_radius, c.direction >= 0 ? -1.0 : 1.0, out.constraint,
+        out.constraint_scale);
     const unsigned may_escape = candidates & lanes, may_be_captured = candidates >> 8 & lanes;
     out.escaped = out.captured = 0;
     for (unsigned todo = may_escape | may_be_captured; todo != 0; todo &= todo - 1) {

@@ -495,14 +495,16 @@ TEST(SegmentCull, ChordsOfAPacketCulledAtOnceAsOneByOne) {
   auto point = [&](int kind) {
     Vec3 p{u(rng), u(rng), u(rng)};
     switch (kind) {
-      case 0: return 2.9 * p;                        // in the ball
+      case 0: return 2.9 * p;                         // in the ball
       case 1: return rim / std::sqrt(dot(p, p)) * p;  // on its rim
       case 2: return Vec3{20 * p.x, 20 * p.y, face};  // on the box's top face
       case 3: return Vec3{20 * p.x, std::numeric_limits<double>::quiet_NaN(), 20 * p.z};
       default: return Vec3{20 * p.x, 20 * p.y, p.z < 0 ? -face - 1e-3 * p.z : face + 1e-3 * p.z};  // above or below
     }
   };
-  auto same_bits = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); };
+  auto same_bits = [](double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  };
   int skipped_count = 0, tested_count = 0;
   for (int round = 0; round < 4000; ++round) {
     alignas(64) double p0[3][W], r0[W], p1[3][W], next_p[3][W], next_r0[W];
