@@ -519,6 +519,17 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
     RayState rs;
   };
   LaneRay lanes[kPacketLanes];
+  // The previous chord ends of the lanes' rays where they are pseudo-Cartesian points of chart 0
+  // (RayState::prev with have_p, the common case of the steps in Mino time, which give their
+  // ends' positions), SoA, for the cull of a round's chords at once (on_steps_at); there they
+  // replace rs.prev, which is stale. Two sets, the current one (starts[current]) and the one the
+  // cull writes the next ends to.
+  struct ChordStarts {
+    alignas(64) double p[3][kPacketLanes];
+    alignas(64) double radius2[kPacketLanes];
+  } starts[2] = {};
+  int current = 0;
+  unsigned starts_here = 0;  // bit l: lane l's previous chord end is in starts[current]
   const Metric& m = *job_.metric;
   size_t next = 0;
   auto next_ray = [&](int lane, double* y) {
@@ -539,6 +550,7 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
       r.k0 = start_state(job_.observer, normalize(d), GeodesicSystem::Geodesic, ys);
       for (int i = 0; i < 8; ++i) y[i] = r.y_start[i] = ys[i];
       r.rs = RayState{};
+      starts_here &= ~(1u << lane);
       r.rs.metric = &m;
       r.rs.scene = job_.scene.get();
       r.rs.cull = &cull_;
@@ -549,16 +561,41 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
   auto on_step = [&](int lane, const StepView& st) { return test_step(lanes[lane].rs, st); };
   // The steps of a round of the packet in Mino time, with the positions of their ends
   // (PacketSteps::p1): test_step's common case on those, a lane's view (a call into the
-  // integrator) made only for a chord that is tested (test_step_at).
+  // integrator) made only for a chord that is tested (test_step_at). After a ray's first step its
+  // chords run from chart-0 point to chart-0 point, and those of all lanes are culled at once
+  // (SegmentCull::chart0_chords_skipped, from the previous ends kept in `starts`): only the chords
+  // that are not are tested (test_chord) lane by lane.
   auto on_steps_at = [&](const PacketSteps& steps) {
-    unsigned stop = 0;
     constexpr int W = kPacketLanes;
-    for (unsigned todo = steps.lanes; todo != 0; todo &= todo - 1) {
+    unsigned stop = 0;
+    if (!job_.scene) return stop;  // test_step_at's first test, the same for every lane
+    const unsigned batched = steps.lanes & starts_here;
+    const ChordStarts& from = starts[current];
+    ChordStarts& next = starts[current ^ 1];
+    const unsigned tested =
+        batched & ~cull_.chart0_chords_skipped(batched, from.p[0], from.radius2, steps.p1, next.p[0], next.radius2);
+    current ^= 1;
+    for (unsigned todo = tested; todo != 0; todo &= todo - 1) {
       const int l = std::countr_zero(todo);
+      double views[4][8];
+      const StepView st = steps.view(l, views);
+      const Vec3 p0{from.p[0][l], from.p[1][l], from.p[2][l]}, p1{steps.p1[l], steps.p1[W + l], steps.p1[2 * W + l]};
+      if (test_chord(lanes[l].rs, st, p0, p1, 0, 0) == StepAction::Stop) stop |= 1u << l;
+    }
+    // A ray's first step (or one whose previous end is no chart-0 point): test_step_at, after
+    // which its end is kept in `starts` where it is such a point.
+    for (unsigned todo = steps.lanes & ~batched; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      RayState& rs = lanes[l].rs;
       const Vec3 p1{steps.p1[l], steps.p1[W + l], steps.p1[2 * W + l]};
       double views[4][8];
       auto view = [&steps, &views, l] { return steps.view(l, views); };
-      if (test_step_at(lanes[l].rs, p1, view) == StepAction::Stop) stop |= 1u << l;
+      if (test_step_at(rs, p1, view) == StepAction::Stop) stop |= 1u << l;
+      if (rs.have_prev && rs.prev.have_p && rs.prev.chart == 0) {
+        for (int i = 0; i < 3; ++i) next.p[i][l] = rs.prev.p[i];
+        next.radius2[l] = rs.prev.radius2;
+        starts_here |= 1u << l;
+      }
     }
     return stop;
   };

@@ -77,6 +77,32 @@ struct AttemptError {
   unsigned finite;
 };
 
+/// The step state of a packet's lanes (integrate_with's locals of each lane's run, integrators.h),
+/// SoA: lane l at index l. Why not one struct per lane: the set-up of the trial steps, the tests
+/// after an attempt and the lanes going on after their steps run on SIMD lanes (lane_setup,
+/// lane_attempt_tests, lanes_go_on) instead of lane by lane with a branch per test (~250
+/// instructions per lane and step in Mino time, ~170 in the metric's coordinates: callgrind of
+/// integrate_lanes, issue 13).
+struct LaneSteps {
+  alignas(64) double lambda[kPacketLanes] = {};      ///< the integration variable
+  alignas(64) double h[kPacketLanes] = {};           ///< the step size the control proposes
+  alignas(64) double hstep[kPacketLanes] = {};       ///< the attempt's step size (h clipped to λ_max)
+  alignas(64) double param1[kPacketLanes] = {};      ///< the integration variable after that step
+  alignas(64) double h_cross[kPacketLanes] = {};     ///< the first step that left the domain (0: none)
+  alignas(64) double affine0[kPacketLanes] = {};     ///< the affine parameter at the start
+  alignas(64) double remaining[kPacketLanes] = {};   ///< λ_max less the affine distance run so far
+  alignas(64) int64_t rhs_evals[kPacketLanes] = {};  ///< GeodesicResult::rhs_evals
+  alignas(32) int steps[kPacketLanes] = {};          ///< GeodesicResult::steps (PacketSteps::step_index)
+};
+
+/// What lane_setup reads besides the lanes' step state.
+struct LaneSetupParams {
+  const double* affine;      ///< the affine parameter of each lane's state (a row of y), or null: λ
+  const double* per_affine;  ///< dσ/dλ of each lane's state, or null: 1 (no affine parameter of its own)
+  double lambda_max, lambda_res, hmax_affine, step_min, dir;
+  double lambda_end;  ///< 0.0 + dir·λ_max: the integration variable after a step clipped to λ_max
+};
+
 /// Calls f.template operator()<Tab>() with the tableau of solver `kind` (one of those
 /// packet_solver accepts).
 template <class F>
@@ -618,6 +644,151 @@ void take_step_ends(unsigned lanes, const double* y1, const double* dy1, double*
   }
 }
 
+/// integrate_with's set-up of a trial step (the top of its loop, integrators.h) on the lanes in
+/// `lanes`, with its operations: remaining = λ_max − |λ_affine − λ_affine,0|; with an affine
+/// parameter of its own (p.per_affine) hmax and hmin from dσ/dλ (into c); hstep = h, clipped to
+/// remaining·dσ/dλ where h reaches it; hv = dir·hstep, and the integration variable after the
+/// step (param1: λ + dir·hstep, or the end λ_max for a clipped step without an affine parameter of
+/// its own). The other lanes keep their values. Returns the lanes whose λ_max is reached
+/// (!(remaining > lambda_res): they stop before the step) in bits 0–7, the clipped ones in 8–15.
+unsigned lane_setup(unsigned lanes, const LaneSetupParams& p, LaneSteps& s, PacketStepControl& c, double* hv) {
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  unsigned out = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const uint8_t bits = static_cast<uint8_t>(lanes >> l);
+    const auto on = hn::LoadMaskBits(d, &bits);
+    const SimdD lambda = SimdD::load(s.lambda + l);
+    const SimdD affine = p.affine ? SimdD::load(p.affine + l) : lambda;
+    const SimdD remaining = SimdD(p.lambda_max) - fabs(affine - SimdD::load(s.affine0 + l));
+    SimdD ppa(1.0);
+    if (p.per_affine) {
+      ppa = SimdD::load(p.per_affine + l);
+      hn::BlendedStore((SimdD(p.hmax_affine) * ppa).v, on, d, c.hmax + l);
+      hn::BlendedStore((SimdD(p.step_min) * ppa).v, on, d, c.hmin + l);
+    }
+    const SimdD h = SimdD::load(s.h + l), limit = remaining * ppa;
+    const SimdMask clip = h >= limit;
+    const SimdD hstep = select(clip, limit, h);
+    SimdD param1 = lambda + SimdD(p.dir) * hstep;
+    if (!p.affine) param1 = select(clip, SimdD(p.lambda_end), param1);
+    hn::BlendedStore(remaining.v, on, d, s.remaining + l);
+    hn::BlendedStore(hstep.v, on, d, s.hstep + l);
+    hn::BlendedStore(param1.v, on, d, s.param1 + l);
+    hn::BlendedStore((SimdD(p.dir) * hstep).v, on, d, hv + l);
+    out |= mask_bits(!(remaining > SimdD(p.lambda_res))) << l | mask_bits(clip) << (8 + l);
+  }
+  return out;
+}
+
+/// n more on the counts of the lanes in `lanes` (SoA, e.g. LaneSteps::rhs_evals).
+template <class T>
+HWY_INLINE void add_on_lanes(unsigned lanes, T n, T* count) {
+  constexpr int W = kPacketLanes;
+  const hn::Rebind<T, SimdTag> d;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += hn::Lanes(d)) {
+    const uint8_t bits = static_cast<uint8_t>(lanes >> l);
+    const auto v = hn::Load(d, count + l);
+    hn::Store(hn::IfThenElse(hn::LoadMaskBits(d, &bits), hn::Add(v, hn::Set(d, n)), v), d, count + l);
+  }
+}
+
+/// integrate_with's tests of the attempts of the lanes in `ready` (integrators.h), with its
+/// comparisons, after their S − 1 evaluations of the right-hand side (s.rhs_evals). The bits,
+/// of all lanes: 0–7 the lanes whose step is rejected (not in `valid`, the lanes whose y1 is
+/// finite and in the domain, or adaptive and !(err <= 1)). With an affine parameter of its own
+/// (affine0, affine1: its rows in y and y1; else null, and bits 8–23 are 0), for the step's length
+/// dl = |λ1 − λ0| in it:
+/// bits 8–15 where dl exceeds remaining·(1 + 1e-12) (λ_max finite) or hmax_affine·(1 + 1e-12)
+/// (the step is retried shorter), bits 16–23 where dl >= remaining·(1 − 1e-12) (it ends at λ_max).
+unsigned lane_attempt_tests(unsigned ready, int64_t stage_evals, unsigned valid, const double* err, bool adaptive,
+                            const double* affine0, const double* affine1, LaneSteps& s, bool lambda_max_finite,
+                            double hmax_affine) {
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  add_on_lanes(ready, stage_evals, s.rhs_evals);
+  unsigned out = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const uint8_t bits = static_cast<uint8_t>(valid >> l);
+    SimdMask accept{hn::LoadMaskBits(d, &bits)};
+    if (adaptive) accept = accept && SimdD::load(err + l) <= SimdD(1.0);
+    out |= mask_bits(!accept) << l;
+    if (!affine0) continue;
+    const SimdD dl = fabs(SimdD::load(affine1 + l) - SimdD::load(affine0 + l));
+    const SimdD rem = SimdD::load(s.remaining + l);
+    SimdMask longer = dl > SimdD(hmax_affine) * SimdD(1.0 + 1e-12);
+    if (lambda_max_finite) longer = longer || dl > rem * SimdD(1.0 + 1e-12);
+    out |= mask_bits(longer) << (8 + l) | mask_bits(dl >= rem * SimdD(1.0 - 1e-12)) << (16 + l);
+  }
+  return out;
+}
+
+/// integrate_with's tests and counts after the accepted attempts of the lanes in `accepted`: one
+/// more evaluation of the right-hand side on the lanes in need_dy1 (s.rhs_evals); bits 0–7 the
+/// lanes whose accepted state keeps the constraint, |C| <= tol·scale (its comparison; NaN fails),
+/// which take their step (one more in s.steps); bits 8–15 those of them that reach max_steps.
+unsigned lane_step_tests(unsigned accepted, unsigned need_dy1, const double* constraint, const double* scale,
+                         double tol, int max_steps, LaneSteps& s) {
+  constexpr int W = kPacketLanes;
+  add_on_lanes(need_dy1, int64_t{1}, s.rhs_evals);
+  unsigned stepping = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes())
+    stepping |= mask_bits(fabs(SimdD::load(constraint + l)) <= SimdD(tol) * SimdD::load(scale + l)) << l;
+  stepping &= accepted;
+  add_on_lanes(stepping, 1, s.steps);
+  const hn::Rebind<int, SimdTag> di;
+  unsigned at_max = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += hn::Lanes(di)) {
+    uint8_t bits[8] = {};  // StoreMaskBits writes up to 8 bytes
+    hn::StoreMaskBits(di, hn::Not(hn::Lt(hn::Load(di, s.steps + l), hn::Set(di, max_steps))), bits);
+    at_max |= unsigned{bits[0]} << l;
+  }
+  return stepping | (at_max & stepping) << 8;
+}
+
+/// After the steps of the lanes in `stepped`: their integration variable λ = param1; the lanes in
+/// `go` go on (integrate_with after an accepted step): h = the control's h_next where adaptive, a
+/// fresh boundary search (h_cross = 0) unless the step followed a rejection, after_reject = 0.
+void lanes_go_on(unsigned stepped, unsigned go, bool adaptive, LaneSteps& s, PacketStepControl& c) {
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const uint8_t stepped_bits = static_cast<uint8_t>(stepped >> l), go_bits = static_cast<uint8_t>(go >> l);
+    const auto on = hn::LoadMaskBits(d, &go_bits);
+    hn::BlendedStore(hn::Load(d, s.param1 + l), hn::LoadMaskBits(d, &stepped_bits), d, s.lambda + l);
+    if (adaptive) hn::BlendedStore(hn::Load(d, c.h_next + l), on, d, s.h + l);
+    const auto after_reject = hn::Ne(hn::Load(d, c.after_reject + l), hn::Zero(d));
+    hn::BlendedStore(hn::Zero(d), hn::AndNot(after_reject, on), d, s.h_cross + l);
+    hn::BlendedStore(hn::Zero(d), on, d, c.after_reject + l);
+  }
+}
+
+/// KerrMinoSystem::project_invariants' first tests (!axis and sin²θ < kAxisProjectionSin2,
+/// PolarOffset::sin2) of the states y (SoA) of all lanes, with their operations: bit l where lane
+/// l's accepted state may be projected onto the polar first integral.
+unsigned mino_may_project(const MinoLaneCoeffs& c, const double* y) {
+  constexpr int W = kPacketLanes;
+  unsigned bits = 0;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const SimdD zeta = SimdD::load(y + KerrMinoRHS::Z * W + l), pole = SimdD::load(c.v[MinoLaneCoeffs::POLE] + l);
+    const SimdMask near = -zeta * (SimdD(2.0) * pole + zeta) < SimdD(KerrMinoSystem::kAxisProjectionSin2);
+    bits |= mask_bits(!mino_axis_at(c, l) && near) << l;
+  }
+  return bits;
+}
+
+/// dst = src on the lanes in `lanes` of each of `rows` pairs (src[i], dst[i]), one row of
+/// kPacketLanes doubles each; the other lanes kept.
+void copy_lanes(unsigned lanes, const double* const* src, double* const* dst, int rows) {
+  constexpr int W = kPacketLanes;
+  const SimdTag d;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const uint8_t bits = static_cast<uint8_t>(lanes >> l);
+    const auto on = hn::LoadMaskBits(d, &bits);
+    for (int i = 0; i < rows; ++i) hn::BlendedStore(hn::LoadU(d, src[i] + l), on, d, dst[i] + l);
+  }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace geovis
 HWY_AFTER_NAMESPACE();
@@ -638,26 +809,50 @@ HWY_EXPORT(take_step_ends);
 HWY_EXPORT(mino_valid);
 HWY_EXPORT(mino_constraint);
 HWY_EXPORT(mino_param_per_affine);
+HWY_EXPORT(lane_setup);
+HWY_EXPORT(lane_attempt_tests);
+HWY_EXPORT(lane_step_tests);
+HWY_EXPORT(lanes_go_on);
+HWY_EXPORT(mino_may_project);
+HWY_EXPORT(copy_lanes);
 
 namespace {
 
-/// One lane's run of integrate_with<ExplicitRK<Tab>> (its local variables there).
-template <class Tab, int N>
-struct Lane {
-  bool live = false;
-  double lambda = 0, h = 0, hstep = 0, h_cross = 0;
-  double hmax = 0, hmin = 0, affine0 = 0, remaining = 0;
-  int affine_retries = 0;
-  bool after_reject = false, clipped = false;
-  // ExplicitRK::control's state is the lane's h_old, q_old in the driver's PacketStepControl.
-  GeodesicResult res;
-};
+/// The index of the SIMD target Highway chose (hwy::ChosenTarget) in the tables of HWY_EXPORT:
+/// the entry HWY_DYNAMIC_DISPATCH calls, looked up once per packet run (the packet systems'
+/// `target`, GEOVIS_PACKET_DISPATCH). Why: HWY_DYNAMIC_DISPATCH looks it up in every call (a call
+/// into Highway and a few instructions; ~17 calls per round of a packet, ~8 instructions each:
+/// callgrind, issue 13).
+size_t packet_target() {
+  hwy::ChosenTarget& chosen = hwy::GetChosenTarget();
+  if (!chosen.IsInitialized()) chosen.Update(hwy::SupportedTargets());  // as the first HWY_DYNAMIC_DISPATCH does
+  return chosen.GetIndex();
+}
+
+/// Entry `target` (packet_target) of a table of HWY_EXPORT; a table of one entry (a build for one
+/// target, where HWY_DYNAMIC_DISPATCH is the static call) has only that one.
+template <class F, size_t n>
+F packet_table_entry(F const (&table)[n], size_t target) {
+  return table[n == 1 ? 0 : target];
+}
+
+}  // namespace
+
+/// HWY_DYNAMIC_DISPATCH(FUNC) for the target index `target` (packet_target).
+#define GEOVIS_PACKET_DISPATCH(FUNC, target) (*packet_table_entry(HWY_DISPATCH_TABLE(FUNC), target))
+
+namespace {
 
 /// Integrates the rays of `rays` on the lanes of packet system PS, each lane exactly as
 /// integrate_with<ExplicitRK<Tab>> (integrators.h, Tab: the tableau of cfg.kind; DOP853 for its
 /// tableau, step_error_norm_lanes) integrates PS's scalar system of the lane from λ = 0: the same
 /// steps, checks and stops in the same order (the optional parts — own affine parameter, scaled
-/// tolerance, projection, re-basing — chosen by the same `requires`).
+/// tolerance, projection, re-basing — chosen by the same `requires`). The per-lane state is SoA
+/// (LaneSteps, PacketStepControl) and the common path of every lane — the set-up of its trial
+/// step, the tests of its attempt, the hand-over of its step and going on — runs on SIMD lanes
+/// with the scalar loop's operations (lane_setup, lane_attempt_tests, lane_step_tests,
+/// lanes_go_on); only the lanes that leave it (a rejected or retried step, a state to project, a
+/// ray that ends) are handled one by one, in lane order, as the scalar loop handles them.
 /// PS provides
 ///   N                                   the state's dimension;
 ///   system(l)                           the scalar system of lane l (integrators.h concept);
@@ -674,8 +869,9 @@ struct Lane {
 ///   after_steps(cfg, lanes, y) (optional)   with steps: after the batched steps of the lanes in
 ///                                       `lanes` became their states y, the system's re-basing and
 ///                                       its box test (returns the lanes inside);
-///   accepted_state_may_change(cfg, l, y1) (optional)   false where lane l's accepted state y1
-///                                       cannot be changed (reproject, project_invariants, rescale);
+///   accepted_states_may_change(cfg, y1, lanes) (optional)   the lanes of `lanes` whose accepted
+///                                       states y1 may be changed (reproject, project_invariants,
+///                                       rescale); else all where accepted_states_change;
 ///   before_steps(lanes, y, y1, dy1) (optional)   once per round, before the steps of the accepted
 ///                                       lanes (bits of `lanes`: y → y1) are handed to step;
 ///   rebase(l, y) (optional)             the system's re-basing, kept in the packet's own copies;
@@ -683,7 +879,8 @@ struct Lane {
 ///                                       and its constraint, escaped and captured (PacketStepChecks),
 ///                                       of all lanes' states at once;
 ///   accepted_states_change(cfg) (optional)   false where the system never changes an accepted state;
-///   param_per_affine_lanes(y, out) (optional)   Sys::param_per_affine of all lanes' states at once.
+///   param_per_affine_lanes(y, out)      with an affine parameter of its own: Sys::param_per_affine
+///                                       of all lanes' states at once.
 template <class Tab, class PS>
 void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   constexpr int W = kPacketLanes, N = PS::N;
@@ -706,18 +903,17 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // caller takes them so: PS::batch_steps), without a StepView per lane. Its states need no
   // re-basing and it tests them against the box before the steps (PS::inside_lanes), or it does
   // both after the steps have become the lanes' states (PS::after_steps); an affine parameter of
-  // its own is a component of the state (Sys::kAffineIndex), and its dσ/dλ is given for all lanes
-  // at once (kLanePerAffine): the batched steps keep no rows (y_row).
+  // its own is a component of the state (Sys::kAffineIndex): the batched steps keep no rows
+  // (y_row).
   constexpr bool kBatch = requires(PS & p, const PacketSteps& s) { p.steps(s); };
   constexpr bool kAfterSteps = requires(PS & p, double* yy) { p.after_steps(cfg, 0u, yy); };
   static_assert(!kBatch || kAfterSteps || (kLaneInside && !requires(double* yy) { ps.rebase(0, yy); }));
   bool batch_steps = false;
   if constexpr (kBatch) batch_steps = ps.batch_steps();
   // Whether an accepted state may change before it is taken (reproject, project_invariants,
-  // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it.
-  // The accept loop takes the state of a lane as a row only to change it (and not where PS tells
-  // that it cannot change: PS::accepted_state_may_change); the loop that hands on the accepted
-  // steps lane by lane takes it itself.
+  // rescale below); where it cannot (PS::accepted_states_change), y1 stays as the attempt gave it,
+  // and where PS tells which lanes' states may change (PS::accepted_states_may_change) only those
+  // are taken as rows to be changed.
   bool accepted_states_change = true;
   if constexpr (requires { ps.accepted_states_change(cfg); }) accepted_states_change = ps.accepted_states_change(cfg);
   auto affine = [](const Sys& s, const double* yy, double sv) {
@@ -728,17 +924,17 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     if constexpr (kOwnAffine) return s.param_per_affine(yy);
     return 1.0;
   };
-  constexpr bool kLanePerAffine = kOwnAffine && requires(PS & p, const double* yy, double* o) {
+  // An affine parameter of its own is a component of the state, read in place (Sys::kAffineIndex),
+  // and its dσ/dλ is given for all lanes at once (PS::param_per_affine_lanes).
+  static_assert(!kOwnAffine || requires(PS & p, const double* yy, double* o) {
+    Sys::kAffineIndex;
     p.param_per_affine_lanes(yy, o);
-  };
-  HWY_ALIGN double per_affine_lanes[kLanePerAffine ? W : 1];  // PS::param_per_affine_lanes of y
-  static_assert(!kOwnAffine || requires { Sys::kAffineIndex; });
-  static_assert(!kBatch || !kOwnAffine || kLanePerAffine);
-  // The affine parameter of lane l's state in `soa` (y or y1), read in place; sv: the integration
-  // variable, which is the affine parameter of a system without one of its own.
-  auto affine_at = [](const double* soa, int l, double sv) {
-    if constexpr (kOwnAffine) return soa[Sys::kAffineIndex * W + l];
-    return sv;
+  });
+  HWY_ALIGN double per_affine_lanes[kOwnAffine ? W : 1];  // PS::param_per_affine_lanes of y
+  // The row of the affine parameter in a state (y or y1), or null without one of its own.
+  auto affine_row = [](double* soa) -> double* {
+    if constexpr (kOwnAffine) return soa + Sys::kAffineIndex * W;
+    return nullptr;
   };
 
   // integrate_with's constants (λ0 = 0).
@@ -754,15 +950,30 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   HWY_ALIGN double inv_tol[kScaledTol ? N * W : 1] = {};
   const LaneTolerance tol{cfg.eps_abs, cfg.eps_rel, kScaledTol ? inv_tol : nullptr};
   AttemptError attempt_err;
-  Lane<Tab, N> lane[W];
-  // The lanes' step controllers (ExplicitRK::control: their state h_old, q_old) and the inputs of
-  // the step control after accepted steps (after_reject, hmin, hmax: copies of the lanes' own),
-  // done for all accepted lanes at once before their steps are handed on
-  // (packet_accepted_step_control).
+  // Each lane's run of integrate_with: its step state (s), its step controller (ExplicitRK::
+  // control: h_old, q_old in ctl) and the inputs of the step control after accepted steps
+  // (after_reject, hmin, hmax), done for all accepted lanes at once before their steps are handed
+  // on (packet_accepted_step_control); its result with the counts apart (in s) and its retries of
+  // steps too long in λ.
+  LaneSteps s;
   PacketStepControl ctl{};
+  GeodesicResult res[W];
+  int affine_retries[W] = {};
+  const LaneSetupParams setup{affine_row(y),
+                              kOwnAffine ? per_affine_lanes : nullptr,
+                              cfg.lambda_max,
+                              lambda_res,
+                              hmax_affine,
+                              cfg.step_min,
+                              dir,
+                              0.0 + dir * cfg.lambda_max};
   bool exhausted = false;
+  unsigned live = 0;     // lanes with a ray
   unsigned need_dy = 0;  // lanes whose dy = f(y) is still to be evaluated (fresh rays)
   unsigned ready = 0;    // lanes whose next trial step is set up (hv)
+  unsigned clipped = 0;  // lanes whose trial step ends at λ_max
+  unsigned at_max = 0;   // lanes whose ray has cfg.max_steps steps
+  unsigned retried = 0;  // lanes with affine_retries > 0
 
   auto get = [](const double* soa, int l, double* out) {
     for (int i = 0; i < N; ++i) out[i] = soa[i * W + l];
@@ -770,33 +981,32 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   auto put = [](double* soa, int l, const double* in) {
     for (int i = 0; i < N; ++i) soa[i * W + l] = in[i];
   };
-  // Each lane's y and dy also as one row (AoS), kept equal to the lane's column of y and dy; and
-  // the state y1 of its last attempt as the accept loop took it. Why: the steps are handed on and
-  // tested per lane, in rows, and gathering the columns again for every use (the step's start
-  // and its derivative, the start's affine parameter twice) was a ninth of kerrAccretionDisk.scm's
-  // tracing instructions (callgrind, issue 13). The batched steps (take_steps) do not keep the
-  // rows: only the lane-by-lane loop and dσ/dλ of a system without param_per_affine_lanes read
-  // them (the affine parameter is read in place: affine_at), and a batching system has neither
-  // (the static_asserts above).
-  HWY_ALIGN double y_row[W][N], dy_row[W][N], y1_row[W][N];
+  // Each lane's y and dy also as one row (AoS), kept equal to the lane's column of y and dy, for
+  // the steps handed on lane by lane (PS::step), in rows. Why: gathering the columns again for
+  // every use (the step's start and its derivative) was a ninth of kerrAccretionDisk.scm's tracing
+  // instructions when its steps were handed on so (callgrind, issue 13). The batched steps
+  // (take_steps) read neither and do not keep the rows.
+  HWY_ALIGN double y_row[W][N], dy_row[W][N];
   // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step, for the lanes in
   // need_tol at once before the next attempt (PS::tolerance_inv, all lanes: a lane whose state
   // did not change gets the same values again).
   unsigned need_tol = 0;
-  auto set_tolerance = [&](int l) {
-    if constexpr (kScaledTol) need_tol |= 1u << l;
+  auto set_tolerance = [&](unsigned lanes) {
+    if constexpr (kScaledTol) need_tol |= lanes;
   };
   // integrate_with's finish(): the result with the state where the ray stopped.
   auto finish = [&](int l, StopReason r) {
-    Lane<Tab, N>& ln = lane[l];
     double yl[N];
     get(y, l, yl);
-    ln.res.reason = r;
-    ln.res.lambda = affine(ps.system(l), yl, ln.lambda);
+    GeodesicResult& rl = res[l];
+    rl.reason = r;
+    rl.steps = s.steps[l];
+    rl.rhs_evals = s.rhs_evals[l];
+    rl.lambda = affine(ps.system(l), yl, s.lambda[l]);
     double scale;
-    ps.system(l).constraint(yl, cfg.type, ln.res.constraint_drift, scale);
-    ln.live = false;
-    ps.done(l, yl, ln.res);
+    ps.system(l).constraint(yl, cfg.type, rl.constraint_drift, scale);
+    live &= ~(1u << l);
+    ps.done(l, yl, rl);
   };
   // Fills lane l with the next ray (integrate_with's set-up); rays that stop before their first
   // step are finished at once.
@@ -811,18 +1021,22 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
       if (!ps.start(l, ys, yl)) continue;
       put(y, l, yl);
-      std::memcpy(y_row[l], yl, sizeof yl);
-      Lane<Tab, N>& ln = lane[l];
-      ln = Lane<Tab, N>{};
+      if (!batch_steps) std::memcpy(y_row[l], yl, sizeof yl);
+      res[l] = GeodesicResult{};
+      s.steps[l] = affine_retries[l] = 0;
+      s.rhs_evals[l] = 0;
+      retried &= ~bit;
+      at_max = (at_max & ~bit) | (cfg.max_steps <= 0 ? bit : 0u);
+      s.lambda[l] = s.h_cross[l] = 0.0;
       ctl.h_old[l] = ctl.q_old[l] = ctl.after_reject[l] = 0.0;  // a fresh StepController
-      ln.live = true;
+      live |= bit;
       const Sys& sys = ps.system(l);
-      set_tolerance(l);
+      set_tolerance(bit);
       const double ppa = per_affine(sys, yl);
-      ln.hmax = ctl.hmax[l] = hmax_affine * ppa;
-      ln.hmin = ctl.hmin[l] = cfg.step_min * ppa;
-      ln.h = std::max(std::min(std::fabs(cfg.step_size), hmax_affine) * ppa, ln.hmin);
-      ln.affine0 = affine(sys, yl, 0.0);
+      ctl.hmax[l] = hmax_affine * ppa;
+      ctl.hmin[l] = cfg.step_min * ppa;
+      s.h[l] = std::max(std::min(std::fabs(cfg.step_size), hmax_affine) * ppa, ctl.hmin[l]);
+      s.affine0[l] = affine(sys, yl, 0.0);
       if (!sys.valid(yl)) {
         finish(l, StopReason::Invalid);
         continue;
@@ -842,74 +1056,62 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   auto stop_after_step = [&](int l, bool callback_stop, bool in_box, const PacketStepChecks& checks) {
     if (callback_stop) return StopReason::Callback;
     if (!in_box) return StopReason::BoundingBox;
-    if (lane[l].clipped) return StopReason::LambdaMax;
+    if (clipped >> l & 1u) return StopReason::LambdaMax;
     if (checks.escaped >> l & 1u) {
-      lane[l].res.escape_radius = checks.escape_radius[l];
+      res[l].escape_radius = checks.escape_radius[l];
       return StopReason::Escaped;
     }
     if (checks.captured >> l & 1u) return StopReason::Invalid;
     return StopReason::None;
   };
-  // Lane l goes on after its step: the step size the control gave (adaptive), a fresh boundary
-  // search, the controller told that the step was accepted.
+  // Lane l goes on after its step (lanes_go_on for one lane): the step size the control gave
+  // (adaptive), a fresh boundary search, the controller told that the step was accepted.
   auto go_on = [&](int l) {
-    Lane<Tab, N>& ln = lane[l];
-    if (adaptive) ln.h = ctl.h_next[l];
-    if (!ln.after_reject) ln.h_cross = 0.0;
-    ln.after_reject = false;
+    if (adaptive) s.h[l] = ctl.h_next[l];
+    if (ctl.after_reject[l] == 0.0) s.h_cross[l] = 0.0;
     ctl.after_reject[l] = 0.0;
   };
 
   // The accepted steps of a round (bits of `accepted`; `need_dy1`, `checks`, `inside` as the
   // round's loop below has them) where PS hands them on at once (kBatch, batch_steps): the same
-  // constraint test, step, stop tests and step size per lane as that loop, the steps handed on
-  // (PS::steps) and their ends taken as the lanes' states on SIMD lanes (take_step_ends) between
-  // the constraint and the other tests, with no lane's view gathered (~200 instructions per lane
-  // and step of gathers, copies and the per-lane callback on fallEddFinkIn: callgrind, issue 13).
-  // The rays that end are handed back (done, next) lane after lane, as there.
+  // constraint test, step, stop tests and step size per lane as that loop, on SIMD lanes; the
+  // steps handed on (PS::steps) and their ends taken as the lanes' states on SIMD lanes
+  // (take_step_ends) between the constraint and the other tests, with no lane's view gathered
+  // (~200 instructions per lane and step of gathers, copies and the per-lane callback on
+  // fallEddFinkIn: callgrind, issue 13). The rays that end are handed back (done, next) lane
+  // after lane, as there.
   auto take_steps = [&](unsigned accepted, unsigned need_dy1, const PacketStepChecks& checks, unsigned inside) {
     if constexpr (kBatch) {
       ready &= ~accepted;
-      unsigned stepping = 0;  // the accepted lanes whose constraint holds: they take their step
-      // The affine parameter at both ends, and the integration variable after the step.
-      double lambda0[W], lambda1[W], param1[W];
-      int step_index[W];
-      for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
-        const int l = std::countr_zero(todo);
-        Lane<Tab, N>& ln = lane[l];
-        if (need_dy1 >> l & 1u) ++ln.res.rhs_evals;
-        if (!(std::fabs(checks.constraint[l]) <= cfg.constraint_tol * checks.constraint_scale[l])) continue;
-        stepping |= 1u << l;
-        step_index[l] = ++ln.res.steps;
-        param1[l] = !kOwnAffine && ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
-        lambda0[l] = affine_at(y, l, ln.lambda);
-        lambda1[l] = affine_at(y1, l, param1[l]);
-      }
-      const unsigned stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, step_index});
-      HWY_DYNAMIC_DISPATCH(take_step_ends)(stepping, y1, dy1, y, dy, N);
+      // The accepted lanes whose constraint holds: they take their step.
+      const unsigned counted = GEOVIS_PACKET_DISPATCH(lane_step_tests, ps.target)(
+          accepted, need_dy1, checks.constraint, checks.constraint_scale, cfg.constraint_tol, cfg.max_steps, s);
+      const unsigned stepping = counted & 0xffu;
+      at_max |= counted >> 8;
+      // The affine parameter at both ends: the states' own, or the integration variable before
+      // and after the step.
+      const double* lambda0 = kOwnAffine ? affine_row(y) : s.lambda;
+      const double* lambda1 = kOwnAffine ? affine_row(y1) : s.param1;
+      const unsigned stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, s.steps});
+      GEOVIS_PACKET_DISPATCH(take_step_ends, ps.target)(stepping, y1, dy1, y, dy, N);
       if constexpr (kAfterSteps) inside = ps.after_steps(cfg, stepping, y);
-      for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
-        const int l = std::countr_zero(todo);
-        Lane<Tab, N>& ln = lane[l];
-        if (!(stepping >> l & 1u)) {
-          finish(l, StopReason::Constraint);
-          refill(l);
-          continue;
-        }
-        ln.lambda = param1[l];
-        set_tolerance(l);
-        if (const StopReason stop = stop_after_step(l, stopped >> l & 1u, inside >> l & 1u, checks);
-            stop != StopReason::None) {
-          finish(l, stop);
-          refill(l);
-          continue;
-        }
-        if (!adaptive && kOwnAffine) {
+      set_tolerance(stepping);
+      // stop_after_step's reasons, all lanes at once.
+      const unsigned go = stepping & ~(stopped | ~inside | clipped | checks.escaped | checks.captured);
+      GEOVIS_PACKET_DISPATCH(lanes_go_on, ps.target)(stepping, go, adaptive, s, ctl);
+      if (!adaptive && kOwnAffine) {
+        for (unsigned todo = go; todo != 0; todo &= todo - 1) {
+          const int l = std::countr_zero(todo);
           double yl[N];
           get(y, l, yl);
-          ln.h = std::fabs(cfg.step_size) * per_affine(ps.system(l), yl);
+          s.h[l] = std::fabs(cfg.step_size) * per_affine(ps.system(l), yl);
         }
-        go_on(l);
+      }
+      for (unsigned todo = accepted & ~go; todo != 0; todo &= todo - 1) {
+        const int l = std::countr_zero(todo);
+        finish(l, stepping >> l & 1u ? stop_after_step(l, stopped >> l & 1u, inside >> l & 1u, checks)
+                                     : StopReason::Constraint);
+        refill(l);
       }
     }
   };
@@ -920,46 +1122,25 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     do {
       if (need_dy) {
         ps.rhs(y, dy, need_dy);
-        for (int l = 0; l < W; ++l)
-          if (need_dy >> l & 1u) {
-            ++lane[l].res.rhs_evals;
-            get(dy, l, dy_row[l]);
-          }
+        for (unsigned todo = need_dy; todo != 0; todo &= todo - 1) {
+          const int l = std::countr_zero(todo);
+          ++s.rhs_evals[l];
+          if (!batch_steps) get(dy, l, dy_row[l]);
+        }
         need_dy = 0;
       }
-      if constexpr (kLanePerAffine) ps.param_per_affine_lanes(y, per_affine_lanes);
-      for (int l = 0; l < W; ++l) {
-        Lane<Tab, N>& ln = lane[l];
-        if (!ln.live || (ready >> l & 1u)) continue;
-        if (ln.res.steps >= cfg.max_steps) {
-          finish(l, StopReason::MaxSteps);
-          refill(l);
-          continue;
-        }
-        const Sys& sys = ps.system(l);
-        ln.remaining = cfg.lambda_max - std::fabs(affine_at(y, l, ln.lambda) - ln.affine0);
-        if (!(ln.remaining > lambda_res)) {
-          finish(l, StopReason::LambdaMax);
-          refill(l);
-          continue;
-        }
-        ln.hstep = ln.h;
-        ln.clipped = false;
-        double ppa;
-        if constexpr (kLanePerAffine)
-          ppa = per_affine_lanes[l];
-        else
-          ppa = per_affine(sys, y_row[l]);
-        if constexpr (kOwnAffine) {
-          ln.hmax = ctl.hmax[l] = hmax_affine * ppa;
-          ln.hmin = ctl.hmin[l] = cfg.step_min * ppa;
-        }
-        if (ln.hstep >= ln.remaining * ppa) {
-          ln.hstep = ln.remaining * ppa;
-          ln.clipped = true;
-        }
-        hv[l] = dir * ln.hstep;
-        ready |= 1u << l;
+      const unsigned todo = live & ~ready;
+      if (!todo) break;
+      if constexpr (kOwnAffine) ps.param_per_affine_lanes(y, per_affine_lanes);
+      const unsigned set = GEOVIS_PACKET_DISPATCH(lane_setup, ps.target)(todo, setup, s, ctl, hv);
+      clipped = (clipped & ~todo) | (set >> 8 & todo);
+      // The lanes that stop before the step (max_steps, then λ_max, as integrate_with tests them).
+      const unsigned stop = todo & (at_max | set);
+      ready |= todo & ~stop;
+      for (unsigned left = stop; left != 0; left &= left - 1) {
+        const int l = std::countr_zero(left);
+        finish(l, at_max >> l & 1u ? StopReason::MaxSteps : StopReason::LambdaMax);
+        refill(l);
       }
     } while (need_dy);
     if (!ready) return;
@@ -970,79 +1151,83 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     }
     ps.attempt(cfg.kind, ready, tol, y, dy, hv, y1, dy1, attempt_err);
     const unsigned valid = ps.valid_lanes(y1, ready & attempt_err.finite);
-    unsigned accepted = 0, need_dy1 = 0;
-    for (int l = 0; l < W; ++l) {
-      if (!(ready >> l & 1u)) continue;
-      Lane<Tab, N>& ln = lane[l];
-      auto& sys = ps.system(l);
-      ln.res.rhs_evals += Tab::S - 1;
-      double* yl1 = y1_row[l];
+    const unsigned tests = GEOVIS_PACKET_DISPATCH(lane_attempt_tests, ps.target)(
+        ready, Tab::S - 1, valid, attempt_err.err, adaptive, affine_row(y), affine_row(y1), s,
+        std::isfinite(cfg.lambda_max), hmax_affine);
+    // The rejected steps, lane by lane (integrate_with's step control after a rejection).
+    for (unsigned todo = tests & ready; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
       const double err = attempt_err.err[l];
       const bool finite = attempt_err.finite >> l & 1u;
       const bool in_domain = valid >> l & 1u;
-      if (!in_domain || (adaptive && !(err <= 1.0))) {
-        ready &= ~(1u << l);
-        if (!adaptive) {
-          finish(l, finite ? StopReason::Invalid : StopReason::NotFinite);
+      const bool after_reject = ctl.after_reject[l] != 0.0;
+      ready &= ~(1u << l);
+      if (!adaptive) {
+        finish(l, finite ? StopReason::Invalid : StopReason::NotFinite);
+        refill(l);
+        continue;
+      }
+      ++res[l].rejected;
+      if (finite && !in_domain) {
+        if (s.h_cross[l] == 0.0) s.h_cross[l] = s.hstep[l];
+        if (s.hstep[l] <= kBoundaryRes * s.h_cross[l]) {
+          finish(l, StopReason::Invalid);
           refill(l);
           continue;
         }
-        ++ln.res.rejected;
-        if (finite && !in_domain) {
-          if (ln.h_cross == 0.0) ln.h_cross = ln.hstep;
-          if (ln.hstep <= kBoundaryRes * ln.h_cross) {
-            finish(l, StopReason::Invalid);
-            refill(l);
-            continue;
-          }
-        }
-        ln.h =
-            in_domain ? StepController<Tab::kErrExp>{ctl.h_old[l], ctl.q_old[l]}.next_with_root(
-                            ln.hstep, err, attempt_err.root[l], false, ln.after_reject)  // leaves h_old, q_old
-                      : 0.5 * ln.hstep;
-        ln.after_reject = true;
-        ctl.after_reject[l] = 1.0;
-        if (ln.h < ln.hmin || ln.h <= 4 * DBL_EPSILON * std::fabs(ln.lambda)) {
-          finish(l, !finite ? StopReason::NotFinite : (!in_domain ? StopReason::Invalid : StopReason::StepUnderflow));
-          refill(l);
-        }
-        continue;
       }
-      if constexpr (kOwnAffine) {
-        // λ_max overshot, or a step longer than step_max in λ: retried shorter (integrate_with).
-        const double dl = std::fabs(affine_at(y1, l, 0.0) - affine_at(y, l, 0.0));
-        if (ln.affine_retries < 50) {
-          if (std::isfinite(cfg.lambda_max) && dl > ln.remaining * (1.0 + 1e-12)) {
-            ln.h = ln.hstep * ln.remaining / dl;
-            ++ln.affine_retries;
-            ready &= ~(1u << l);
-            continue;
-          }
-          if (dl > hmax_affine * (1.0 + 1e-12)) {
-            ln.h = ln.hstep * hmax_affine / dl * (1.0 - 1e-9);
-            ++ln.affine_retries;
-            ready &= ~(1u << l);
-            continue;
-          }
-        }
-        ln.affine_retries = 0;
-        ln.clipped = dl >= ln.remaining * (1.0 - 1e-12);
+      s.h[l] = in_domain ? StepController<Tab::kErrExp>{ctl.h_old[l], ctl.q_old[l]}.next_with_root(
+                               s.hstep[l], err, attempt_err.root[l], false, after_reject)  // leaves h_old, q_old
+                         : 0.5 * s.hstep[l];
+      ctl.after_reject[l] = 1.0;
+      if (s.h[l] < ctl.hmin[l] || s.h[l] <= 4 * DBL_EPSILON * std::fabs(s.lambda[l])) {
+        finish(l, !finite ? StopReason::NotFinite : (!in_domain ? StopReason::Invalid : StopReason::StepUnderflow));
+        refill(l);
       }
-      bool changed = false;
-      bool may_change = accepted_states_change;
-      if constexpr (requires { ps.accepted_state_may_change(cfg, l, y1); })
-        may_change = may_change && ps.accepted_state_may_change(cfg, l, y1);
-      if (may_change) {
+    }
+    if constexpr (kOwnAffine) {
+      // λ_max overshot, or a step longer than step_max in λ: retried shorter (integrate_with).
+      for (unsigned todo = tests >> 8 & ready; todo != 0; todo &= todo - 1) {
+        const int l = std::countr_zero(todo);
+        if (affine_retries[l] >= 50) continue;
+        const double dl = std::fabs(y1[Sys::kAffineIndex * W + l] - y[Sys::kAffineIndex * W + l]);
+        if (std::isfinite(cfg.lambda_max) && dl > s.remaining[l] * (1.0 + 1e-12))
+          s.h[l] = s.hstep[l] * s.remaining[l] / dl;
+        else
+          s.h[l] = s.hstep[l] * hmax_affine / dl * (1.0 - 1e-9);
+        ++affine_retries[l];
+        retried |= 1u << l;
+        ready &= ~(1u << l);
+      }
+    }
+    const unsigned accepted = ready;
+    if constexpr (kOwnAffine) {
+      for (unsigned todo = retried & accepted; todo != 0; todo &= todo - 1) affine_retries[std::countr_zero(todo)] = 0;
+      retried &= ~accepted;
+      clipped = (clipped & ~accepted) | (tests >> 16 & accepted);
+    }
+    // The accepted states that may change, lane by lane.
+    unsigned changed = 0;
+    if (accepted_states_change) {
+      unsigned may_change = accepted;
+      if constexpr (requires { ps.accepted_states_may_change(cfg, y1, accepted); })
+        may_change = ps.accepted_states_may_change(cfg, y1, accepted);
+      for (unsigned todo = may_change; todo != 0; todo &= todo - 1) {
+        const int l = std::countr_zero(todo);
+        auto& sys = ps.system(l);
+        double yl1[N];
         get(y1, l, yl1);
+        bool lane_changed = false;
         if (cfg.reproject) sys.reproject(yl1, cfg.type);
-        if constexpr (requires { sys.project_invariants(yl1); }) changed = sys.project_invariants(yl1);
-        if constexpr (requires { sys.rescale(yl1, cfg.type); }) changed = sys.rescale(yl1, cfg.type) || changed;
-        if (cfg.reproject || changed) put(y1, l, yl1);
+        if constexpr (requires { sys.project_invariants(yl1); }) lane_changed = sys.project_invariants(yl1);
+        if constexpr (requires { sys.rescale(yl1, cfg.type); })
+          lane_changed = sys.rescale(yl1, cfg.type) || lane_changed;
+        if (cfg.reproject || lane_changed) put(y1, l, yl1);
+        if (lane_changed) changed |= 1u << l;
       }
-      accepted |= 1u << l;
-      if (!Tab::kFsal || cfg.reproject || changed) need_dy1 |= 1u << l;
     }
     if (!accepted) continue;
+    const unsigned need_dy1 = !Tab::kFsal || cfg.reproject ? accepted : changed;
 
     // f at the accepted states the last stage did not give (integrate_with); a first-same-as-last
     // tableau's dy1 of the other lanes is kept.
@@ -1064,7 +1249,8 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     // ln.h = min(hmax, max(control.next_with_root(hstep, err, root, true, after_reject), hmin)) of
     // every accepted lane (err and root: attempt_err's; hstep = |hv|), taken below
     // by those that go on. A lane that stops here is refilled with a fresh controller or stays idle.
-    if (adaptive) HWY_DYNAMIC_DISPATCH(accepted_step_control)(accepted, hv, attempt_err.err, attempt_err.root, ctl);
+    if (adaptive)
+      GEOVIS_PACKET_DISPATCH(accepted_step_control, ps.target)(accepted, hv, attempt_err.err, attempt_err.root, ctl);
     if constexpr (kBatch) {
       if (batch_steps) {
         take_steps(accepted, need_dy1, checks, inside);
@@ -1072,34 +1258,32 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       }
     }
     // Else each step handed on lane by lane (PS::step, its view gathered).
-    for (int l = 0; l < W; ++l) {
-      if (!(accepted >> l & 1u)) continue;
-      Lane<Tab, N>& ln = lane[l];
+    for (unsigned todo = accepted; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
       auto& sys = ps.system(l);
       ready &= ~(1u << l);
-      if (need_dy1 >> l & 1u) ++ln.res.rhs_evals;
+      if (need_dy1 >> l & 1u) ++s.rhs_evals[l];
       const double* yl = y_row[l];
       const double* dyl = dy_row[l];
-      double* yl1 = y1_row[l];
+      double yl1[N], dyl1[N];
       get(y1, l, yl1);
-      double dyl1[N];
       get(dy1, l, dyl1);
       if (!(std::fabs(checks.constraint[l]) <= cfg.constraint_tol * checks.constraint_scale[l])) {
         finish(l, StopReason::Constraint);
         refill(l);
         continue;
       }
-      ++ln.res.steps;
-      const double lambda1 = !kOwnAffine && ln.clipped ? 0.0 + dir * cfg.lambda_max : ln.lambda + dir * ln.hstep;
+      if (++s.steps[l] >= cfg.max_steps) at_max |= 1u << l;
+      const double lambda1 = s.param1[l];
       const StepAction act = ps.step(
-          l, StepView{affine(sys, yl, ln.lambda), affine(sys, yl1, lambda1), yl, yl1, dyl, dyl1, N, ln.res.steps});
+          l, StepView{affine(sys, yl, s.lambda[l]), affine(sys, yl1, lambda1), yl, yl1, dyl, dyl1, N, s.steps[l]});
       if constexpr (requires { ps.rebase(l, yl1); }) ps.rebase(l, yl1);
       put(y, l, yl1);
       put(dy, l, dyl1);
       std::memcpy(y_row[l], yl1, sizeof y_row[l]);
       std::memcpy(dy_row[l], dyl1, sizeof dyl1);
-      ln.lambda = lambda1;
-      set_tolerance(l);
+      s.lambda[l] = lambda1;
+      set_tolerance(1u << l);
       const bool in_box = kLaneInside ? (inside >> l & 1u) != 0 : sys.inside(cfg, yl1);
       if (const StopReason stop = stop_after_step(l, act == StepAction::Stop, in_box, checks);
           stop != StopReason::None) {
@@ -1107,7 +1291,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
         refill(l);
         continue;
       }
-      if (!adaptive && kOwnAffine) ln.h = std::fabs(cfg.step_size) * per_affine(sys, yl1);
+      if (!adaptive && kOwnAffine) s.h[l] = std::fabs(cfg.step_size) * per_affine(sys, yl1);
       go_on(l);
     }
   }
@@ -1119,6 +1303,7 @@ struct CoordinatePacket {
   static constexpr int N = kDim;
   const MetricKernel& metric;
   const PacketRays& rays;
+  size_t target = packet_target();  ///< the SIMD functions' (GEOVIS_PACKET_DISPATCH)
   GeodesicRHS<MetricKernel> f{metric};
   MetricSystem<MetricKernel, GeodesicRHS<MetricKernel>> sys{metric, f};
 
@@ -1130,17 +1315,16 @@ struct CoordinatePacket {
   void rhs(const double* y, double* dy, unsigned lanes) const { packet_rhs(metric, y, dy, lanes); }
   void attempt(SolverKind kind, unsigned lanes, const LaneTolerance& tol, const double* y, const double* dy,
                const double* h, double* y1, double* dy1, AttemptError& err) const {
-    // Looked up per call: before the first dispatch the table entry is Highway's target chooser.
-    HWY_DYNAMIC_DISPATCH(rk_attempt)(kind, metric, lanes, tol, y, dy, h, y1, dy1, err);
+    GEOVIS_PACKET_DISPATCH(rk_attempt, target)(kind, metric, lanes, tol, y, dy, h, y1, dy1, err);
   }
   /// MetricSystem's tests of all lanes' states at once, with the metric's functions inlined
   /// (MetricKernel::packet_valid, packet_step_checks).
   unsigned valid_lanes(const double* y, unsigned lanes) const { return metric.packet_valid(y, lanes); }
   /// MetricSystem::inside of all lanes' states at once (inside_box_lanes).
-  static unsigned inside_lanes(const SolverConfig& c, const double* y) {
+  unsigned inside_lanes(const SolverConfig& c, const double* y) const {
     const double box[8] = {c.box_ll[0], c.box_ll[1], c.box_ll[2], c.box_ll[3],
                            c.box_ur[0], c.box_ur[1], c.box_ur[2], c.box_ur[3]};
-    return HWY_DYNAMIC_DISPATCH(inside_box_lanes)(box, y);
+    return GEOVIS_PACKET_DISPATCH(inside_box_lanes, target)(box, y);
   }
   /// MetricSystem::reproject and rescale (the only ones that change an accepted state here).
   bool accepted_states_change(const SolverConfig& c) const {
@@ -1178,6 +1362,7 @@ struct MinoPacket {
   alignas(64) double end_p[3][kPacketLanes] = {};
   const PacketSteps* round = nullptr;
   double view_states[4][KerrMinoRHS::N] = {};
+  size_t target = packet_target();  ///< the SIMD functions' (GEOVIS_PACKET_DISPATCH)
 
   KerrMinoSystem& system(int l) { return ray[l]->sys; }
   /// The ray from BL (x, k); one that starts outside the metric's validity domain goes to
@@ -1204,20 +1389,22 @@ struct MinoPacket {
     start_zeta[l] = y[KerrMinoRHS::Z];
     return true;
   }
-  void rhs(const double* y, double* dy, unsigned) const { HWY_DYNAMIC_DISPATCH(mino_rhs)(coeffs, y, dy); }
+  void rhs(const double* y, double* dy, unsigned) const { GEOVIS_PACKET_DISPATCH(mino_rhs, target)(coeffs, y, dy); }
   void tolerance_inv(double eps_abs, double eps_rel, const double* y, double* inv) const {
-    HWY_DYNAMIC_DISPATCH(mino_tolerance)(coeffs, eps_abs, eps_rel, y, inv);
+    GEOVIS_PACKET_DISPATCH(mino_tolerance, target)(coeffs, eps_abs, eps_rel, y, inv);
   }
   void attempt(SolverKind kind, unsigned, const LaneTolerance& tol, const double* y, const double* dy, const double* h,
                double* y1, double* dy1, AttemptError& err) const {
-    HWY_DYNAMIC_DISPATCH(mino_attempt)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
+    GEOVIS_PACKET_DISPATCH(mino_attempt, target)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
   }
   /// KerrMinoSystem::param_per_affine of all lanes' states at once (mino_param_per_affine, SIMD).
   void param_per_affine_lanes(const double* y, double* out) const {
-    HWY_DYNAMIC_DISPATCH(mino_param_per_affine)(coeffs, y, out);
+    GEOVIS_PACKET_DISPATCH(mino_param_per_affine, target)(coeffs, y, out);
   }
   /// KerrMinoSystem::valid of all lanes' states at once (mino_valid, SIMD).
-  unsigned valid_lanes(const double* y, unsigned lanes) const { return HWY_DYNAMIC_DISPATCH(mino_valid)(coeffs, y, lanes); }
+  unsigned valid_lanes(const double* y, unsigned lanes) const {
+    return GEOVIS_PACKET_DISPATCH(mino_valid, target)(coeffs, y, lanes);
+  }
   /// KerrMinoSystem's constraint (on SIMD lanes: mino_constraint, kerr_mino_constraint's bits),
   /// escaped and captured of the accepted states y (SoA) of the lanes in `lanes`. Escape and
   /// capture are tested lane by lane, and the costly part of each (the turning-point and
@@ -1227,9 +1414,9 @@ struct MinoPacket {
     static_assert(W <= 8, "mino_constraint's candidate bits: 8 per test");
     // The lanes past the first tests of escaped and captured, which most steps fail (SIMD, with
     // their expressions); only those are gathered and tested here.
-    const unsigned candidates =
-        HWY_DYNAMIC_DISPATCH(mino_constraint)(coeffs, y, c.escape_radius, c.capture_radius,
-                                              c.direction >= 0 ? -1.0 : 1.0, out.constraint, out.constraint_scale);
+    const unsigned candidates = GEOVIS_PACKET_DISPATCH(mino_constraint, target)(
+        coeffs, y, c.escape_radius, c.capture_radius, c.direction >= 0 ? -1.0 : 1.0, out.constraint,
+        out.constraint_scale);
     const unsigned may_escape = candidates & lanes, may_be_captured = candidates >> 8 & lanes;
     out.escaped = out.captured = 0;
     for (unsigned todo = may_escape | may_be_captured; todo != 0; todo &= todo - 1) {
@@ -1260,7 +1447,7 @@ struct MinoPacket {
       ends.offset[l] = b.offset;
     }
     ends.position_only = rays.states_on_request;
-    HWY_DYNAMIC_DISPATCH(mino_end_views)(coeffs, y1, dy1, ends);
+    GEOVIS_PACKET_DISPATCH(mino_end_views, target)(coeffs, y1, dy1, ends);
   }
   /// The accepted step of lane l in BL terms, the view of its end (or its position alone, where
   /// the caller asks for the states: PacketRays::states_on_request) written by before_steps.
@@ -1275,12 +1462,14 @@ struct MinoPacket {
   }
   /// The steps go to PacketRays::on_steps a round at a time where it is set.
   bool batch_steps() const { return static_cast<bool>(rays.on_steps); }
-  /// Whether lane l's accepted state (in y1, SoA) may be changed: re-projected (c.reproject), or
-  /// projected onto the polar first integral near the axis — KerrMinoSystem::project_invariants'
-  /// first tests, on ζ alone. Why: the other states need not be gathered (~25 instructions per
-  /// lane and attempt on kerrAccretionDisk.scm, callgrind, issue 13).
-  bool accepted_state_may_change(const SolverConfig& c, int l, const double* y1) {
-    return c.reproject || system(l).may_project(y1[KerrMinoRHS::Z * kPacketLanes + l]);
+  /// The lanes of `lanes` whose accepted states (y1, SoA) may be changed: all where they are
+  /// re-projected (c.reproject), else those that may be projected onto the polar first integral
+  /// near the axis — KerrMinoSystem::project_invariants' first tests, on ζ alone, all lanes at once
+  /// (mino_may_project). Why: the other states need not be gathered (~25 instructions per lane and
+  /// attempt on kerrAccretionDisk.scm, callgrind, issue 13).
+  unsigned accepted_states_may_change(const SolverConfig& c, const double* y1, unsigned lanes) const {
+    if (c.reproject) return lanes;
+    return GEOVIS_PACKET_DISPATCH(mino_may_project, target)(coeffs, y1) & lanes;
   }
   /// The accepted steps of a round (s: Mino states, SoA) handed on at once: the positions of their
   /// ends on all lanes at once (mino_end_positions, on the θ branch after the step) as
@@ -1297,7 +1486,7 @@ struct MinoPacket {
       const int l = std::countr_zero(todo);
       ends.sign[l] = ray[l]->branch_after(s.y0[I::DZ * W + l], s.y1[I::Z * W + l], s.y1[I::DZ * W + l]).sign;
     }
-    HWY_DYNAMIC_DISPATCH(mino_end_positions)(coeffs, s.y1, ends.sign, s.lanes, end_p[0]);
+    GEOVIS_PACKET_DISPATCH(mino_end_positions, target)(coeffs, s.y1, ends.sign, s.lanes, end_p[0]);
     PacketSteps bl = s;
     bl.p1 = end_p[0];
     bl.lane_view = &MinoPacket::lane_view;
@@ -1309,11 +1498,9 @@ struct MinoPacket {
       const int l = std::countr_zero(todo);
       ray[l]->branch = ray[l]->branch_after(s.y0[I::DZ * W + l], s.y1[I::Z * W + l], s.y1[I::DZ * W + l]);
     }
-    for (unsigned todo = s.lanes; todo != 0; todo &= todo - 1) {
-      const int l = std::countr_zero(todo);
-      start_pole[l] = coeffs.v[MinoLaneCoeffs::POLE][l];
-      start_zeta[l] = s.y1[I::Z * W + l];
-    }
+    const double* const from[2] = {coeffs.v[MinoLaneCoeffs::POLE], s.y1 + I::Z * W};
+    double* const to[2] = {start_pole, start_zeta};
+    GEOVIS_PACKET_DISPATCH(copy_lanes, target)(s.lanes, from, to, 2);
     return stopped;
   }
   /// PacketSteps::lane_view of the round being handed on: lane l's step in BL terms
@@ -1345,7 +1532,7 @@ struct MinoPacket {
     // The box in w, t and φ is the same for every ray (KerrMinoSystem::set_box).
     const KerrMinoSystem& any = system(std::countr_zero(lanes));
     const double box[6] = {any.w_lo, any.w_hi, c.box_ll[0], c.box_ur[0], c.box_ll[3], c.box_ur[3]};
-    const unsigned bits = HWY_DYNAMIC_DISPATCH(mino_state_tests)(box, y);
+    const unsigned bits = GEOVIS_PACKET_DISPATCH(mino_state_tests, target)(box, y);
     for (unsigned todo = bits & lanes; todo != 0; todo &= todo - 1) {
       const int l = std::countr_zero(todo);
       double yl[I::N] = {};

@@ -281,10 +281,6 @@ struct KerrMinoSystem {
   }
   /// The sin²θ below which project_invariants projects.
   static constexpr double kAxisProjectionSin2 = 0.1;
-  /// Whether project_invariants may change a state whose ζ is `zeta` (its first tests).
-  GEOVIS_HOT_INLINE bool may_project(double zeta) const {
-    return !k.axis && f.polar.sin2(zeta) < kAxisProjectionSin2;
-  }
   /// project_invariants at sin²θ = s2 < kAxisProjectionSin2.
   bool project_near_axis(double* y, double s2) const {
     const double v = y[I::DZ], z = f.polar.z(y[I::Z]);

@@ -5,7 +5,9 @@
 // and beyond the box is the render that tests every step, to the bit.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -20,6 +22,7 @@
 #include "render/segment_cull.h"
 #include "render/shapes.h"
 #include "render/tracer.h"
+#include "spacetime/geodesic_packet.h"
 #include "spacetime/metric.h"
 #include "spacetime/metric_registry.h"
 
@@ -473,6 +476,63 @@ TEST(SegmentCull, KerrDiskRendersTheSameWithAndWithoutSkipping) {
       std::vector<SceneObjectPtr>{shaded(std::make_shared<PlaneRing>(Vec3{0, 0, 0}, Vec3{0, 0, 1}, 3, 15), shader, 1)});
   EXPECT_NEAR(Tracer(job).segment_cull().bounds().hi.z, 15 * std::sqrt(2.0) * SegmentCull::kMargin, 1e-15);
   expect_same_render(job, 3.0);
+}
+
+TEST(SegmentCull, ChordsOfAPacketCulledAtOnceAsOneByOne) {
+  // chart0_chords_skipped (all lanes at once) against inside_empty_ball || outside_bounds chord by
+  // chord, and the next starts it writes (p1 and dot(p1, p1) on the lanes asked for, the old
+  // starts on the others, to the bit), on random chords around kerrAccretionDisk's ring (a ball of
+  // radius 3 and a flat box, so both tests decide), with ends on the ball's rim, on the box's
+  // faces and with NaN coordinates.
+  const SegmentCull cull(PlaneRing(Vec3{0, 0, 0}, Vec3{0, 0, 1}, 3, 15));
+  const double rim = cull.radius(0), face = cull.bounds().hi.z;
+  ASSERT_GT(rim, 2.9);
+  ASSERT_GT(face, 0.0);
+  ASSERT_LT(face, 1e-3);
+  constexpr int W = kPacketLanes;
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> u(-1, 1);
+  auto point = [&](int kind) {
+    Vec3 p{u(rng), u(rng), u(rng)};
+    switch (kind) {
+      case 0: return 2.9 * p;                         // in the ball
+      case 1: return rim / std::sqrt(dot(p, p)) * p;  // on its rim
+      case 2: return Vec3{20 * p.x, 20 * p.y, face};  // on the box's top face
+      case 3: return Vec3{20 * p.x, std::numeric_limits<double>::quiet_NaN(), 20 * p.z};
+      default: return Vec3{20 * p.x, 20 * p.y, p.z < 0 ? -face - 1e-3 * p.z : face + 1e-3 * p.z};  // above or below
+    }
+  };
+  auto same_bits = [](double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  };
+  int skipped_count = 0, tested_count = 0;
+  for (int round = 0; round < 4000; ++round) {
+    alignas(64) double p0[3][W], r0[W], p1[3][W], next_p[3][W], next_r0[W];
+    Vec3 a[W], b[W];
+    for (int l = 0; l < W; ++l) {
+      a[l] = point(static_cast<int>(rng() % 6));
+      b[l] = point(static_cast<int>(rng() % 6));
+      for (int i = 0; i < 3; ++i) {
+        p0[i][l] = a[l][i];
+        p1[i][l] = b[l][i];
+      }
+      r0[l] = dot(a[l], a[l]);
+    }
+    const unsigned lanes = rng() & 0xffu;
+    const unsigned skipped = cull.chart0_chords_skipped(lanes, p0[0], r0, p1[0], next_p[0], next_r0);
+    for (int l = 0; l < W; ++l) {
+      const bool on = lanes >> l & 1u;
+      const double r1 = dot(b[l], b[l]);
+      const bool skip = on && (cull.inside_empty_ball(0, r0[l], 0, r1) || cull.outside_bounds(a[l], b[l]));
+      EXPECT_EQ((skipped >> l & 1u) != 0, skip) << "round " << round << " lane " << l;
+      (skip ? skipped_count : tested_count) += on;
+      EXPECT_TRUE(same_bits(next_r0[l], on ? r1 : r0[l]));
+      for (int i = 0; i < 3; ++i) EXPECT_TRUE(same_bits(next_p[i][l], on ? b[l][i] : a[l][i]));
+    }
+  }
+  // Both outcomes, often.
+  EXPECT_GT(skipped_count, 2000);
+  EXPECT_GT(tested_count, 2000);
 }
 
 }  // namespace segment_cull_test
