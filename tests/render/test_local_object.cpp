@@ -412,7 +412,9 @@ TEST(ObjLocal, OuterRadiusHoldsTheObject) {
       farthest = std::max(farthest, norm(el->center + Vec3{el->axlen.x * n.x, el->axlen.y * n.y, el->axlen.z * n.z}));
     }
     EXPECT_LE(farthest, el->outer_radius());
-    if (el == &along) EXPECT_GT(farthest, 0.999 * el->outer_radius());
+    if (el == &along) {
+      EXPECT_GT(farthest, 0.999 * el->outer_radius());
+    }
   }
   const Ellipsoid ball(Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0.5});
   EXPECT_DOUBLE_EQ(ball.outer_radius(), 0.5);  // its box's corner: 0.866

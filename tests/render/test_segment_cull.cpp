@@ -287,7 +287,9 @@ void expect_hits_inside_bounds(const SceneObject& obj, int& hits, int& skipped) 
     hit.object_id = -13;  // a miss leaves the hit as it is (SceneObject::intersect)
     const bool hit_found = obj.intersect(make_segment(a, c), hit);
     const bool beyond = cull.outside_bounds(a, c);
-    if (!hit_found) EXPECT_TRUE(hit.object_id == -13 && !hit.valid()) << "chord " << k;
+    if (!hit_found) {
+      EXPECT_TRUE(hit.object_id == -13 && !hit.valid()) << "chord " << k;
+    }
     hits += hit_found;
     skipped += beyond;
     EXPECT_FALSE(hit_found && beyond) << "chord " << k << " (" << a.x << " " << a.y << " " << a.z << ") -> (" << c.x

@@ -115,7 +115,15 @@ RenderJob minkowski_sphere_job(BuildContext& ctx, const Vec4& obs, std::shared_p
 class IntegratedFlat final : public MetricCRTP<IntegratedFlat> {
  public:
   IntegratedFlat()
-      : MetricCRTP({"IntegratedFlat", {"t", "x", "y", "z"}, CoordType::Cartesian, {}, {TetradKind::Default}, "test"}) {}
+      : MetricCRTP({"IntegratedFlat",
+                    {"t", "x", "y", "z"},
+                    CoordType::Cartesian,
+                    {},
+                    {TetradKind::Default},
+                    "test",
+                    {{0.0, 0.0, 0.0, 0.0}},
+                    {},
+                    false}) {}
   template <class T>
   void g_tmpl(const Vec4T<T>&, Mat4T<T>& g) const {
     for (int i = 0; i < 4; ++i)

@@ -526,7 +526,9 @@ TEST(MetricsCatalogue, FriedmanIsPressureFreeDustWithRhoR3Constant) {
       EXPECT_GT(rho8pi, 0.0);
       for (int a = 0; a < 4; ++a)
         for (int b = 0; b < 4; ++b)
-          if (a != 0 || b != 0) EXPECT_NEAR(G[a][b], 0.0, 1e-10 * scale * std::max(1.0, std::fabs(g[a][b]))) << a << b;
+          if (a != 0 || b != 0) {
+            EXPECT_NEAR(G[a][b], 0.0, 1e-10 * scale * std::max(1.0, std::fabs(g[a][b]))) << a << b;
+          }
       const double rhoR3 = rho8pi * std::pow(R2, 1.5);
       if (rhoR3_first == 0) rhoR3_first = rhoR3;
       EXPECT_NEAR(rhoR3, rhoR3_first, 1e-9 * rhoR3_first);
