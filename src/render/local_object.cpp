@@ -93,6 +93,7 @@ void LocalFrame::event(double tau, WorldlineEvent& ev) const {
   ev.tau = tau;
   motion_->event_at_proper_time(tau, ev.x, ev.e0);
   metric_->metric_tensor(ev.x, ev.g);
+  ev.g_diagonal = is_diagonal(ev.g);
   ev.u_norm = 1;
   ev.e0_rate = Vec4{{0, 0, 0, 0}};
 }
@@ -138,7 +139,9 @@ Vec4 LocalFrame::to_local(const State& s, const Vec4& x) const {
 
 Vec3 LocalFrame::to_local_spatial(const State& s, const Vec4& x) const {
   const Vec4 dx = delta(x, s.x);
-  return {dot_skipping_zeros(s.g, s.e[1], dx), dot_skipping_zeros(s.g, s.e[2], dx), dot_skipping_zeros(s.g, s.e[3], dx)};
+  const bool diagonal = is_diagonal(s.g);  // (three products with this g)
+  return {dot_skipping_zeros(s.g, diagonal, s.e[1], dx), dot_skipping_zeros(s.g, diagonal, s.e[2], dx),
+          dot_skipping_zeros(s.g, diagonal, s.e[3], dx)};
 }
 
 bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev) const {
@@ -163,7 +166,7 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev
     // tolerance are unchanged; where the linear slope is poor (far from the worldline, outside
     // half to twice u_norm) u_norm is taken, the slope the search had before.
     const Vec4 dx = delta(x, ev.x);
-    const double f = dot_skipping_zeros(ev.g, ev.e0, dx);
+    const double f = dot_skipping_zeros(ev.g, ev.g_diagonal, ev.e0, dx);
     const double u_norm = ev.u_norm > 0 && std::isfinite(ev.u_norm) ? ev.u_norm : 1.0;
     const Vec4& r = ev.e0_rate;
     double slope = u_norm + ((r[0] * dx[0] + r[1] * dx[1]) + (r[2] * dx[2] + r[3] * dx[3]));
@@ -191,10 +194,19 @@ bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineE
   const Vec4 a = delta(xa, x_obj), b = delta(xb, x_obj) - a;
   // The five forms are dot products with g a and g b (two matrix products instead of five
   // quadratic forms; the rounding differs from dot(g, ·, ·) far below the margins below).
+  // A diagonal g: one term per component (the others are ±0: the same values up to the sign of
+  // a zero).
   Vec4 ga, gb;
-  for (int mu = 0; mu < 4; ++mu) {
-    ga[mu] = (g[mu][0] * a[0] + g[mu][1] * a[1]) + (g[mu][2] * a[2] + g[mu][3] * a[3]);
-    gb[mu] = (g[mu][0] * b[0] + g[mu][1] * b[1]) + (g[mu][2] * b[2] + g[mu][3] * b[3]);
+  if (ev.g_diagonal) {
+    for (int mu = 0; mu < 4; ++mu) {
+      ga[mu] = g[mu][mu] * a[mu];
+      gb[mu] = g[mu][mu] * b[mu];
+    }
+  } else {
+    for (int mu = 0; mu < 4; ++mu) {
+      ga[mu] = (g[mu][0] * a[0] + g[mu][1] * a[1]) + (g[mu][2] * a[2] + g[mu][3] * a[3]);
+      gb[mu] = (g[mu][0] * b[0] + g[mu][1] * b[1]) + (g[mu][2] * b[2] + g[mu][3] * b[3]);
+    }
   }
   auto dot4 = [](const Vec4& v, const Vec4& w) { return (v[0] * w[0] + v[1] * w[1]) + (v[2] * w[2] + v[3] * w[3]); };
   const double ea = dot4(e0, ga), eb = dot4(e0, gb), gaa = dot4(a, ga), gbb = dot4(b, gb);

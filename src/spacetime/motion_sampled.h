@@ -34,6 +34,7 @@ struct WorldlineEvent {
   Vec4 x{{0, 0, 0, 0}};
   Vec4 e0{{0, 0, 0, 0}};  ///< e_(0) = u/√(−g(u, u))
   Mat4 g{};               ///< metric tensor at x
+  bool g_diagonal = false;  ///< is_diagonal(g) (its products with dot_diagonal)
   /// −g(e_(0), u) for u = dx/dτ of the worldline as evaluated (the interpolant's derivative; a
   /// node's stored u): |u| = √(−g(u, u)) since e_(0) = u/|u|, 1 as far as the integrator keeps
   /// u a unit vector; 1 for motions that are not sampled. With e0_rate, the slope of
@@ -94,6 +95,7 @@ class SampledMotion : public Motion {
   std::vector<MotionNode> nodes_;
   std::vector<MotionSample> samples_;
   std::vector<Mat4> node_g_;  ///< metric tensor at each node (simultaneity searches start at nodes)
+  std::vector<char> node_g_diagonal_;  ///< is_diagonal(node_g_[i])
   std::vector<double> node_u_norm_;  ///< WorldlineEvent::u_norm at each node
   std::vector<Vec4> node_e0_rate_;   ///< WorldlineEvent::e0_rate at each node
   /// nodes_[i].tau, contiguous: interval()'s binary search (a simultaneity search's first Newton step
