@@ -63,6 +63,12 @@ bool passes_outside_ball(const Vec3& p0, const Vec3& p1, double r2) {
   return a * c - b * b > r2 * c + 1e-12 * a * c;
 }
 
+/// The frame of the last hit a LocalObject on a sampled motion found on this thread: the hit that
+/// refine_hit's next sub-chords refine (Segment::refines), whose tests start in it. A cache only:
+/// the frame is a function of the object and τ alone (LocalFrame::state), rebuilt where the entry
+/// holds another (refined_hit_frame), so what a test computes does not depend on the thread.
+thread_local HitFrame last_hit_frame;
+
 }  // namespace
 
 // ---- LocalFrame ---------------------------------------------------------------------------------
@@ -484,6 +490,10 @@ bool LocalObject::visit_tube_boxes(const Vec3& p0, const Vec3& inv, double ta, d
 
 bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
   if (seg.chart0 != chart || seg.chart1 != chart) return false;
+  // A sub-chord that refines a hit of this object is tested first in that hit's frame
+  // (intersect_piece's first test, here before the world tube's).
+  const HitFrame* refined = refined_hit_frame(seg);
+  if (refined && frame_.passes_outside(seg.x0, seg.x1, refined->ev, radius_local_)) return false;
   double s0 = 0, s1 = 1;
   if (!world_tube_test(seg, s0, s1)) return false;
   if (!tube_.empty() && std::fabs(seg.x1[0] - seg.x0[0]) > kLongSegment * radius_local_)
@@ -499,9 +509,25 @@ bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
     return intersect_pieces(seg, s0, s1, n, hit, &rest);
   }
   const double turn = rotation_rate_ * std::fabs(seg.x1[0] - seg.x0[0]) * (s1 - s0);
-  if (!(turn > kMaxTurnPerPiece)) return intersect_piece(seg, hit);
+  if (!(turn > kMaxTurnPerPiece)) return intersect_piece(seg, hit, nullptr, nullptr, refined);
   const int n = static_cast<int>(std::min<double>(kMaxPieces, std::ceil(turn / kMaxTurnPerPiece)));
   return intersect_pieces(seg, s0, s1, n, hit);
+}
+
+const HitFrame* LocalObject::refined_hit_frame(const Segment& seg) const {
+  // (a sub-chord long in time is tested box by box, intersect_per_box, each in its own frame)
+  if (!seg.refines || seg.refines->frame_object != this || tube_.empty() ||
+      std::fabs(seg.x1[0] - seg.x0[0]) > kLongSegment * radius_local_)
+    return nullptr;
+  HitFrame& f = last_hit_frame;
+  const double tau = seg.refines->frame_tau;
+  if (f.object != this || !(f.state.tau == tau)) {
+    f.object = this;
+    f.ev = WorldlineEvent{};
+    frame_.event(tau, f.ev);
+    f.state = frame_.state(f.ev);
+  }
+  return &f;
 }
 
 bool LocalObject::rest_frame_range(const Segment& seg, RestSegment& rest, double& s0, double& s1) const {
@@ -664,7 +690,8 @@ bool LocalObject::intersect_per_box(const Segment& seg, Hit& hit) const {
   return found;
 }
 
-bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends, bool* unconverged) const {
+bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends, bool* unconverged,
+                                  const HitFrame* start) const {
   // A chord whose ends both lie beyond one face of the child's bounds misses the child (its
   // polyline test below would), decided before anything is set up.
   if (ends && child_bounds_.segment_beyond_a_face(ends->X0, ends->X1)) return false;
@@ -672,7 +699,14 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
   Vec4 x_ref = seg.x0 + 0.5 * dseg;
   double tau = 0;
   WorldlineEvent ev;  // the last worldline event evaluated (a sampled motion's interval hint)
-  if (rigid_motion_) {
+  if (start) {
+    // A sub-chord that refines a hit of this object: the iteration starts in the frame that hit
+    // converged in (its event simultaneous with the hit, which lies within the parent chord's
+    // deviation from the curve of this sub-chord's hit if it has one), not in the frame
+    // simultaneous with the sub-chord's middle; the same fixed point, reached from closer.
+    tau = start->state.tau;
+    ev = start->ev;
+  } else if (rigid_motion_) {
     tau = rigid_motion_->to_rest_frame(x_ref)[0];  // exact: the rest-frame time is τ
   } else if (frame_.moving() && frame_.motion()->unbounded()) {
     tau = frame_.motion()->at_coordinate_time(x_ref[0]).tau;
@@ -690,13 +724,17 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     // from the event simultaneous with the middle of the segment and its e_(0) alone, a segment
     // that passes outside the body's bounding sphere (the child test would miss it), before
     // anything else is built; the loop below completes the frame from that event.
-    if (!frame_.simultaneous_tau(x_ref, tau, ev)) return false;
-    if (ev.tau != tau) frame_.event(tau, ev);
-    if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) return false;
+    // (A start frame: tested by the caller, intersect.)
+    if (!start) {
+      if (!frame_.simultaneous_tau(x_ref, tau, ev)) return false;
+      if (ev.tau != tau) frame_.event(tau, ev);
+      if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) return false;
+    }
   }
   // The hit and its frame so far.
   std::optional<Hit> best;
   std::optional<LocalFrame::State> best_state;
+  WorldlineEvent best_ev;  // a sampled motion's event at best_state's τ (HitFrame)
   // A rotating frame: the first estimate maps each end of the segment with the frame of its own
   // time. Consecutive segments then join in the local frame (a polyline along the ray's spiral);
   // with one frozen frame per segment the local path would jump between segments by the turn of
@@ -762,7 +800,10 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
       ls.p0 = rigid_motion_->rotate_to_object(rest0);
       ls.p1 = rigid_motion_->rotate_to_object(rest1);
     } else {
-      st = tube_.empty() ? frame_.state(tau) : frame_.state(ev);
+      if (iter == 0 && start)
+        st = start->state;
+      else
+        st = tube_.empty() ? frame_.state(tau) : frame_.state(ev);
       ls.p0 = frame_.to_local_spatial(*st, seg.x0);
       ls.p1 = frame_.to_local_spatial(*st, seg.x1);
     }
@@ -773,6 +814,7 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     best = h;
     best_state = st;
     best_tau = tau;
+    if (!tube_.empty()) best_ev = ev;
     if (!frame_.moving()) break;
     x_ref = seg.x0 + h.s * dseg;
   }
@@ -801,6 +843,14 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
   }
   best->emitter_u = frame_.body_velocity(*best_state, best->point, x_hit);
   best->keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)
+  if (!tube_.empty() && !polyline) {
+    // The frame of this hit, for the sub-chords that refine it.
+    best->frame_object = this;
+    best->frame_tau = best_state->tau;
+    last_hit_frame.object = this;
+    last_hit_frame.ev = best_ev;
+    last_hit_frame.state = *best_state;
+  }
   hit = *best;
   return true;
 }

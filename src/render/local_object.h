@@ -37,6 +37,7 @@
 namespace geovis {
 
 class ConstVelocityMotion;
+class LocalObject;
 
 /// A local frame: a static tetrad (fixed event and base vectors) or a moving tetrad (Motion).
 class LocalFrame {
@@ -97,6 +98,14 @@ class LocalFrame {
   /// The motion's proper-time range (infinite for an unbounded one), read once: simultaneous_tau
   /// runs on every chord near the body and would otherwise ask the motion through three virtual calls.
   double tau_lo_ = -std::numeric_limits<double>::infinity(), tau_hi_ = std::numeric_limits<double>::infinity();
+};
+
+/// The worldline event and frame in which a LocalObject on a sampled motion found a hit
+/// (LocalObject::intersect_piece's converged frozen frame at proper time state.tau).
+struct HitFrame {
+  const LocalObject* object = nullptr;
+  WorldlineEvent ev;
+  LocalFrame::State state;
 };
 
 /// An object (usually a compound or primitive of gpObjTypeLocal) seen through a local frame.
@@ -166,8 +175,15 @@ class LocalObject final : public SceneObject {
   /// `ends`: its ends' local coordinates when already known (rotating frames); `unconverged`: set
   /// to whether the frozen-frame iteration stopped before τ was stable (the hit, if any, is then
   /// the polyline's or a frozen chord's estimate).
-  bool intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends = nullptr,
-                       bool* unconverged = nullptr) const;
+  /// `start`: a sampled motion's event and frame to begin the iteration in (refined_hit_frame),
+  /// instead of those simultaneous with the middle of the segment (the caller has found that the
+  /// segment does not pass outside the body's sphere in it: LocalFrame::passes_outside).
+  bool intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends = nullptr, bool* unconverged = nullptr,
+                       const HitFrame* start = nullptr) const;
+  /// A sampled motion's segment that refines a hit this object found (Segment::refines, Hit::
+  /// frame_object), not tested box by box (kLongSegment): the event and frame of that hit
+  /// (HitFrame), else null.
+  const HitFrame* refined_hit_frame(const Segment& seg) const;
   /// Local coordinates X of event x in the frame of the worldline event simultaneous with it, and
   /// that event's proper time τ (initial guess in, result out); false where there is none.
   bool local_event(const Vec4& x, double& tau, Vec3& X) const;
