@@ -225,12 +225,12 @@ bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineE
   return d2 > radius * radius * (1 + 1e-6) + 1e-9 * scale;
 }
 
-Vec4 LocalFrame::body_velocity(const State& s, const Vec3& X, const Vec4& x_hit) const {
+Vec4 LocalFrame::body_velocity(const State& s, const Vec3& X, const Vec4& x_hit, size_t interval_hint) const {
   Vec4 w = s.e[0];
   if (sampled_ && (X.x != 0 || X.y != 0 || X.z != 0)) {
     // d/dτ [x_obj(τ) + X^i e_(i)(τ)] = u + X^i de_(i)/dτ, with de_(i)/dτ of the interpolated
     // tetrad from the derivatives the motion stored at its nodes (the transport equation's).
-    const Tetrad de = sampled_->frame_derivative_at(s.tau);
+    const Tetrad de = sampled_->frame_derivative_at(s.tau, interval_hint);
     for (int i = 1; i < 4; ++i)
       for (int mu = 0; mu < 4; ++mu) w[mu] += X[i - 1] * de[i][mu];
   } else if (motion_ && (X.x != 0 || X.y != 0 || X.z != 0)) {
@@ -490,10 +490,16 @@ bool LocalObject::visit_tube_boxes(const Vec3& p0, const Vec3& inv, double ta, d
 
 bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
   if (seg.chart0 != chart || seg.chart1 != chart) return false;
-  // A sub-chord that refines a hit of this object is tested first in that hit's frame
-  // (intersect_piece's first test, here before the world tube's).
+  // A sub-chord that refines a hit of this object is tested in that hit's frame: first whether it
+  // passes outside the body's sphere there (intersect_piece's first test). The world tube test is
+  // left out for it: it only culls segments far from every event of the body, and a hit the
+  // iteration then finds is an event of the body (near its worldline event: intersect_piece's last
+  // check), which the tube holds (test ObjLocal.EveryPointOfABodyOnAnOrbitIsFoundThroughItsWorldTube).
   const HitFrame* refined = refined_hit_frame(seg);
-  if (refined && frame_.passes_outside(seg.x0, seg.x1, refined->ev, radius_local_)) return false;
+  if (refined) {
+    if (frame_.passes_outside(seg.x0, seg.x1, refined->ev, radius_local_)) return false;
+    return intersect_piece(seg, hit, nullptr, nullptr, refined);
+  }
   double s0 = 0, s1 = 1;
   if (!world_tube_test(seg, s0, s1)) return false;
   if (!tube_.empty() && std::fabs(seg.x1[0] - seg.x0[0]) > kLongSegment * radius_local_)
@@ -509,7 +515,7 @@ bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
     return intersect_pieces(seg, s0, s1, n, hit, &rest);
   }
   const double turn = rotation_rate_ * std::fabs(seg.x1[0] - seg.x0[0]) * (s1 - s0);
-  if (!(turn > kMaxTurnPerPiece)) return intersect_piece(seg, hit, nullptr, nullptr, refined);
+  if (!(turn > kMaxTurnPerPiece)) return intersect_piece(seg, hit);
   const int n = static_cast<int>(std::min<double>(kMaxPieces, std::ceil(turn / kMaxTurnPerPiece)));
   return intersect_pieces(seg, s0, s1, n, hit);
 }
@@ -841,7 +847,7 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
       if (d2 > r * r) return false;
     }
   }
-  best->emitter_u = frame_.body_velocity(*best_state, best->point, x_hit);
+  best->emitter_u = frame_.body_velocity(*best_state, best->point, x_hit, best_ev.interval);
   best->keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)
   if (!tube_.empty() && !polyline) {
     // The frame of this hit, for the sub-chords that refine it.

@@ -86,7 +86,8 @@ class LocalFrame {
   Vec4 delta(const Vec4& x, const Vec4& y) const;
   /// Four-velocity of the body point at local position X (at rest in the frame): the derivative
   /// of x_obj(τ) + X^i e_(i)(τ), normalised with the metric at x_hit (u when not timelike).
-  Vec4 body_velocity(const State& s, const Vec3& X, const Vec4& x_hit) const;
+  /// `interval_hint`: a sampled motion's node interval to look at first (WorldlineEvent::interval).
+  Vec4 body_velocity(const State& s, const Vec3& X, const Vec4& x_hit, size_t interval_hint = 0) const;
 
  private:
   std::shared_ptr<const Metric> metric_;

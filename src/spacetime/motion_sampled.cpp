@@ -176,8 +176,8 @@ Tetrad SampledMotion::frame_at(const WorldlineEvent& ev) const {
   return gram_schmidt_after_e0(*metric_, ev.x, ev.g, ev.e0, e);
 }
 
-Tetrad SampledMotion::frame_derivative_at(double tau) const {
-  const size_t i = interval(tau);
+Tetrad SampledMotion::frame_derivative_at(double tau, size_t interval_hint) const {
+  const size_t i = interval(tau, interval_hint);
   Tetrad de{};
   if (const MotionSample* node = node_at(i, tau)) {
     const MotionNode& n = nodes_[static_cast<size_t>(node - samples_.data())];

@@ -67,7 +67,8 @@ class SampledMotion : public Motion {
   /// interpolation error, O(h⁴), so its derivative by O(h³) (tests: Motion.
   /// FrameDerivativeIsTheParallelTransportAlongTheOrbit, ObjLocal.
   /// BodyVelocityOfASampledMotionFromTheStoredFrameDerivative).
-  Tetrad frame_derivative_at(double tau) const;
+  /// `interval_hint`: the node interval to try first (WorldlineEvent::interval; the same result).
+  Tetrad frame_derivative_at(double tau, size_t interval_hint = 0) const;
   MotionSample at_coordinate_time(double t) const override;
   const std::vector<MotionSample>& samples() const override { return samples_; }
   const std::vector<MotionNode>& nodes() const { return nodes_; }
