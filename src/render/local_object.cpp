@@ -495,7 +495,7 @@ bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
   // left out for it: it only culls segments far from every event of the body, and a hit the
   // iteration then finds is an event of the body (near its worldline event: intersect_piece's last
   // check), which the tube holds (test ObjLocal.EveryPointOfABodyOnAnOrbitIsFoundThroughItsWorldTube).
-  const HitFrame* refined = refined_hit_frame(seg);
+  const HitFrame* refined = seg.refines && !tube_.empty() ? refined_hit_frame(seg) : nullptr;
   if (refined) {
     if (frame_.passes_outside(seg.x0, seg.x1, refined->ev, radius_local_)) return false;
     return intersect_piece(seg, hit, nullptr, nullptr, refined);
@@ -740,7 +740,7 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
   // The hit and its frame so far.
   std::optional<Hit> best;
   std::optional<LocalFrame::State> best_state;
-  WorldlineEvent best_ev;  // a sampled motion's event at best_state's τ (HitFrame)
+  std::optional<WorldlineEvent> best_ev;  // a sampled motion's event at best_state's τ (HitFrame)
   // A rotating frame: the first estimate maps each end of the segment with the frame of its own
   // time. Consecutive segments then join in the local frame (a polyline along the ray's spiral);
   // with one frozen frame per segment the local path would jump between segments by the turn of
@@ -820,7 +820,7 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     best = h;
     best_state = st;
     best_tau = tau;
-    if (!tube_.empty()) best_ev = ev;
+    if (!tube_.empty()) best_ev = ev;  // (constructed only here: the other motions' tests skip it)
     if (!frame_.moving()) break;
     x_ref = seg.x0 + h.s * dseg;
   }
@@ -847,14 +847,14 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
       if (d2 > r * r) return false;
     }
   }
-  best->emitter_u = frame_.body_velocity(*best_state, best->point, x_hit, best_ev.interval);
+  best->emitter_u = frame_.body_velocity(*best_state, best->point, x_hit, best_ev ? best_ev->interval : 0);
   best->keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)
-  if (!tube_.empty() && !polyline) {
+  if (best_ev && !polyline) {
     // The frame of this hit, for the sub-chords that refine it.
     best->frame_object = this;
     best->frame_tau = best_state->tau;
     last_hit_frame.object = this;
-    last_hit_frame.ev = best_ev;
+    last_hit_frame.ev = *best_ev;
     last_hit_frame.state = *best_state;
   }
   hit = *best;
