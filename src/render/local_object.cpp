@@ -1,6 +1,7 @@
 #include "render/local_object.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -68,6 +69,8 @@ bool passes_outside_ball(const Vec3& p0, const Vec3& p1, double r2) {
 /// the frame is a function of the object and τ alone (LocalFrame::state), rebuilt where the entry
 /// holds another (refined_hit_frame), so what a test computes does not depend on the thread.
 thread_local HitFrame last_hit_frame;
+/// The last LocalObject::frame_id() handed out (0: none, the empty cache's).
+std::atomic<std::uint64_t> next_frame_id{0};
 
 }  // namespace
 
@@ -253,7 +256,8 @@ Vec4 LocalFrame::body_velocity(const State& s, const Vec3& X, const Vec4& x_hit,
 
 // ---- LocalObject --------------------------------------------------------------------------------
 
-LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::move(child)), frame_(std::move(frame)) {
+LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame)
+    : child_(std::move(child)), frame_(std::move(frame)), frame_id_(next_frame_id.fetch_add(1) + 1) {
   const Bounds3 cb = child_->bounds();
   bool finite = !cb.empty();
   for (int i = 0; i < 3 && finite; ++i) finite = std::isfinite(cb.lo[i]) && std::isfinite(cb.hi[i]);
@@ -527,8 +531,8 @@ const HitFrame* LocalObject::refined_hit_frame(const Segment& seg) const {
     return nullptr;
   HitFrame& f = last_hit_frame;
   const double tau = seg.refines->frame_tau;
-  if (f.object != this || !(f.state.tau == tau)) {
-    f.object = this;
+  if (f.frame_id != frame_id_ || !(f.state.tau == tau)) {
+    f.frame_id = frame_id_;
     f.ev = WorldlineEvent{};
     frame_.event(tau, f.ev);
     f.state = frame_.state(f.ev);
@@ -853,7 +857,7 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     // The frame of this hit, for the sub-chords that refine it.
     best->frame_object = this;
     best->frame_tau = best_state->tau;
-    last_hit_frame.object = this;
+    last_hit_frame.frame_id = frame_id_;
     last_hit_frame.ev = *best_ev;
     last_hit_frame.state = *best_state;
   }

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -104,7 +105,8 @@ class LocalFrame {
 /// The worldline event and frame in which a LocalObject on a sampled motion found a hit
 /// (LocalObject::intersect_piece's converged frozen frame at proper time state.tau).
 struct HitFrame {
-  const LocalObject* object = nullptr;
+  /// LocalObject::frame_id() of the object (not its address, which a later object may reuse).
+  std::uint64_t frame_id = 0;
   WorldlineEvent ev;
   LocalFrame::State state;
 };
@@ -148,6 +150,9 @@ class LocalObject final : public SceneObject {
   /// A sampled motion: the distance of a hit from its worldline event accepted without
   /// pseudo_cartesian_radius (kAcceptRadiusFraction); 0 otherwise.
   double accept_radius() const { return std::sqrt(accept2_); }
+  /// A number no other LocalObject of the process has (copies aside, which share the frame): the
+  /// key of its frames in the per-thread HitFrame cache.
+  std::uint64_t frame_id() const { return frame_id_; }
 
  private:
   struct TubeBox {
@@ -206,6 +211,7 @@ class LocalObject final : public SceneObject {
   static constexpr size_t kChunk = 16;
   SceneObjectPtr child_;
   LocalFrame frame_;
+  std::uint64_t frame_id_;
   double radius_local_ = 0;
   // static frame: sphere in pseudo-Cartesian coordinates
   Vec3 center_pc_;
