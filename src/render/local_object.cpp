@@ -69,7 +69,7 @@ bool passes_outside_ball(const Vec3& p0, const Vec3& p1, double r2) {
 /// the frame is a function of the object and τ alone (LocalFrame::state), rebuilt where the entry
 /// holds another (refined_hit_frame), so what a test computes does not depend on the thread.
 thread_local HitFrame last_hit_frame;
-/// The last LocalObject::frame_id() handed out (0: none, the empty cache's).
+/// The last LocalObject::frame_id_ handed out (0: none, the empty cache's).
 std::atomic<std::uint64_t> next_frame_id{0};
 
 }  // namespace
@@ -711,9 +711,9 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
   WorldlineEvent ev;  // the last worldline event evaluated (a sampled motion's interval hint)
   if (start) {
     // A sub-chord that refines a hit of this object: the iteration starts in the frame that hit
-    // converged in (its event simultaneous with the hit, which lies within the parent chord's
-    // deviation from the curve of this sub-chord's hit if it has one), not in the frame
-    // simultaneous with the sub-chord's middle; the same fixed point, reached from closer.
+    // converged in, not in the frame simultaneous with the sub-chord's middle. The sub-chord's hit
+    // lies near the parent's (the chords differ by about the parent's deviation from the curve),
+    // so its τ is close: the same fixed point, reached from closer (and no search to begin with).
     tau = start->state.tau;
     ev = start->ev;
   } else if (rigid_motion_) {
@@ -853,7 +853,7 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
   }
   best->emitter_u = frame_.body_velocity(*best_state, best->point, x_hit, best_ev ? best_ev->interval : 0);
   best->keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)
-  if (best_ev && !polyline) {
+  if (best_ev) {
     // The frame of this hit, for the sub-chords that refine it.
     best->frame_object = this;
     best->frame_tau = best_state->tau;

@@ -19,7 +19,9 @@
 // hand's tip) is not missed. A rigid ConstVelocity motion (boosts, then rotations) maps events in
 // closed form: the segment is narrowed in its rest frame to the body's sphere and rotation-axis
 // slab, cut by the exact turn of the frame, and a piece whose iteration does not converge (its hit
-// an estimate) is tested again in finer pieces. The hit's point/normal/ray_dir are in the local frame.
+// an estimate) is tested again in finer pieces. A sub-chord with which the tracer refines a hit on
+// a sampled motion's body (Segment::refines) is tested in the frame that hit converged in, and its
+// iteration starts there. The hit's point/normal/ray_dir are in the local frame.
 #pragma once
 
 #include <cmath>
@@ -38,7 +40,6 @@
 namespace geovis {
 
 class ConstVelocityMotion;
-class LocalObject;
 
 /// A local frame: a static tetrad (fixed event and base vectors) or a moving tetrad (Motion).
 class LocalFrame {
@@ -105,7 +106,7 @@ class LocalFrame {
 /// The worldline event and frame in which a LocalObject on a sampled motion found a hit
 /// (LocalObject::intersect_piece's converged frozen frame at proper time state.tau).
 struct HitFrame {
-  /// LocalObject::frame_id() of the object (not its address, which a later object may reuse).
+  /// The object's number (LocalObject::frame_id_; not its address, which a later object may reuse).
   std::uint64_t frame_id = 0;
   WorldlineEvent ev;
   LocalFrame::State state;
@@ -150,9 +151,6 @@ class LocalObject final : public SceneObject {
   /// A sampled motion: the distance of a hit from its worldline event accepted without
   /// pseudo_cartesian_radius (kAcceptRadiusFraction); 0 otherwise.
   double accept_radius() const { return std::sqrt(accept2_); }
-  /// A number no other LocalObject of the process has (copies aside, which share the frame): the
-  /// key of its frames in the per-thread HitFrame cache.
-  std::uint64_t frame_id() const { return frame_id_; }
 
  private:
   struct TubeBox {
@@ -211,6 +209,8 @@ class LocalObject final : public SceneObject {
   static constexpr size_t kChunk = 16;
   SceneObjectPtr child_;
   LocalFrame frame_;
+  /// A number no other LocalObject of the process has (copies aside, which share the frame): the
+  /// key of its frames in the per-thread HitFrame cache.
   std::uint64_t frame_id_;
   double radius_local_ = 0;
   // static frame: sphere in pseudo-Cartesian coordinates
