@@ -1,6 +1,7 @@
 #include "render/local_object.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -63,6 +64,14 @@ bool passes_outside_ball(const Vec3& p0, const Vec3& p1, double r2) {
   return a * c - b * b > r2 * c + 1e-12 * a * c;
 }
 
+/// The frame of the last hit a LocalObject on a sampled motion found on this thread: the hit that
+/// refine_hit's next sub-chords refine (Segment::refines), whose tests start in it. A cache only:
+/// the frame is a function of the object and τ alone (LocalFrame::state), rebuilt where the entry
+/// holds another (refined_hit_frame), so what a test computes does not depend on the thread.
+thread_local HitFrame last_hit_frame;
+/// The last LocalObject::frame_id_ handed out (0: none, the empty cache's).
+std::atomic<std::uint64_t> next_frame_id{0};
+
 }  // namespace
 
 // ---- LocalFrame ---------------------------------------------------------------------------------
@@ -93,6 +102,7 @@ void LocalFrame::event(double tau, WorldlineEvent& ev) const {
   ev.tau = tau;
   motion_->event_at_proper_time(tau, ev.x, ev.e0);
   metric_->metric_tensor(ev.x, ev.g);
+  ev.g_diagonal = is_diagonal(ev.g);
   ev.u_norm = 1;
   ev.e0_rate = Vec4{{0, 0, 0, 0}};
 }
@@ -138,7 +148,9 @@ Vec4 LocalFrame::to_local(const State& s, const Vec4& x) const {
 
 Vec3 LocalFrame::to_local_spatial(const State& s, const Vec4& x) const {
   const Vec4 dx = delta(x, s.x);
-  return {dot_skipping_zeros(s.g, s.e[1], dx), dot_skipping_zeros(s.g, s.e[2], dx), dot_skipping_zeros(s.g, s.e[3], dx)};
+  const bool diagonal = is_diagonal(s.g);  // (three products with this g)
+  return {dot_skipping_zeros(s.g, diagonal, s.e[1], dx), dot_skipping_zeros(s.g, diagonal, s.e[2], dx),
+          dot_skipping_zeros(s.g, diagonal, s.e[3], dx)};
 }
 
 bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev) const {
@@ -163,7 +175,7 @@ bool LocalFrame::simultaneous_tau(const Vec4& x, double& tau, WorldlineEvent& ev
     // tolerance are unchanged; where the linear slope is poor (far from the worldline, outside
     // half to twice u_norm) u_norm is taken, the slope the search had before.
     const Vec4 dx = delta(x, ev.x);
-    const double f = dot_skipping_zeros(ev.g, ev.e0, dx);
+    const double f = dot_skipping_zeros(ev.g, ev.g_diagonal, ev.e0, dx);
     const double u_norm = ev.u_norm > 0 && std::isfinite(ev.u_norm) ? ev.u_norm : 1.0;
     const Vec4& r = ev.e0_rate;
     double slope = u_norm + ((r[0] * dx[0] + r[1] * dx[1]) + (r[2] * dx[2] + r[3] * dx[3]));
@@ -191,10 +203,19 @@ bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineE
   const Vec4 a = delta(xa, x_obj), b = delta(xb, x_obj) - a;
   // The five forms are dot products with g a and g b (two matrix products instead of five
   // quadratic forms; the rounding differs from dot(g, ·, ·) far below the margins below).
+  // A diagonal g: one term per component (the others are ±0: the same values up to the sign of
+  // a zero).
   Vec4 ga, gb;
-  for (int mu = 0; mu < 4; ++mu) {
-    ga[mu] = (g[mu][0] * a[0] + g[mu][1] * a[1]) + (g[mu][2] * a[2] + g[mu][3] * a[3]);
-    gb[mu] = (g[mu][0] * b[0] + g[mu][1] * b[1]) + (g[mu][2] * b[2] + g[mu][3] * b[3]);
+  if (ev.g_diagonal) {
+    for (int mu = 0; mu < 4; ++mu) {
+      ga[mu] = g[mu][mu] * a[mu];
+      gb[mu] = g[mu][mu] * b[mu];
+    }
+  } else {
+    for (int mu = 0; mu < 4; ++mu) {
+      ga[mu] = (g[mu][0] * a[0] + g[mu][1] * a[1]) + (g[mu][2] * a[2] + g[mu][3] * a[3]);
+      gb[mu] = (g[mu][0] * b[0] + g[mu][1] * b[1]) + (g[mu][2] * b[2] + g[mu][3] * b[3]);
+    }
   }
   auto dot4 = [](const Vec4& v, const Vec4& w) { return (v[0] * w[0] + v[1] * w[1]) + (v[2] * w[2] + v[3] * w[3]); };
   const double ea = dot4(e0, ga), eb = dot4(e0, gb), gaa = dot4(a, ga), gbb = dot4(b, gb);
@@ -207,12 +228,12 @@ bool LocalFrame::passes_outside(const Vec4& xa, const Vec4& xb, const WorldlineE
   return d2 > radius * radius * (1 + 1e-6) + 1e-9 * scale;
 }
 
-Vec4 LocalFrame::body_velocity(const State& s, const Vec3& X, const Vec4& x_hit) const {
+Vec4 LocalFrame::body_velocity(const State& s, const Vec3& X, const Vec4& x_hit, size_t interval_hint) const {
   Vec4 w = s.e[0];
   if (sampled_ && (X.x != 0 || X.y != 0 || X.z != 0)) {
     // d/dτ [x_obj(τ) + X^i e_(i)(τ)] = u + X^i de_(i)/dτ, with de_(i)/dτ of the interpolated
     // tetrad from the derivatives the motion stored at its nodes (the transport equation's).
-    const Tetrad de = sampled_->frame_derivative_at(s.tau);
+    const Tetrad de = sampled_->frame_derivative_at(s.tau, interval_hint);
     for (int i = 1; i < 4; ++i)
       for (int mu = 0; mu < 4; ++mu) w[mu] += X[i - 1] * de[i][mu];
   } else if (motion_ && (X.x != 0 || X.y != 0 || X.z != 0)) {
@@ -235,7 +256,8 @@ Vec4 LocalFrame::body_velocity(const State& s, const Vec3& X, const Vec4& x_hit)
 
 // ---- LocalObject --------------------------------------------------------------------------------
 
-LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame) : child_(std::move(child)), frame_(std::move(frame)) {
+LocalObject::LocalObject(SceneObjectPtr child, LocalFrame frame)
+    : child_(std::move(child)), frame_(std::move(frame)), frame_id_(next_frame_id.fetch_add(1) + 1) {
   const Bounds3 cb = child_->bounds();
   bool finite = !cb.empty();
   for (int i = 0; i < 3 && finite; ++i) finite = std::isfinite(cb.lo[i]) && std::isfinite(cb.hi[i]);
@@ -472,6 +494,16 @@ bool LocalObject::visit_tube_boxes(const Vec3& p0, const Vec3& inv, double ta, d
 
 bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
   if (seg.chart0 != chart || seg.chart1 != chart) return false;
+  // A sub-chord that refines a hit of this object is tested in that hit's frame: first whether it
+  // passes outside the body's sphere there (intersect_piece's first test). The world tube test is
+  // left out for it: it only culls segments far from every event of the body, and a hit the
+  // iteration then finds is an event of the body (near its worldline event: intersect_piece's last
+  // check), which the tube holds (test ObjLocal.EveryPointOfABodyOnAnOrbitIsFoundThroughItsWorldTube).
+  const HitFrame* refined = seg.refines && !tube_.empty() ? refined_hit_frame(seg) : nullptr;
+  if (refined) {
+    if (frame_.passes_outside(seg.x0, seg.x1, refined->ev, radius_local_)) return false;
+    return intersect_piece(seg, hit, nullptr, nullptr, refined);
+  }
   double s0 = 0, s1 = 1;
   if (!world_tube_test(seg, s0, s1)) return false;
   if (!tube_.empty() && std::fabs(seg.x1[0] - seg.x0[0]) > kLongSegment * radius_local_)
@@ -490,6 +522,22 @@ bool LocalObject::intersect(const Segment& seg, Hit& hit) const {
   if (!(turn > kMaxTurnPerPiece)) return intersect_piece(seg, hit);
   const int n = static_cast<int>(std::min<double>(kMaxPieces, std::ceil(turn / kMaxTurnPerPiece)));
   return intersect_pieces(seg, s0, s1, n, hit);
+}
+
+const HitFrame* LocalObject::refined_hit_frame(const Segment& seg) const {
+  // (a sub-chord long in time is tested box by box, intersect_per_box, each in its own frame)
+  if (!seg.refines || seg.refines->frame_object != this || tube_.empty() ||
+      std::fabs(seg.x1[0] - seg.x0[0]) > kLongSegment * radius_local_)
+    return nullptr;
+  HitFrame& f = last_hit_frame;
+  const double tau = seg.refines->frame_tau;
+  if (f.frame_id != frame_id_ || !(f.state.tau == tau)) {
+    f.frame_id = frame_id_;
+    f.ev = WorldlineEvent{};
+    frame_.event(tau, f.ev);
+    f.state = frame_.state(f.ev);
+  }
+  return &f;
 }
 
 bool LocalObject::rest_frame_range(const Segment& seg, RestSegment& rest, double& s0, double& s1) const {
@@ -652,7 +700,8 @@ bool LocalObject::intersect_per_box(const Segment& seg, Hit& hit) const {
   return found;
 }
 
-bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends, bool* unconverged) const {
+bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends, bool* unconverged,
+                                  const HitFrame* start) const {
   // A chord whose ends both lie beyond one face of the child's bounds misses the child (its
   // polyline test below would), decided before anything is set up.
   if (ends && child_bounds_.segment_beyond_a_face(ends->X0, ends->X1)) return false;
@@ -660,7 +709,14 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
   Vec4 x_ref = seg.x0 + 0.5 * dseg;
   double tau = 0;
   WorldlineEvent ev;  // the last worldline event evaluated (a sampled motion's interval hint)
-  if (rigid_motion_) {
+  if (start) {
+    // A sub-chord that refines a hit of this object: the iteration starts in the frame that hit
+    // converged in, not in the frame simultaneous with the sub-chord's middle. The sub-chord's hit
+    // lies near the parent's (the chords differ by about the parent's deviation from the curve),
+    // so its τ is close: the same fixed point, reached from closer (and no search to begin with).
+    tau = start->state.tau;
+    ev = start->ev;
+  } else if (rigid_motion_) {
     tau = rigid_motion_->to_rest_frame(x_ref)[0];  // exact: the rest-frame time is τ
   } else if (frame_.moving() && frame_.motion()->unbounded()) {
     tau = frame_.motion()->at_coordinate_time(x_ref[0]).tau;
@@ -678,13 +734,17 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     // from the event simultaneous with the middle of the segment and its e_(0) alone, a segment
     // that passes outside the body's bounding sphere (the child test would miss it), before
     // anything else is built; the loop below completes the frame from that event.
-    if (!frame_.simultaneous_tau(x_ref, tau, ev)) return false;
-    if (ev.tau != tau) frame_.event(tau, ev);
-    if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) return false;
+    // (A start frame: tested by the caller, intersect.)
+    if (!start) {
+      if (!frame_.simultaneous_tau(x_ref, tau, ev)) return false;
+      if (ev.tau != tau) frame_.event(tau, ev);
+      if (frame_.passes_outside(seg.x0, seg.x1, ev, radius_local_)) return false;
+    }
   }
   // The hit and its frame so far.
   std::optional<Hit> best;
   std::optional<LocalFrame::State> best_state;
+  std::optional<WorldlineEvent> best_ev;  // a sampled motion's event at best_state's τ (HitFrame)
   // A rotating frame: the first estimate maps each end of the segment with the frame of its own
   // time. Consecutive segments then join in the local frame (a polyline along the ray's spiral);
   // with one frozen frame per segment the local path would jump between segments by the turn of
@@ -750,7 +810,10 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
       ls.p0 = rigid_motion_->rotate_to_object(rest0);
       ls.p1 = rigid_motion_->rotate_to_object(rest1);
     } else {
-      st = tube_.empty() ? frame_.state(tau) : frame_.state(ev);
+      if (iter == 0 && start)
+        st = start->state;
+      else
+        st = tube_.empty() ? frame_.state(tau) : frame_.state(ev);
       ls.p0 = frame_.to_local_spatial(*st, seg.x0);
       ls.p1 = frame_.to_local_spatial(*st, seg.x1);
     }
@@ -761,6 +824,7 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
     best = h;
     best_state = st;
     best_tau = tau;
+    if (!tube_.empty()) best_ev = ev;  // (constructed only here: the other motions' tests skip it)
     if (!frame_.moving()) break;
     x_ref = seg.x0 + h.s * dseg;
   }
@@ -787,8 +851,16 @@ bool LocalObject::intersect_piece(const Segment& seg, Hit& hit, const PieceEnds*
       if (d2 > r * r) return false;
     }
   }
-  best->emitter_u = frame_.body_velocity(*best_state, best->point, x_hit);
+  best->emitter_u = frame_.body_velocity(*best_state, best->point, x_hit, best_ev ? best_ev->interval : 0);
   best->keplerian = false;  // the body's own motion (a ring inside is at rest in the body frame)
+  if (best_ev) {
+    // The frame of this hit, for the sub-chords that refine it.
+    best->frame_object = this;
+    best->frame_tau = best_state->tau;
+    last_hit_frame.frame_id = frame_id_;
+    last_hit_frame.ev = *best_ev;
+    last_hit_frame.state = *best_state;
+  }
   hit = *best;
   return true;
 }

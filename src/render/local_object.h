@@ -19,10 +19,13 @@
 // hand's tip) is not missed. A rigid ConstVelocity motion (boosts, then rotations) maps events in
 // closed form: the segment is narrowed in its rest frame to the body's sphere and rotation-axis
 // slab, cut by the exact turn of the frame, and a piece whose iteration does not converge (its hit
-// an estimate) is tested again in finer pieces. The hit's point/normal/ray_dir are in the local frame.
+// an estimate) is tested again in finer pieces. A sub-chord with which the tracer refines a hit on
+// a sampled motion's body (Segment::refines) is tested in the frame that hit converged in, and its
+// iteration starts there. The hit's point/normal/ray_dir are in the local frame.
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -85,7 +88,8 @@ class LocalFrame {
   Vec4 delta(const Vec4& x, const Vec4& y) const;
   /// Four-velocity of the body point at local position X (at rest in the frame): the derivative
   /// of x_obj(τ) + X^i e_(i)(τ), normalised with the metric at x_hit (u when not timelike).
-  Vec4 body_velocity(const State& s, const Vec3& X, const Vec4& x_hit) const;
+  /// `interval_hint`: a sampled motion's node interval to look at first (WorldlineEvent::interval).
+  Vec4 body_velocity(const State& s, const Vec3& X, const Vec4& x_hit, size_t interval_hint = 0) const;
 
  private:
   std::shared_ptr<const Metric> metric_;
@@ -97,6 +101,15 @@ class LocalFrame {
   /// The motion's proper-time range (infinite for an unbounded one), read once: simultaneous_tau
   /// runs on every chord near the body and would otherwise ask the motion through three virtual calls.
   double tau_lo_ = -std::numeric_limits<double>::infinity(), tau_hi_ = std::numeric_limits<double>::infinity();
+};
+
+/// The worldline event and frame in which a LocalObject on a sampled motion found a hit
+/// (LocalObject::intersect_piece's converged frozen frame at proper time state.tau).
+struct HitFrame {
+  /// The object's number (LocalObject::frame_id_; not its address, which a later object may reuse).
+  std::uint64_t frame_id = 0;
+  WorldlineEvent ev;
+  LocalFrame::State state;
 };
 
 /// An object (usually a compound or primitive of gpObjTypeLocal) seen through a local frame.
@@ -166,8 +179,15 @@ class LocalObject final : public SceneObject {
   /// `ends`: its ends' local coordinates when already known (rotating frames); `unconverged`: set
   /// to whether the frozen-frame iteration stopped before τ was stable (the hit, if any, is then
   /// the polyline's or a frozen chord's estimate).
-  bool intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends = nullptr,
-                       bool* unconverged = nullptr) const;
+  /// `start`: a sampled motion's event and frame to begin the iteration in (refined_hit_frame),
+  /// instead of those simultaneous with the middle of the segment (the caller has found that the
+  /// segment does not pass outside the body's sphere in it: LocalFrame::passes_outside).
+  bool intersect_piece(const Segment& seg, Hit& hit, const PieceEnds* ends = nullptr, bool* unconverged = nullptr,
+                       const HitFrame* start = nullptr) const;
+  /// A sampled motion's segment that refines a hit this object found (Segment::refines, Hit::
+  /// frame_object), not tested box by box (kLongSegment): the event and frame of that hit
+  /// (HitFrame), else null.
+  const HitFrame* refined_hit_frame(const Segment& seg) const;
   /// Local coordinates X of event x in the frame of the worldline event simultaneous with it, and
   /// that event's proper time τ (initial guess in, result out); false where there is none.
   bool local_event(const Vec4& x, double& tau, Vec3& X) const;
@@ -189,6 +209,9 @@ class LocalObject final : public SceneObject {
   static constexpr size_t kChunk = 16;
   SceneObjectPtr child_;
   LocalFrame frame_;
+  /// A number no other LocalObject of the process has (copies aside, which share the frame): the
+  /// key of its frames in the per-thread HitFrame cache.
+  std::uint64_t frame_id_;
   double radius_local_ = 0;
   // static frame: sphere in pseudo-Cartesian coordinates
   Vec3 center_pc_;

@@ -68,6 +68,9 @@ struct Bounds3 {
   }
 };
 
+struct Hit;
+class SceneObject;
+
 /// One step of the ray, as a straight 4D segment. `x0`/`x1` are the metric coordinates of the
 /// ends, `p0`/`p1` the pseudo-Cartesian positions (chart0/chart1 the charts), the coordinate time
 /// is x[0]. Ray direction: from p0 (closer to the observer in the backward trace) towards p1.
@@ -77,6 +80,10 @@ struct Segment {
   int chart0 = 0, chart1 = 0;
   const StepView* step = nullptr;  ///< the integration step (for refinement); may be null
   const Metric* metric = nullptr;
+  /// A sub-chord of refine_hit (render/tracer.cpp): the hit on the chord whose piece of the curve
+  /// this one approximates more closely (an object may start its search where it found that hit:
+  /// Hit::frame_object); null otherwise.
+  const Hit* refines = nullptr;
 };
 
 /// The closest intersection found so far. An object updates it only when it finds a hit with
@@ -106,6 +113,11 @@ struct Hit {
   /// Part of a multi-part primitive (box face 0..5: -x,+x,-y,+y,-z,+z as GeoViS GvsSolBox;
   /// cylinder/ring 0 outer side, 1 base, 2 top, 3 ring inner side); 0 otherwise. Used by DieT2D.
   int part = 0;
+  /// A local object on a sampled motion (render/local_object.h) that found this hit, and the proper
+  /// time τ of the frame it found it in (the converged frozen frame); null and 0 otherwise. Its
+  /// tests of the sub-chords that refine the hit (Segment::refines) start in that frame.
+  const SceneObject* frame_object = nullptr;
+  double frame_tau = 0;
   bool valid() const { return s < std::numeric_limits<double>::infinity(); }
 };
 

@@ -49,7 +49,8 @@ bool is_zero(const Vec4& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0 && v[3]
 /// first one that hits becomes the new interval, until the curve deviates from the chord by less
 /// than the tolerance. Returns false when the chord hit but none of its sub-chords does: the
 /// curve passes the object (a grazing ray whose chord cuts a corner of it); else the hit and its
-/// fraction of the step.
+/// fraction of the step. Each sub-chord is tested with the hit it refines (Segment::refines): a
+/// local object starts its search in the frame it found that hit in.
 bool refine_hit(const StepView& st, const Segment& chord, const SceneObject& scene, const Metric& m, Hit& best,
                 double& frac) {
   double a = 0, b = 1;
@@ -87,7 +88,7 @@ bool refine_hit(const StepView& st, const Segment& chord, const SceneObject& sce
         hermite_interpolate(st, f1, xi, ki);
         ci = m.to_pseudo_cartesian(xi, pi);
       }
-      Segment sub{xp, xi, pp, pi, cp, ci, &st, &m};
+      Segment sub{xp, xi, pp, pi, cp, ci, &st, &m, &best};
       Hit h;
       if (scene.intersect(sub, h)) {
         best = h;

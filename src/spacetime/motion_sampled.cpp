@@ -60,6 +60,7 @@ void SampledMotion::set_nodes(std::vector<MotionNode> nodes) {
   samples_.clear();
   samples_.reserve(nodes_.size());
   node_g_.resize(nodes_.size());
+  node_g_diagonal_.resize(nodes_.size());
   node_u_norm_.resize(nodes_.size());
   node_e0_rate_.resize(nodes_.size());
   node_tau_.clear();
@@ -70,6 +71,7 @@ void SampledMotion::set_nodes(std::vector<MotionNode> nodes) {
     samples_.push_back(MotionSample{n.tau, n.x, n.u, n.e});
     node_tau_.push_back(n.tau);
     metric_->metric_tensor(n.x, node_g_[i]);
+    node_g_diagonal_[i] = is_diagonal(node_g_[i]);
     node_u_norm_[i] = -dot_skipping_zeros(node_g_[i], n.e[0], n.u);
     node_e0_rate_[i] = lowered_e0_rate(n, node_g_[i]);
     if (i > 0 && !(n.x[0] > nodes_[i - 1].x[0])) x0_increasing_ = false;
@@ -139,6 +141,7 @@ void SampledMotion::event_at(double tau, WorldlineEvent& ev) const {
     ev.e0 = ev.node->e[0];
     const size_t k = static_cast<size_t>(ev.node - samples_.data());
     ev.g = node_g_[k];
+    ev.g_diagonal = node_g_diagonal_[k];
     ev.u_norm = node_u_norm_[k];
     ev.e0_rate = node_e0_rate_[k];
     return;
@@ -147,8 +150,9 @@ void SampledMotion::event_at(double tau, WorldlineEvent& ev) const {
   Vec4 u;
   interpolate_x(i, tau, ev.x, u);
   metric_->metric_tensor(ev.x, ev.g);
+  ev.g_diagonal = is_diagonal(ev.g);
   ev.e0 = unit_timelike(*metric_, ev.x, ev.g, u);
-  ev.u_norm = -dot_skipping_zeros(ev.g, ev.e0, u);
+  ev.u_norm = -dot_skipping_zeros(ev.g, ev.g_diagonal, ev.e0, u);
   // The nodes' rates interpolated linearly (a slope for Newton's method: its error, O(h²) of the
   // rate's change, only slows the convergence to the same root).
   const double s = (tau - nodes_[i].tau) / (nodes_[i + 1].tau - nodes_[i].tau);
@@ -172,8 +176,8 @@ Tetrad SampledMotion::frame_at(const WorldlineEvent& ev) const {
   return gram_schmidt_after_e0(*metric_, ev.x, ev.g, ev.e0, e);
 }
 
-Tetrad SampledMotion::frame_derivative_at(double tau) const {
-  const size_t i = interval(tau);
+Tetrad SampledMotion::frame_derivative_at(double tau, size_t interval_hint) const {
+  const size_t i = interval(tau, interval_hint);
   Tetrad de{};
   if (const MotionSample* node = node_at(i, tau)) {
     const MotionNode& n = nodes_[static_cast<size_t>(node - samples_.data())];

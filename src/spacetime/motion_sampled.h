@@ -34,6 +34,7 @@ struct WorldlineEvent {
   Vec4 x{{0, 0, 0, 0}};
   Vec4 e0{{0, 0, 0, 0}};  ///< e_(0) = u/√(−g(u, u))
   Mat4 g{};               ///< metric tensor at x
+  bool g_diagonal = false;  ///< is_diagonal(g) (its products with dot_diagonal)
   /// −g(e_(0), u) for u = dx/dτ of the worldline as evaluated (the interpolant's derivative; a
   /// node's stored u): |u| = √(−g(u, u)) since e_(0) = u/|u|, 1 as far as the integrator keeps
   /// u a unit vector; 1 for motions that are not sampled. With e0_rate, the slope of
@@ -66,7 +67,8 @@ class SampledMotion : public Motion {
   /// interpolation error, O(h⁴), so its derivative by O(h³) (tests: Motion.
   /// FrameDerivativeIsTheParallelTransportAlongTheOrbit, ObjLocal.
   /// BodyVelocityOfASampledMotionFromTheStoredFrameDerivative).
-  Tetrad frame_derivative_at(double tau) const;
+  /// `interval_hint`: the node interval to try first (WorldlineEvent::interval; the same result).
+  Tetrad frame_derivative_at(double tau, size_t interval_hint = 0) const;
   MotionSample at_coordinate_time(double t) const override;
   const std::vector<MotionSample>& samples() const override { return samples_; }
   const std::vector<MotionNode>& nodes() const { return nodes_; }
@@ -94,6 +96,7 @@ class SampledMotion : public Motion {
   std::vector<MotionNode> nodes_;
   std::vector<MotionSample> samples_;
   std::vector<Mat4> node_g_;  ///< metric tensor at each node (simultaneity searches start at nodes)
+  std::vector<char> node_g_diagonal_;  ///< is_diagonal(node_g_[i])
   std::vector<double> node_u_norm_;  ///< WorldlineEvent::u_norm at each node
   std::vector<Vec4> node_e0_rate_;   ///< WorldlineEvent::e0_rate at each node
   /// nodes_[i].tau, contiguous: interval()'s binary search (a simultaneity search's first Newton step

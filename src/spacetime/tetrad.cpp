@@ -23,8 +23,13 @@ constexpr double kGramSchmidtRel = 1e-10;
 
 /// Σ_pq |g_pq v^p v^q|, the size of the terms that cancel in g(v, v) (the scale of gram_schmidt's
 /// degeneracy test). Rows are summed separately, then together: independent additions instead of
-/// one chain of sixteen (the test runs on every interpolated motion frame).
-double abs_quadratic_form(const Mat4& g, const Vec4& v) {
+/// one chain of sixteen (the test runs on every interpolated motion frame). `diagonal`:
+/// is_diagonal(g), known to the caller.
+double abs_quadratic_form(const Mat4& g, bool diagonal, const Vec4& v) {
+  // A diagonal g: each row's sum is its one diagonal term (the others are +0), the same bits.
+  if (diagonal)
+    return (std::fabs(g[0][0] * v[0] * v[0]) + std::fabs(g[1][1] * v[1] * v[1])) +
+           (std::fabs(g[2][2] * v[2] * v[2]) + std::fabs(g[3][3] * v[3] * v[3]));
   double row[4];
   for (int p = 0; p < 4; ++p)
     row[p] = std::fabs(g[p][0] * v[p] * v[0]) + std::fabs(g[p][1] * v[p] * v[1]) + std::fabs(g[p][2] * v[p] * v[2]) +
@@ -80,8 +85,9 @@ void require_valid_position(const Metric& m, const Vec4& x, std::string_view wha
 }
 
 Vec4 unit_timelike(const Metric& m, const Vec4& x, const Mat4& g, const Vec4& v) {
-  const double n0 = dot_skipping_zeros(g, v, v);
-  if (!(n0 < -kGramSchmidtRel * abs_quadratic_form(g, v)) || !std::isfinite(n0))
+  const bool diagonal = is_diagonal(g);
+  const double n0 = dot_skipping_zeros(g, diagonal, v, v);
+  if (!(n0 < -kGramSchmidtRel * abs_quadratic_form(g, diagonal, v)) || !std::isfinite(n0))
     throw Error("Gram-Schmidt: the first vector e0 = " + vec_str(v) + " must be timelike, but g(e0,e0) = " +
                 number_text(n0) + " (metric " + m.name() + " at " + vec_str(x) + ")");
   return (1.0 / std::sqrt(-n0)) * v;
@@ -96,15 +102,16 @@ Tetrad gram_schmidt(const Metric& m, const Vec4& x, const Tetrad& v) {
 Tetrad gram_schmidt_after_e0(const Metric& m, const Vec4& x, const Mat4& g, const Vec4& e0, const Tetrad& v) {
   Tetrad e{};
   e[0] = e0;
+  const bool diagonal = is_diagonal(g);  // (nine products and three scales with this g)
   for (int i = 1; i < 4; ++i) {
     Vec4 w = v[i];
-    const double scale = abs_quadratic_form(g, v[i]);
+    const double scale = abs_quadratic_form(g, diagonal, v[i]);
     for (int a = 0; a < i; ++a) {
       // remove the component along e_a: w -= η_aa g(w, e_a) e_a
-      const double c = kEta[a] * dot_skipping_zeros(g, w, e[a]);
+      const double c = kEta[a] * dot_skipping_zeros(g, diagonal, w, e[a]);
       w = w - c * e[a];
     }
-    const double n = dot_skipping_zeros(g, w, w);
+    const double n = dot_skipping_zeros(g, diagonal, w, w);
     if (!(n > kGramSchmidtRel * scale) || !std::isfinite(n))
       throw Error("Gram-Schmidt: e" + std::to_string(i) + " = " + vec_str(v[i]) +
                   " is degenerate (linearly dependent on the previous base vectors, zero or null; what remains "

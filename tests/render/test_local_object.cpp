@@ -450,6 +450,84 @@ TEST(ObjLocal, EveryPointOfABodyOnAnOrbitIsFoundThroughItsWorldTube) {
   }
 }
 
+TEST(ObjLocal, SubChordStartedInTheFrameOfTheHitItRefinesHitsWhereTheBodyIs) {
+  // refine_hit tests each sub-chord with the hit it refines (Segment::refines): a body on a sampled
+  // motion then starts its frozen-frame iteration in the frame that hit converged in, not in the
+  // frame simultaneous with the sub-chord's middle. Independent answer: events x_obj(τ) + X^i e_(i)(τ)
+  // are simultaneous with x_obj(τ) in the frame at τ (g(e_(0), e_(i)) = 0), so a segment of them
+  // meets the ball of radius 0.5 where the straight line X(s) does. The parent chord crosses the
+  // ball through its centre at τ_s; the sub-chord lies at τ_s + Δ, Δ from 1e-7 (a deep level) to
+  // 0.2 (beyond a first-level quarter of a step), 0.1 off the centre: hit where |X(s)| = 0.5,
+  // with and without the start frame, and a sub-chord 0.6 off the centre misses.
+  std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
+  const LocalFrame frame(m, make_motion(testing_support::paper_orbit_params(), m, testing_support::paper_solver()));
+  const LocalObject obj(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0.5}), frame);
+  const LocalObject other(std::make_shared<Ellipsoid>(Vec3{0, 0, 0}, Vec3{0.5, 0.5, 0.5}), frame);
+  auto segment = [&](const LocalFrame::State& st, const Vec3& a, const Vec3& b) {
+    Segment seg;
+    for (int mu = 0; mu < 4; ++mu) {
+      seg.x0[mu] = st.x[mu] + a.x * st.e[1][mu] + a.y * st.e[2][mu] + a.z * st.e[3][mu];
+      seg.x1[mu] = st.x[mu] + b.x * st.e[1][mu] + b.y * st.e[2][mu] + b.z * st.e[3][mu];
+    }
+    seg.chart0 = m->to_pseudo_cartesian(seg.x0, seg.p0);
+    seg.chart1 = m->to_pseudo_cartesian(seg.x1, seg.p1);
+    seg.metric = m.get();
+    return seg;
+  };
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> ut(-9, 66);  // (the orbit's range −10..70, `other` 3 later)
+  std::normal_distribution<double> nd;
+  const double deltas[] = {1e-7, 1e-5, 1e-3, 0.05, 0.2};
+  double worst_s = 0;
+  for (int k = 0; k < 200; ++k) {
+    const double tau_s = ut(rng), delta = deltas[k % 5];
+    const Vec3 n = normalize(Vec3{nd(rng), nd(rng), nd(rng)});
+    const Vec3 o = normalize(cross(n, Vec3{nd(rng), nd(rng), nd(rng)}));  // ⟂ n
+    const Segment parent_seg = segment(frame.state(tau_s), 1.2 * n, Vec3{0, 0, 0});
+    Hit parent;
+    ASSERT_TRUE(obj.intersect(parent_seg, parent)) << k;
+    ASSERT_EQ(parent.frame_object, &obj);
+    EXPECT_NEAR(parent.frame_tau, tau_s, 1e-9 * (1 + std::fabs(tau_s))) << k;
+    EXPECT_NEAR(parent.s, 0.7 / 1.2, 1e-9) << k;
+    const LocalFrame::State st = frame.state(tau_s + delta);
+    Segment sub = segment(st, 0.6 * n + 0.1 * o, 0.4 * n + 0.1 * o);
+    const double s_exact = (0.6 - std::sqrt(0.25 - 0.01)) / 0.2;
+    Hit scratch, fresh;
+    ASSERT_TRUE(obj.intersect(sub, scratch)) << k;
+    sub.refines = &parent;
+    ASSERT_TRUE(obj.intersect(sub, fresh)) << k << " delta " << delta;
+    // 1e-8 of the sub-chord (0.2 long): 2e-9 in position, within Tracer::kRefineTolerance (1 + |p|)
+    // (|p| ~ 6); the converged iteration reaches the line's crossing to rounding (~1e-13 here).
+    for (const Hit* h : {&scratch, &fresh}) {
+      EXPECT_NEAR(h->s, s_exact, 1e-8) << k << " delta " << delta;
+      EXPECT_NEAR(norm(h->point), 0.5, 1e-9) << k;
+      EXPECT_NEAR(h->frame_tau, tau_s + delta, 1e-9 * (1 + std::fabs(tau_s))) << k;
+      worst_s = std::max(worst_s, std::fabs(h->s - s_exact));
+    }
+    // The start frame is rebuilt where the per-thread cache holds another (here `other`'s last
+    // hit): the same hit to the bit.
+    Hit elsewhere;
+    ASSERT_TRUE(other.intersect(segment(frame.state(tau_s + 3), -1.2 * n, Vec3{0, 0, 0}), elsewhere));
+    Hit rebuilt;
+    ASSERT_TRUE(obj.intersect(sub, rebuilt)) << k;
+    EXPECT_EQ(rebuilt.s, fresh.s) << k;
+    EXPECT_EQ(rebuilt.point.x, fresh.point.x) << k;
+    EXPECT_EQ(rebuilt.frame_tau, fresh.frame_tau) << k;
+    // Another object's hit is no start frame: the test from scratch, bit for bit.
+    sub.refines = &elsewhere;
+    Hit not_ours;
+    ASSERT_TRUE(obj.intersect(sub, not_ours)) << k;
+    EXPECT_EQ(not_ours.s, scratch.s) << k;
+    EXPECT_EQ(not_ours.frame_tau, scratch.frame_tau) << k;
+    // A sub-chord that passes outside the ball misses, started in the parent's frame too.
+    Segment miss = segment(st, 0.6 * n + 0.6 * o, 0.4 * n + 0.6 * o);
+    miss.refines = &parent;
+    Hit none;
+    EXPECT_FALSE(obj.intersect(miss, none)) << k;
+  }
+  EXPECT_LT(worst_s, 1e-8);
+}
+
 TEST(ObjLocal, InnerRadiusOfASampledTubeHoldsNoPointOfTheBody) {
   // The tracer captures the rays that fall below the scene's inner radius and skips the steps
   // inside it (spacetime/capture.h, render/segment_cull.h). A ball of radius 0.5 on the circular

@@ -235,15 +235,64 @@ TEST(Tetrad, DotSkippingZerosHasTheBitsOfDot) {
   signed_zeros[0][0] = -1.0, signed_zeros[0][1] = -0.0, signed_zeros[1][1] = 2.0, signed_zeros[2][3] = -0.0;
   signed_zeros[3][2] = 0.5, signed_zeros[3][3] = 3.0;
   gs.push_back(signed_zeros);
-  int compared = 0;
+  // dot_diagonal on diagonal matrices (is_diagonal), one with signed zeros off the diagonal and a
+  // zero on it.
+  Mat4 diagonal_signed_zeros{};
+  diagonal_signed_zeros[0][0] = -2.5, diagonal_signed_zeros[1][0] = -0.0, diagonal_signed_zeros[2][2] = 0.0;
+  diagonal_signed_zeros[3][1] = -0.0, diagonal_signed_zeros[1][1] = 1.5, diagonal_signed_zeros[3][3] = 7.0;
+  gs.push_back(diagonal_signed_zeros);
+  EXPECT_TRUE(is_diagonal(gs[0]));                      // Schwarzschild
+  EXPECT_FALSE(is_diagonal(gs[8]));                     // KerrBL (g_tφ)
+  EXPECT_FALSE(is_diagonal(signed_zeros));              // g_32 = 0.5
+  EXPECT_TRUE(is_diagonal(diagonal_signed_zeros));
+  int compared = 0, compared_diagonal = 0;
   for (const Mat4& g : gs)
     for (int i = 0; i < 64; ++i) {
       const Vec4 a{{std::sin(1.3 * i), -std::cos(0.7 * i) * 1e3, 1e-5 * i, i % 3 == 0 ? -0.0 : 0.25 * i}};
       const Vec4 b{{i % 2 == 0 ? -a[0] : 2.0, std::tan(0.1 * i), -1e-5 * i, i % 5 == 0 ? 0.0 : -0.5}};
       for (const auto& [x, y] : {std::pair{a, b}, std::pair{a, a}, std::pair{b, b}, std::pair{Vec4{}, b}}) {
         EXPECT_TRUE(bits_equal(dot_skipping_zeros(g, x, y), dot(g, x, y))) << i;
+        EXPECT_TRUE(bits_equal(dot_skipping_zeros(g, is_diagonal(g), x, y), dot(g, x, y))) << i;
         ++compared;
+        if (is_diagonal(g)) {
+          EXPECT_TRUE(bits_equal(dot_diagonal(g, x, y), dot(g, x, y))) << i;
+          ++compared_diagonal;
+        }
       }
     }
-  EXPECT_EQ(compared, 17 * 64 * 4);
+  EXPECT_EQ(compared, 18 * 64 * 4);
+  EXPECT_EQ(compared_diagonal, 9 * 64 * 4);
+}
+
+TEST(Tetrad, GramSchmidtOnADiagonalMetricHasTheBitsOfTheTextbookSums) {
+  // gram_schmidt_after_e0 and unit_timelike take dot_diagonal for a diagonal metric tensor: the
+  // frame must be the one of the textbook steps with the full sums dot (e_(i) = normalized v_i −
+  // Σ_{a<i} η_aa g(v_i, e_a) e_a) to the bit, on Schwarzschild and KerrBL (not diagonal) at
+  // several events, for perturbed coordinate bases (an interpolated motion frame's case).
+  auto bits_equal = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  int frames = 0;
+  for (const char* name : {"Schwarzschild", "KerrBL"}) {
+    auto m = make_metric(name);
+    for (int i = 0; i < 8; ++i) {
+      const Vec4 x{{0.3 * i, 4.0 + 1.7 * i, 0.2 + 0.33 * i, -1.0 + 0.7 * i}};
+      Mat4 g;
+      m->metric_tensor(x, g);
+      Tetrad v{};
+      for (int a = 0; a < 4; ++a)
+        for (int mu = 0; mu < 4; ++mu) v[a][mu] = (a == mu ? 1.0 : 0.0) + 0.01 * std::sin(1.0 + 3 * a + mu + 0.5 * i);
+      const Vec4 e0 = unit_timelike(*m, x, g, v[0]);
+      const Tetrad e = gram_schmidt_after_e0(*m, x, g, e0, v);
+      Tetrad ref{};
+      ref[0] = (1.0 / std::sqrt(-dot(g, v[0], v[0]))) * v[0];
+      for (int k = 1; k < 4; ++k) {
+        Vec4 w = v[k];
+        for (int a = 0; a < k; ++a) w = w - (kEta[a] * dot(g, w, ref[a])) * ref[a];
+        ref[k] = (1.0 / std::sqrt(dot(g, w, w))) * w;
+      }
+      for (int a = 0; a < 4; ++a)
+        for (int mu = 0; mu < 4; ++mu) EXPECT_TRUE(bits_equal(e[a][mu], ref[a][mu])) << name << " " << i << " " << a;
+      ++frames;
+    }
+  }
+  EXPECT_EQ(frames, 16);
 }
