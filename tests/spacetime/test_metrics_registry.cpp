@@ -325,8 +325,7 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
   return s;
 }
 
-}  // namespace
-
+// The tests stay in the anonymous namespace with their fixture (-Wsubobject-linkage in unity builds).
 TEST_P(EveryMetric, SamplePositionIsValidAndDocumented) {
   const auto m = make_metric(GetParam());
   const MetricInfo& info = m->info();
@@ -588,3 +587,5 @@ TEST(MetricRegistry, SchwarzschildTidalMatrix) {
       EXPECT_NEAR(T[i][j], ref, 1e-12 * s) << i << j;
     }
 }
+
+}  // namespace

@@ -118,7 +118,9 @@ TEST(StopLogic, KruskalShadowRayStopsAtTheSingularity) {
         const std::string what = std::string(solver_kind_name(kind)) + " eps_abs " + std::to_string(eps * 1e8) +
                                  "e-8 d (-1, " + std::to_string(d.y) + ", " + std::to_string(d.z) + ")";
         EXPECT_EQ(r.reason, StopReason::Invalid) << what << ": " << stop_reason_name(r.reason);
-        if (eps == 1e-6) EXPECT_LT(r.steps, 1000) << what;
+        if (eps == 1e-6) {
+          EXPECT_LT(r.steps, 1000) << what;
+        }
         // The last valid point: in the white hole (T < 0, |T| > |X|), just before the break
         // u + 1 = horizon_eps (the integrator homes in on the edge of the valid region).
         const double u = (y[1] + y[0]) * (y[1] - y[0]);
