@@ -14,7 +14,9 @@
 
 namespace geovis {
 
+#define GEOVIS_DUAL_ATTR
 #include "spacetime/dual_arith.h"  // struct Dual: in namespace geovis
+#undef GEOVIS_DUAL_ATTR
 
 /// Chain rule helper: f(a) with f(a.v) = fv and f'(a.v) = dfv.
 template <class T, int K>
