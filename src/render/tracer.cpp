@@ -637,7 +637,8 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
       const JacobiLane& r = jacobi_lanes[lane];
       keep(r.sample, end_ray(system_, r.rs, r.k0, y, r.y_start, gr, stats));
     };
-    if (!m.integrate_jacobi_packet(cfg_, JacobiPacketRays{next_jacobi, on_jacobi_step, jacobi_done}))
+    // test_step reads the states of a step only in test_chord, after ensure_states.
+    if (!m.integrate_jacobi_packet(cfg_, JacobiPacketRays{next_jacobi, on_jacobi_step, jacobi_done, true}))
       for (size_t i = 0; i < n_hits; ++i) keep(hits[i].sample, trace_system(system_, hits[i].d, stats, {}));
     n_hits = 0;
   };

@@ -1498,7 +1498,8 @@ struct MinoPacket {
 /// one ray (KerrMinoJacobiRay) per lane: the right-hand side, the attempt and the tolerance scales
 /// on dual numbers of SIMD lanes, the ray's own tests (validity, constraint, escape, capture) on
 /// its value rows with the Mino packet's functions (the value's w, ζ, w', z' are the layout's rows
-/// 0-3, as KerrMinoRHS's), the steps handed on lane by lane in BL Jacobi terms (bl_step).
+/// 0-3, as KerrMinoRHS's), the steps handed on lane by lane in BL Jacobi terms (bl_step, or
+/// bl_step_with_position where the caller reads the states on request).
 struct MinoJacobiPacket {
   using J = MinoJacobiLayout;
   static constexpr int N = J::N;
@@ -1574,7 +1575,9 @@ struct MinoJacobiPacket {
     coeffs.v[MinoLaneCoeffs::POLE][l] = dual.pole[l] = system(l).ray.f.polar.pole;
   }
   StepAction step(int l, const StepView& s) {
-    return rays.on_step ? rays.on_step(l, ray[l]->bl_step(s)) : StepAction::Continue;
+    if (!rays.on_step) return StepAction::Continue;
+    if (rays.states_on_request) return rays.on_step(l, ray[l]->bl_step_with_position(s));
+    return rays.on_step(l, ray[l]->bl_step(s));
   }
   void done(int l, const double* y, const GeodesicResult& res) {
     double ys[kJacobiDim];

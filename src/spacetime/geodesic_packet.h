@@ -97,6 +97,10 @@ struct JacobiPacketRays {
   FunctionRef<StepAction(int lane, const StepView& step)> on_step;
   /// The ray in `lane` ended with final state y (kJacobiDim components) and `result`.
   FunctionRef<void(int lane, const double* y, const GeodesicResult& result)> done;
+  /// on_step reads a StepView's states only after StepView::ensure_states, and its
+  /// pseudo-Cartesian ends: the states are converted only on request
+  /// (KerrMinoJacobiRay::bl_step_with_position).
+  bool states_on_request = false;
 };
 
 /// Whether the packet integrator serves solver `kind` (the explicit embedded pairs that

@@ -150,11 +150,60 @@ StepView KerrMinoJacobiRay::bl_step(const StepView& s) {
   const int end = start_ ^ 1;
   if (!have0_) to_bl_jacobi(c, sys.ray.f.polar, branch, s.y0, s.dy0, bl_[start_], dbl_[start_], p_[start_]);
   to_bl_jacobi(c, sys.ray.f.polar, branch, s.y1, s.dy1, bl_[end], dbl_[end], p_[end]);
+  converted_[start_] = converted_[end] = true;
   const StepView bl{s.lambda0,  s.lambda1,    bl_[start_], bl_[end], dbl_[start_], dbl_[end], kJacobiDim,
                     s.step_index, p_[start_], p_[end]};
   start_ = end;
   have0_ = true;
   return bl;
+}
+
+StepView KerrMinoJacobiRay::bl_step_with_position(const StepView& s) {
+  using L = MinoJacobiLayout;
+  using I = KerrMinoRHS;
+  const int end = start_ ^ 1;
+  double v[I::N];
+  if (!have0_) {
+    L::value(s.y0, v);
+    pole_[start_] = sys.ray.f.polar.pole;
+    zeta_[start_] = v[I::Z];
+    converted_[start_] = false;
+    kerr_mino_position<double>(pole_[start_], branch.sign, v, p_[start_]);
+  }
+  L::value(s.y1, v);
+  pole_[end] = sys.ray.f.polar.pole;
+  zeta_[end] = v[I::Z];
+  converted_[end] = false;
+  kerr_mino_position<double>(pole_[end], branch.sign, v, p_[end]);
+  mino_states_[0] = s.y0;
+  mino_states_[1] = s.dy0;
+  mino_states_[2] = s.y1;
+  mino_states_[3] = s.dy1;
+  StepView bl{s.lambda0,    s.lambda1,  bl_[start_], bl_[end], dbl_[start_], dbl_[end], kJacobiDim,
+              s.step_index, p_[start_], p_[end]};
+  bl.fill_states = &fill_views;
+  bl.fill_context = this;
+  start_ = end;
+  have0_ = true;
+  return bl;
+}
+
+void KerrMinoJacobiRay::fill_views(const void* context) {
+  using L = MinoJacobiLayout;
+  using I = KerrMinoRHS;
+  // Called during the step's callback: start_ is already the step's end.
+  KerrMinoJacobiRay& r = *const_cast<KerrMinoJacobiRay*>(static_cast<const KerrMinoJacobiRay*>(context));
+  for (const int end : {0, 1}) {
+    const int slot = end ? r.start_ : r.start_ ^ 1;
+    if (r.converted_[slot]) continue;
+    double y[L::N];
+    std::copy(r.mino_states_[2 * end], r.mino_states_[2 * end] + L::N, y);
+    y[L::at(I::Z, -1)] = r.zeta_[slot];  // the start: before the re-basing after the previous step
+    PolarOffset polar;
+    polar.pole = r.pole_[slot];
+    to_bl_jacobi(r.c, polar, r.branch, y, r.mino_states_[2 * end + 1], r.bl_[slot], r.dbl_[slot]);
+    r.converted_[slot] = true;
+  }
 }
 
 void KerrMinoJacobiRay::to_bl_state(const double* y, double* y_bl) const {

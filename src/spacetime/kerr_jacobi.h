@@ -203,14 +203,32 @@ struct KerrMinoJacobiRay {
   /// slots this path does not compute NaN), with the pseudo-Cartesian positions of its ends; the
   /// view of its start is that of the previous step's end. Valid until the next step.
   StepView bl_step(const StepView& s);
+  /// bl_step for a caller that reads the states of a step only on request (StepView::
+  /// ensure_states; JacobiPacketRays::states_on_request): the pseudo-Cartesian positions of its
+  /// ends at once (kerr_mino_position, the bits of bl_step's), the BL Jacobi states of its ends
+  /// converted only on request, and then as bl_step converts them: the start on the polar offset
+  /// and ζ it had as the previous step's end, before a re-basing (KerrMinoSystem::rebase). Why:
+  /// the renderer tests few chords against the scene (most lie in its empty ball or beyond its
+  /// bounds: render/segment_cull.h), and converting every step's end was 8 % of RGBjac's
+  /// instructions on the Kerr disk (callgrind at 100x100: kerr_mino_to_bl and to_bl_jacobi, 125
+  /// of 1532 M, issue 13). s's states are kept by reference until the callback returns.
+  StepView bl_step_with_position(const StepView& s);
   /// The BL Jacobi state (jacobi.h layout, with the transported screen s_a) of the final Mino
   /// state y to y_bl.
   void to_bl_state(const double* y, double* y_bl) const;
 
  private:
+  /// StepView::fill_states of bl_step_with_position: the views of the step's ends not converted yet.
+  static void fill_views(const void* ray);
+  /// The views of the ends of the steps: BL Jacobi state, its λ-derivative, position; where they
+  /// are converted on request, whether they are (converted_) and the polar offset and ζ of their
+  /// Mino state at their step (before a re-basing).
   double bl_[2][kJacobiDim], dbl_[2][kJacobiDim], p_[2][3];
+  double pole_[2] = {}, zeta_[2] = {};
+  bool converted_[2] = {};
   int start_ = 0;
   bool have0_ = false;
+  const double* mino_states_[4] = {};  ///< y0, dy0, y1, dy1 of the step (bl_step_with_position)
 };
 
 /// The Jacobi system (jacobi.h layout, 32 components in BL, y_io updated in place) through the
