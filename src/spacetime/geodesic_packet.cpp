@@ -3,8 +3,9 @@
 // are compiled once per SIMD instruction set by Highway's foreach_target (this file includes
 // itself per target); the per-lane step control and stop logic is compiled once
 // (the HWY_ONCE part), as one driver over the system (integrate_lanes): the geodesic system in
-// the metric's coordinates (CoordinatePacket) or Carter's separated equations in Mino time
-// (MinoPacket, kerr_mino.h).
+// the metric's coordinates (CoordinatePacket), Carter's separated equations in Mino time
+// (MinoPacket, kerr_mino.h), or those with their derivatives along two Jacobi fields on dual
+// numbers of lanes (MinoJacobiPacket, kerr_jacobi.h: RGBjac's rays that hit).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "spacetime/geodesic_packet.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -52,8 +53,8 @@ struct MinoLaneCoeffs {
   alignas(64) double v[kRows][kPacketLanes] = {};
   /// Lane l's rows: the ray's constants, the pole of its state and 1/r_break.
   void set_lane(int l, const KerrMinoConstants& c, double pole, double w_break) {
-    const double row[kRows] = {c.M, c.a,    c.a2,           c.E,          c.L,    c.Q, c.mu2, c.c,
-                               c.K, c.A,    c.B,            pole,         c.axis ? 1.0 : 0.0, c.sin2_floor, w_break};
+    const double row[kRows] = {
+        c.M, c.a, c.a2, c.E, c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, pole, c.axis ? 1.0 : 0.0, c.sin2_floor, w_break};
     for (int i = 0; i < kRows; ++i) v[i][l] = row[i];
   }
 };
@@ -393,8 +394,8 @@ HWY_INLINE KerrMinoCoeffs<DualLanes> mino_jacobi_coeffs_at(const MinoJacobiLaneC
     x.d[1] = SimdD::load(c.v[row][2] + l);
     return x;
   };
-  return {at(R::M), at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
-          at(R::MU2), at(R::C), at(R::K), at(R::A), at(R::B)};
+  return {at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
+          at(R::MU2), at(R::C),      at(R::K),  at(R::A), at(R::B)};
 }
 
 /// KerrMinoJacobiSystem's right-hand side (kerr_mino_rhs on dual numbers, kerr_jacobi.h) on every

@@ -92,8 +92,8 @@ void to_bl_jacobi(const KerrMinoConstants& c, const PolarOffset& polar, const Th
 
 }  // namespace
 
-KerrMinoJacobiRay::KerrMinoJacobiRay(double M, double a, double r_break, const SolverConfig& cfg,
-                                     const double* y_bl, double lambda0, double* y)
+KerrMinoJacobiRay::KerrMinoJacobiRay(double M, double a, double r_break, const SolverConfig& cfg, const double* y_bl,
+                                     double lambda0, double* y)
     : x0{{y_bl[0], y_bl[1], y_bl[2], y_bl[3]}},
       k0{{y_bl[4], y_bl[5], y_bl[6], y_bl[7]}},
       s0{Vec4{{y_bl[kJacobiS1], y_bl[kJacobiS1 + 1], y_bl[kJacobiS1 + 2], y_bl[kJacobiS1 + 3]}},
@@ -151,8 +151,8 @@ StepView KerrMinoJacobiRay::bl_step(const StepView& s) {
   if (!have0_) to_bl_jacobi(c, sys.ray.f.polar, branch, s.y0, s.dy0, bl_[start_], dbl_[start_], p_[start_]);
   to_bl_jacobi(c, sys.ray.f.polar, branch, s.y1, s.dy1, bl_[end], dbl_[end], p_[end]);
   converted_[start_] = converted_[end] = true;
-  const StepView bl{s.lambda0,  s.lambda1,    bl_[start_], bl_[end], dbl_[start_], dbl_[end], kJacobiDim,
-                    s.step_index, p_[start_], p_[end]};
+  const StepView bl{s.lambda0, s.lambda1,  bl_[start_],  bl_[end],   dbl_[start_],
+                    dbl_[end], kJacobiDim, s.step_index, p_[start_], p_[end]};
   start_ = end;
   have0_ = true;
   return bl;
@@ -179,8 +179,8 @@ StepView KerrMinoJacobiRay::bl_step_with_position(const StepView& s) {
   mino_states_[1] = s.dy0;
   mino_states_[2] = s.y1;
   mino_states_[3] = s.dy1;
-  StepView bl{s.lambda0,    s.lambda1,  bl_[start_], bl_[end], dbl_[start_], dbl_[end], kJacobiDim,
-              s.step_index, p_[start_], p_[end]};
+  StepView bl{s.lambda0, s.lambda1,  bl_[start_],  bl_[end],   dbl_[start_],
+              dbl_[end], kJacobiDim, s.step_index, p_[start_], p_[end]};
   bl.fill_states = &fill_views;
   bl.fill_context = this;
   start_ = end;
