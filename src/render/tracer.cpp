@@ -434,8 +434,9 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   // Packets (spacetime/geodesic_packet.h): the geodesic system with an embedded Runge–Kutta pair
   // (packet_solver: Cash–Karp, Fehlberg, Dormand–Prince 5(4), DOP853), in the metric's
   // coordinates or through Carter's separated equations (Metric::integrate_packet chooses as
-  // integrate does), also RGBjac's geodesic pass (jacobi_hits_only_); the Jacobi system and other
-  // solvers stay scalar, and straight rays need no integrator at all.
+  // integrate does), also RGBjac's geodesic pass (jacobi_hits_only_) and its Jacobi pass where the
+  // metric has a packet path for it (Metric::integrate_jacobi_packet); other solvers stay scalar,
+  // and straight rays need no integrator at all.
   jacobi_hits_only_ = system_ == GeodesicSystem::Jacobi;
   packets_ = packet_solver(cfg_.kind) && !straight_;
   if (job.reference_tracing) {
@@ -630,16 +631,69 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
     }
     return stop;
   };
+  // RGBjac: the rays that hit, traced again with their Jacobi fields (trace_direction) a batch at a
+  // time after the geodesic pass (or when the batch is full), in packets where the metric has a
+  // packet path for them (Metric::integrate_jacobi_packet: the Kerr family in Mino time), else one
+  // by one (trace_system). Each ray's result as trace_system's: the same start, steps, hit search
+  // and end (end_ray).
+  struct HitRay {
+    size_t sample;
+    Vec3 d;
+  };
+  constexpr size_t kHitBatch = 256;
+  HitRay hits[kHitBatch];
+  size_t n_hits = 0;
+  auto keep = [&](size_t sample, const TraceResult& res) {
+    colors[sample] = res.color;
+    if (samples[sample].data) fill_data(res, *samples[sample].data);
+  };
+  auto retrace_hits = [&] {
+    struct JacobiLane {
+      size_t sample;
+      Vec4 k0;
+      double y_start[kJacobiY1];  // x, k and the observer's screen s_a (jacobi_at_hit)
+      RayState rs;
+    };
+    JacobiLane jacobi_lanes[kPacketLanes];
+    size_t next_hit = 0;
+    auto next_jacobi = [&](int lane, double* y) {
+      if (next_hit == n_hits) return false;
+      const HitRay& h = hits[next_hit++];
+      JacobiLane& r = jacobi_lanes[lane];
+      r.sample = h.sample;
+      std::fill(y, y + kJacobiDim, 0.0);
+      r.k0 = start_state(job_.observer, normalize(h.d), system_, y);
+      std::copy(y, y + kJacobiY1, r.y_start);
+      r.rs = RayState{};
+      r.rs.metric = &m;
+      r.rs.scene = job_.scene.get();
+      r.rs.cull = &cull_;
+      return true;
+    };
+    auto on_jacobi_step = [&](int lane, const StepView& st) { return test_step(jacobi_lanes[lane].rs, st); };
+    auto jacobi_done = [&](int lane, const double* y, const GeodesicResult& gr) {
+      const JacobiLane& r = jacobi_lanes[lane];
+      keep(r.sample, end_ray(system_, r.rs, r.k0, y, r.y_start, gr, stats));
+    };
+    // test_step reads the states of a step only in test_chord, after ensure_states.
+    if (!m.integrate_jacobi_packet(cfg_, JacobiPacketRays{next_jacobi, on_jacobi_step, jacobi_done, true}))
+      for (size_t i = 0; i < n_hits; ++i) keep(hits[i].sample, trace_system(system_, hits[i].d, stats, {}));
+    n_hits = 0;
+  };
   auto done = [&](int lane, const double* y, const GeodesicResult& gr) {
     const LaneRay& r = lanes[lane];
-    TraceResult res = end_ray(GeodesicSystem::Geodesic, r.rs, r.k0, y, r.y_start, gr, stats);
-    if (jacobi_hits_only_ && res.hit) res = trace_system(system_, r.d, stats, {});
-    colors[r.sample] = res.color;
-    if (samples[r.sample].data) fill_data(res, *samples[r.sample].data);
+    const TraceResult res = end_ray(GeodesicSystem::Geodesic, r.rs, r.k0, y, r.y_start, gr, stats);
+    if (jacobi_hits_only_ && res.hit) {
+      hits[n_hits++] = HitRay{r.sample, r.d};
+      if (n_hits == kHitBatch) retrace_hits();
+      return;
+    }
+    keep(r.sample, res);
   };
   // test_step reads a step's states only in test_chord, which asks for them (ensure_states), and
   // its pseudo-Cartesian ends where given.
   m.integrate_packet(cfg_, PacketRays{next_ray, on_step, done, on_steps, true});
+  if (n_hits > 0) retrace_hits();
 }
 
 Color Tracer::stop_color(StopReason reason) const {

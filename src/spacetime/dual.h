@@ -7,81 +7,16 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 
 #include "spacetime/fast_math.h"
 #include "spacetime/vec.h"
 
 namespace geovis {
 
-template <class T, int K = 4>
-struct Dual {
-  T v{};     ///< value
-  T d[K]{};  ///< ∂_0..∂_3 (K = 4, seed), or K directional derivatives (seed_directions)
-
-  constexpr Dual() = default;
-  constexpr Dual(double x) : v(x) {}  // NOLINT: implicit from constants, as for double
-  template <class U = T, class = std::enable_if_t<!std::is_same_v<U, double>>>
-  constexpr Dual(const T& x) : v(x) {}  // NOLINT
-
-  Dual& operator+=(const Dual& o) { return *this = *this + o; }
-  Dual& operator-=(const Dual& o) { return *this = *this - o; }
-  Dual& operator*=(const Dual& o) { return *this = *this * o; }
-  Dual& operator/=(const Dual& o) { return *this = *this / o; }
-
-  friend Dual operator+(const Dual& a, const Dual& b) {
-    Dual r;
-    r.v = a.v + b.v;
-    for (int i = 0; i < K; ++i) r.d[i] = a.d[i] + b.d[i];
-    return r;
-  }
-  friend Dual operator-(const Dual& a, const Dual& b) {
-    Dual r;
-    r.v = a.v - b.v;
-    for (int i = 0; i < K; ++i) r.d[i] = a.d[i] - b.d[i];
-    return r;
-  }
-  friend Dual operator-(const Dual& a) {
-    Dual r;
-    r.v = -a.v;
-    for (int i = 0; i < K; ++i) r.d[i] = -a.d[i];
-    return r;
-  }
-  friend Dual operator*(const Dual& a, const Dual& b) {
-    Dual r;
-    r.v = a.v * b.v;
-    for (int i = 0; i < K; ++i) r.d[i] = a.d[i] * b.v + a.v * b.d[i];
-    return r;
-  }
-  friend Dual operator/(const Dual& a, const Dual& b) {
-    Dual r;
-    const T inv = T(1.0) / b.v;
-    r.v = a.v * inv;
-    for (int i = 0; i < K; ++i) r.d[i] = (a.d[i] - r.v * b.d[i]) * inv;
-    return r;
-  }
-  friend Dual operator+(const Dual& a, double b) { return a + Dual(b); }
-  friend Dual operator+(double a, const Dual& b) { return Dual(a) + b; }
-  friend Dual operator-(const Dual& a, double b) { return a - Dual(b); }
-  friend Dual operator-(double a, const Dual& b) { return Dual(a) - b; }
-  friend Dual operator*(const Dual& a, double b) {
-    Dual r;
-    r.v = a.v * b;
-    for (int i = 0; i < K; ++i) r.d[i] = a.d[i] * b;
-    return r;
-  }
-  friend Dual operator*(double a, const Dual& b) { return b * a; }
-  friend Dual operator/(const Dual& a, double b) { return a * (1.0 / b); }
-  friend Dual operator/(double a, const Dual& b) { return Dual(a) / b; }
-
-  friend bool operator<(const Dual& a, const Dual& b) { return a.v < b.v; }
-  friend bool operator>(const Dual& a, const Dual& b) { return a.v > b.v; }
-  friend bool operator<=(const Dual& a, const Dual& b) { return a.v <= b.v; }
-  friend bool operator>=(const Dual& a, const Dual& b) { return a.v >= b.v; }
-  friend bool operator<(const Dual& a, double b) { return a.v < b; }
-  friend bool operator>(const Dual& a, double b) { return a.v > b; }
-  friend bool operator<=(const Dual& a, double b) { return a.v <= b; }
-  friend bool operator>=(const Dual& a, double b) { return a.v >= b; }
-};
+#define GEOVIS_DUAL_ATTR
+#include "spacetime/dual_arith.h"  // struct Dual: in namespace geovis
+#undef GEOVIS_DUAL_ATTR
 
 /// Chain rule helper: f(a) with f(a.v) = fv and f'(a.v) = dfv.
 template <class T, int K>

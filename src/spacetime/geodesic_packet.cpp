@@ -3,8 +3,9 @@
 // are compiled once per SIMD instruction set by Highway's foreach_target (this file includes
 // itself per target); the per-lane step control and stop logic is compiled once
 // (the HWY_ONCE part), as one driver over the system (integrate_lanes): the geodesic system in
-// the metric's coordinates (CoordinatePacket) or Carter's separated equations in Mino time
-// (MinoPacket, kerr_mino.h).
+// the metric's coordinates (CoordinatePacket), Carter's separated equations in Mino time
+// (MinoPacket, kerr_mino.h), or those with their derivatives along two Jacobi fields on dual
+// numbers of lanes (MinoJacobiPacket, kerr_jacobi.h: RGBjac's rays that hit).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "spacetime/geodesic_packet.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -27,6 +28,7 @@
 #include "core/error.h"
 #include "spacetime/geodesic_packet.h"
 #include "spacetime/integrators.h"
+#include "spacetime/kerr_jacobi.h"
 #include "spacetime/kerr_mino.h"
 #include "spacetime/metric.h"
 #include "spacetime/metric_kernel.h"
@@ -49,6 +51,22 @@ inline void packet_rhs(const MetricKernel& m, const double* y, double* dy, unsig
 struct MinoLaneCoeffs {
   enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, POLE, AXIS, SIN2_FLOOR, W_BREAK, kRows };
   alignas(64) double v[kRows][kPacketLanes] = {};
+  /// Lane l's rows: the ray's constants, the pole of its state and 1/r_break.
+  void set_lane(int l, const KerrMinoConstants& c, double pole, double w_break) {
+    const double row[kRows] = {
+        c.M, c.a, c.a2, c.E, c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, pole, c.axis ? 1.0 : 0.0, c.sin2_floor, w_break};
+    for (int i = 0; i < kRows; ++i) v[i][l] = row[i];
+  }
+};
+
+/// The coefficients of Carter's equations with their derivatives along the two Jacobi fields of the
+/// rays in a packet's lanes (KerrMinoJacobiSystem::kd: value and the two derivative parts of each
+/// coefficient, one row of kPacketLanes each) and the pole ζ is measured from, for the right-hand
+/// side on dual numbers of SIMD lanes (mino_jacobi_rhs).
+struct MinoJacobiLaneCoeffs {
+  enum { M, A_SPIN, A2, E, L, Q, MU2, C, K, A, B, kCoeffs };
+  alignas(64) double v[kCoeffs][3][kPacketLanes] = {};
+  alignas(64) double pole[kPacketLanes] = {};
 };
 
 /// Where the Boyer–Lindquist views of the step ends of a packet's lanes go (each lane's
@@ -130,8 +148,23 @@ constexpr bool kCombinedEstimate = requires {
 HWY_BEFORE_NAMESPACE();
 namespace geovis {
 namespace HWY_NAMESPACE {
+#define GEOVIS_DUAL_ATTR HWY_ATTR __attribute__((always_inline))
+#include "spacetime/dual_arith.h"  // Dual: this target's copy, for Dual<SimdD, 2>
+#undef GEOVIS_DUAL_ATTR
 #include "spacetime/kerr_mino_bl.h"
 #include "spacetime/kerr_mino_rhs.h"
+
+/// The dual numbers of a packet's Jacobi fields: lane l of each part is that of ray l's DualJ
+/// (kerr_jacobi.h), with the same operations (dual_arith.h on SimdD).
+using DualLanes = Dual<SimdD, 2>;
+
+/// kerr_mino_rhs's choice of the axis form on dual numbers of lanes; the rays of the Jacobi packet
+/// never take it (they are off the axis, L ≠ 0: KerrMinoJacobiRay), so `axis` is false for all
+/// lanes, as for one ray (KerrMinoJacobiSystem).
+template <int K>
+HWY_INLINE Dual<SimdD, K> select(bool axis, const Dual<SimdD, K>& a, const Dual<SimdD, K>& b) {
+  return axis ? a : b;
+}
 
 /// ExplicitRK<Tab>::attempt (integrators.h; DOP853::attempt for DOP853's tableau) on all lanes
 /// at once for a system of N components whose right-hand side reads the first kCoupled
@@ -375,6 +408,90 @@ void mino_attempt(SolverKind kind, const MinoLaneCoeffs& c, const LaneTolerance&
                                                     y, dy, h, y1, e, e3, dy1);
     attempt_error_lanes<Tab, N>(tol, y, y1, e, e3, h, err);
   });
+}
+
+/// The coefficients with derivatives (KerrMinoCoeffs<DualLanes>) of the lanes l … l + SimdD::lanes() − 1.
+HWY_INLINE KerrMinoCoeffs<DualLanes> mino_jacobi_coeffs_at(const MinoJacobiLaneCoeffs& c, size_t l) {
+  using R = MinoJacobiLaneCoeffs;
+  auto at = [&](int row) {
+    DualLanes x;
+    x.v = SimdD::load(c.v[row][0] + l);
+    x.d[0] = SimdD::load(c.v[row][1] + l);
+    x.d[1] = SimdD::load(c.v[row][2] + l);
+    return x;
+  };
+  return {at(R::M),   at(R::A_SPIN), at(R::A2), at(R::E), at(R::L), at(R::Q),
+          at(R::MU2), at(R::C),      at(R::K),  at(R::A), at(R::B)};
+}
+
+/// KerrMinoJacobiSystem's right-hand side (kerr_mino_rhs on dual numbers, kerr_jacobi.h) on every
+/// lane, SoA in MinoJacobiLayout: lane l equals the scalar system of ray l to the bit.
+HWY_INLINE void mino_jacobi_rhs_lanes(const MinoJacobiLaneCoeffs& c, const double* y, double* dy) {
+  using J = MinoJacobiLayout;
+  constexpr int N = KerrMinoRHS::N, W = kPacketLanes;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const KerrMinoCoeffs<DualLanes> k = mino_jacobi_coeffs_at(c, l);
+    DualLanes ys[N], dys[N];
+    for (int i = 0; i < KerrMinoRHS::kCoupled; ++i) {  // the right-hand side reads no quadrature
+      ys[i].v = SimdD::load(y + J::at(i, -1) * W + l);
+      for (int f = 0; f < 2; ++f) ys[i].d[f] = SimdD::load(y + J::at(i, f) * W + l);
+    }
+    HWY_NAMESPACE::kerr_mino_rhs(k, false, SimdD::load(c.pole + l), ys, dys);  // this target's copy
+    for (int i = 0; i < N; ++i) {
+      dys[i].v.store(dy + J::at(i, -1) * W + l);
+      for (int f = 0; f < 2; ++f) dys[i].d[f].store(dy + J::at(i, f) * W + l);
+    }
+  }
+}
+
+void mino_jacobi_rhs(const MinoJacobiLaneCoeffs& c, const double* y, double* dy) { mino_jacobi_rhs_lanes(c, y, dy); }
+
+/// The attempt of solver `kind` on the Mino-time Jacobi system (the quadratures of the value and of
+/// the derivatives last: MinoJacobiLayout::kCoupled), with its AttemptError.
+void mino_jacobi_attempt(SolverKind kind, const MinoJacobiLaneCoeffs& c, const LaneTolerance& tol, const double* y,
+                         const double* dy, const double* h, double* y1, double* dy1, AttemptError& err) {
+  with_packet_tableau(kind, [&]<class Tab>() {
+    constexpr int N = MinoJacobiLayout::N;
+    HWY_ALIGN double e[N * kPacketLanes];
+    HWY_ALIGN double e3[kCombinedEstimate<Tab> ? N * kPacketLanes : 1];
+    rk_attempt_lanes<Tab, N, MinoJacobiLayout::kCoupled>(
+        [&](const double* yy, double* dyy) { mino_jacobi_rhs_lanes(c, yy, dyy); }, y, dy, h, y1, e, e3, dy1);
+    attempt_error_lanes<Tab, N>(tol, y, y1, e, e3, h, err);
+  });
+}
+
+/// integrate_with's set_tolerance for the Mino-time Jacobi system on every lane (SoA): the 1/D_i
+/// of ErrorScale from KerrMinoJacobiSystem::tolerance_inv_scale at state y — the value's scales
+/// (kerr_mino_tolerance_inv_scale), each derivative's relative to its own size max(1, max_i
+/// |V_f,i|/s_i) — with the scalar function's operations (std::max(a, b) as a < b ? b : a).
+void mino_jacobi_tolerance(const MinoLaneCoeffs& c, double eps_abs, double eps_rel, const double* y, double* inv) {
+  using R = MinoLaneCoeffs;
+  using J = MinoJacobiLayout;
+  constexpr int N = KerrMinoRHS::N, W = kPacketLanes;
+  const double inv_eps_abs = 1.0 / eps_abs;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    auto at = [&](int row) { return SimdD::load(c.v[row] + l); };
+    SimdD ys[N], iv[N], is[J::N];
+    for (int i = 0; i < N; ++i) ys[i] = SimdD::load(y + J::at(i, -1) * W + l);
+    HWY_NAMESPACE::kerr_mino_tolerance_inv_scale(at(R::A2), at(R::SIN2_FLOOR), at(R::POLE), ys, iv);
+    for (int i = 0; i < N; ++i) is[J::at(i, -1)] = iv[i];
+    for (int f = 0; f < 2; ++f) {
+      SimdD size(1.0);
+      for (int i = 0; i < N; ++i) {
+        const SimdD x = fabs(SimdD::load(y + J::at(i, f) * W + l)) * iv[i];
+        size = select(size < x, x, size);
+      }
+      const SimdD inv_size = SimdD(1.0) / size;
+      for (int i = 0; i < N; ++i) is[J::at(i, f)] = iv[i] * inv_size;
+    }
+    for (int i = 0; i < J::N; ++i) {
+      if (eps_rel == 0.0)
+        is[i] = is[i] * SimdD(inv_eps_abs);
+      else
+        is[i] = SimdD(1.0) / (SimdD(eps_abs) / is[i] + SimdD(eps_rel) * fabs(SimdD::load(y + i * W + l)));
+      is[i].store(inv + i * W + l);
+    }
+  }
 }
 
 /// kerr_mino_bl_view (kerr_mino_bl.h) on every lane: the BL views of the Mino states y with
@@ -815,6 +932,9 @@ HWY_EXPORT(lane_step_tests);
 HWY_EXPORT(lanes_go_on);
 HWY_EXPORT(mino_may_project);
 HWY_EXPORT(copy_lanes);
+HWY_EXPORT(mino_jacobi_rhs);
+HWY_EXPORT(mino_jacobi_attempt);
+HWY_EXPORT(mino_jacobi_tolerance);
 
 namespace {
 
@@ -1340,6 +1460,34 @@ struct CoordinatePacket {
   void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
 };
 
+/// KerrMinoSystem's constraint (on SIMD lanes: mino_constraint, kerr_mino_constraint's bits),
+/// escaped and captured of the accepted states y (SoA, N rows whose first four are the Mino state's
+/// w, ζ, w', z': KerrMinoRHS, MinoJacobiLayout) of the lanes in `lanes`, lane l's system
+/// system_of(l) (its escaped and captured read the state's N components). Escape and capture are
+/// tested lane by lane, and the costly part of each (the turning-point and Bernstein tests of the
+/// radial potential) only where its radius and direction admit it.
+template <int N, class SystemOf>
+void mino_step_checks(size_t target, const MinoLaneCoeffs& coeffs, const SystemOf& system_of, const SolverConfig& c,
+                      const double* y, unsigned lanes, PacketStepChecks& out) {
+  constexpr int W = kPacketLanes;
+  static_assert(W <= 8, "mino_constraint's candidate bits: 8 per test");
+  // The lanes past the first tests of escaped and captured, which most steps fail (SIMD, with
+  // their expressions); only those are gathered and tested here.
+  const unsigned candidates = GEOVIS_PACKET_DISPATCH(mino_constraint, target)(
+      coeffs, y, c.escape_radius, c.capture_radius, c.direction >= 0 ? -1.0 : 1.0, out.constraint,
+      out.constraint_scale);
+  const unsigned may_escape = candidates & lanes, may_be_captured = candidates >> 8 & lanes;
+  out.escaped = out.captured = 0;
+  for (unsigned todo = may_escape | may_be_captured; todo != 0; todo &= todo - 1) {
+    const int l = std::countr_zero(todo);
+    double yl[N];
+    for (int i = 0; i < N; ++i) yl[i] = y[i * W + l];
+    const auto& sys = system_of(l);
+    if ((may_escape >> l & 1u) && sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
+    if ((may_be_captured >> l & 1u) && sys.captured(c, yl)) out.captured |= 1u << l;
+  }
+}
+
 /// Carter's separated equations in Mino time (kerr_mino.h), one ray (KerrMinoRay) per lane.
 struct MinoPacket {
   static constexpr int N = KerrMinoRHS::N;
@@ -1377,12 +1525,8 @@ struct MinoPacket {
       return false;
     }
     const KerrMinoRay& r = ray[l].emplace(hole.mass, hole.a, hole.r_break, cfg, ys, 0.0, y);
-    using R = MinoLaneCoeffs;
     const KerrMinoConstants& c = r.c;
-    const double row[R::kRows] = {
-        c.M,   c.a,  c.a2, c.E,  c.L, c.Q, c.mu2, c.c, c.K, c.A, c.B, r.sys.f.polar.pole, c.axis ? 1.0 : 0.0,
-        c.sin2_floor, r.sys.w_break};
-    for (int i = 0; i < R::kRows; ++i) coeffs.v[i][l] = row[i];
+    coeffs.set_lane(l, c, r.sys.f.polar.pole, r.sys.w_break);
     axis_lanes = (axis_lanes & ~(1u << l)) | (c.axis ? 1u << l : 0u);
     ends.sign[l] = r.branch.sign;
     start_pole[l] = r.sys.f.polar.pole;
@@ -1405,28 +1549,10 @@ struct MinoPacket {
   unsigned valid_lanes(const double* y, unsigned lanes) const {
     return GEOVIS_PACKET_DISPATCH(mino_valid, target)(coeffs, y, lanes);
   }
-  /// KerrMinoSystem's constraint (on SIMD lanes: mino_constraint, kerr_mino_constraint's bits),
-  /// escaped and captured of the accepted states y (SoA) of the lanes in `lanes`. Escape and
-  /// capture are tested lane by lane, and the costly part of each (the turning-point and
-  /// Bernstein tests of the radial potential) only where its radius and direction admit it.
+  /// KerrMinoSystem's constraint, escaped and captured of the accepted states (mino_step_checks).
   void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) {
-    constexpr int W = kPacketLanes;
-    static_assert(W <= 8, "mino_constraint's candidate bits: 8 per test");
-    // The lanes past the first tests of escaped and captured, which most steps fail (SIMD, with
-    // their expressions); only those are gathered and tested here.
-    const unsigned candidates = GEOVIS_PACKET_DISPATCH(mino_constraint, target)(
-        coeffs, y, c.escape_radius, c.capture_radius, c.direction >= 0 ? -1.0 : 1.0, out.constraint,
-        out.constraint_scale);
-    const unsigned may_escape = candidates & lanes, may_be_captured = candidates >> 8 & lanes;
-    out.escaped = out.captured = 0;
-    for (unsigned todo = may_escape | may_be_captured; todo != 0; todo &= todo - 1) {
-      const int l = std::countr_zero(todo);
-      double yl[N];
-      for (int i = 0; i < N; ++i) yl[i] = y[i * W + l];
-      const KerrMinoSystem& sys = system(l);
-      if ((may_escape >> l & 1u) && sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
-      if ((may_be_captured >> l & 1u) && sys.captured(c, yl)) out.captured |= 1u << l;
-    }
+    mino_step_checks<N>(
+        target, coeffs, [this](int l) -> const KerrMinoSystem& { return system(l); }, c, y, lanes, out);
   }
   /// The BL views of the accepted steps' ends (y1, dy1: SoA), all lanes at once on SIMD lanes
   /// (kerr_mino_bl_view, the function KerrMinoRay::step evaluates per ray), on the branch each ray
@@ -1557,6 +1683,107 @@ struct MinoPacket {
   }
 };
 
+/// The Jacobi system of light rays through the Mino-time flow and its derivatives (kerr_jacobi.h),
+/// one ray (KerrMinoJacobiRay) per lane: the right-hand side, the attempt and the tolerance scales
+/// on dual numbers of SIMD lanes, the ray's own tests (validity, constraint, escape, capture) on
+/// its value rows with the Mino packet's functions (the value's w, ζ, w', z' are the layout's rows
+/// 0-3, as KerrMinoRHS's), the steps handed on lane by lane in BL Jacobi terms (bl_step, or
+/// bl_step_with_position where the caller reads the states on request).
+struct MinoJacobiPacket {
+  using J = MinoJacobiLayout;
+  static constexpr int N = J::N;
+  const Metric& metric;
+  const KerrMinoParams hole;
+  const SolverConfig& cfg_in;  ///< the caller's settings (for rays handed to metric.integrate)
+  const SolverConfig& cfg;     ///< KerrMinoRay::config(cfg_in)
+  const JacobiPacketRays& rays;
+  std::optional<KerrMinoJacobiRay> ray[kPacketLanes];
+  MinoLaneCoeffs coeffs;      ///< the value's (each ray's KerrMinoSystem): its tests and scales
+  MinoJacobiLaneCoeffs dual;  ///< with the derivatives: the right-hand side
+  /// Each lane's start state as rays.next gave it (the driver's start sees x and k only).
+  double start_state[kPacketLanes][kJacobiDim] = {};
+  size_t target = packet_target();  ///< the SIMD functions' (GEOVIS_PACKET_DISPATCH)
+
+  KerrMinoJacobiSystem& system(int l) { return ray[l]->sys; }
+  /// PacketRays::next of the driver: the next ray's whole start state kept for start().
+  bool next(int l, double* y) {
+    if (!rays.next(l, start_state[l])) return false;
+    std::memcpy(y, start_state[l], kDim * sizeof(double));
+    return true;
+  }
+  /// The ray from its start state (next); one that this path does not take (outside the metric's
+  /// validity domain, through the polar axis: KerrMinoJacobiRay::integrable) goes to
+  /// metric.integrate, as in MetricCRTP::integrate.
+  bool start(int l, const double*, double* y) {
+    const double* ys = start_state[l];
+    if (metric.is_valid(Vec4{{ys[0], ys[1], ys[2], ys[3]}})) {
+      const KerrMinoJacobiRay& r = ray[l].emplace(hole.mass, hole.a, hole.r_break, cfg, ys, 0.0, y);
+      if (r.integrable) {
+        const double pole = r.sys.ray.f.polar.pole;
+        coeffs.set_lane(l, r.c, pole, r.sys.ray.w_break);
+        const KerrMinoCoeffs<DualJ>& kd = r.sys.kd;
+        const DualJ* rows[MinoJacobiLaneCoeffs::kCoeffs] = {&kd.M,   &kd.a, &kd.a2, &kd.E, &kd.L, &kd.Q,
+                                                            &kd.mu2, &kd.c, &kd.K,  &kd.A, &kd.B};
+        for (int i = 0; i < MinoJacobiLaneCoeffs::kCoeffs; ++i) {
+          dual.v[i][0][l] = rows[i]->v;
+          dual.v[i][1][l] = rows[i]->d[0];
+          dual.v[i][2][l] = rows[i]->d[1];
+        }
+        dual.pole[l] = pole;
+        return true;
+      }
+    }
+    double yy[kMaxSystemDim] = {};
+    std::memcpy(yy, ys, kJacobiDim * sizeof(double));
+    auto cb = [&](const StepView& s) { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; };
+    const GeodesicResult res = metric.integrate(cfg_in, GeodesicSystem::Jacobi, yy, 0.0, cb);
+    rays.done(l, yy, res);
+    return false;
+  }
+  void rhs(const double* y, double* dy, unsigned) const {
+    GEOVIS_PACKET_DISPATCH(mino_jacobi_rhs, target)(dual, y, dy);
+  }
+  void tolerance_inv(double eps_abs, double eps_rel, const double* y, double* inv) const {
+    GEOVIS_PACKET_DISPATCH(mino_jacobi_tolerance, target)(coeffs, eps_abs, eps_rel, y, inv);
+  }
+  void attempt(SolverKind kind, unsigned, const LaneTolerance& tol, const double* y, const double* dy, const double* h,
+               double* y1, double* dy1, AttemptError& err) const {
+    GEOVIS_PACKET_DISPATCH(mino_jacobi_attempt, target)(kind, dual, tol, y, dy, h, y1, dy1, err);
+  }
+  /// The value's dσ/dλ, validity and checks: those of the Mino packet on the value's rows.
+  void param_per_affine_lanes(const double* y, double* out) const {
+    GEOVIS_PACKET_DISPATCH(mino_param_per_affine, target)(coeffs, y, out);
+  }
+  unsigned valid_lanes(const double* y, unsigned lanes) const {
+    return GEOVIS_PACKET_DISPATCH(mino_valid, target)(coeffs, y, lanes);
+  }
+  void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) {
+    mino_step_checks<N>(
+        target, coeffs, [this](int l) -> const KerrMinoJacobiSystem& { return system(l); }, c, y, lanes, out);
+  }
+  /// As MinoPacket's: only a state near the axis (or re-projected) may change when it is accepted;
+  /// mino_may_project reads ζ's row, which is the value's (J::at(Z, −1) = Z).
+  unsigned accepted_states_may_change(const SolverConfig& c, const double* y1, unsigned lanes) const {
+    static_assert(J::at(KerrMinoRHS::Z, -1) == KerrMinoRHS::Z);
+    if (c.reproject) return lanes;
+    return GEOVIS_PACKET_DISPATCH(mino_may_project, target)(coeffs, y1) & lanes;
+  }
+  void rebase(int l, double* y) {
+    system(l).rebase(y);
+    coeffs.v[MinoLaneCoeffs::POLE][l] = dual.pole[l] = system(l).ray.f.polar.pole;
+  }
+  StepAction step(int l, const StepView& s) {
+    if (!rays.on_step) return StepAction::Continue;
+    if (rays.states_on_request) return rays.on_step(l, ray[l]->bl_step_with_position(s));
+    return rays.on_step(l, ray[l]->bl_step(s));
+  }
+  void done(int l, const double* y, const GeodesicResult& res) {
+    double ys[kJacobiDim];
+    ray[l]->to_bl_state(y, ys);
+    rays.done(l, ys, res);
+  }
+};
+
 void require_packet_solver(const SolverConfig& cfg) {
   validate_solver_config(cfg);
   if (!packet_solver(cfg.kind))
@@ -1587,6 +1814,16 @@ void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole
   const SolverConfig mino_cfg = KerrMinoRay::config(cfg);
   MinoPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}, {}, {}};
   with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, mino_cfg, rays); });
+}
+
+void integrate_kerr_mino_jacobi_packet(const Metric& metric, const KerrMinoParams& hole, const SolverConfig& cfg,
+                                       const JacobiPacketRays& rays) {
+  require_packet_solver(cfg);
+  const SolverConfig mino_cfg = KerrMinoRay::config(cfg);
+  MinoJacobiPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}, {}, {}};
+  auto next = [&ps](int l, double* y) { return ps.next(l, y); };
+  const PacketRays lane_rays{next, {}, {}, {}, false};
+  with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, mino_cfg, lane_rays); });
 }
 
 }  // namespace geovis

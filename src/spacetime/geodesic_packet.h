@@ -87,6 +87,22 @@ struct PacketRays {
   bool states_on_request = false;
 };
 
+/// Where a packet of light rays with their Jacobi fields (RGBjac: GeodesicSystem::Jacobi) takes its
+/// rays from and hands them back, as PacketRays but with the whole Jacobi state (jacobi.h layout,
+/// kJacobiDim components) at the start and at the end, and every accepted step in that layout.
+struct JacobiPacketRays {
+  /// Writes the start state (kJacobiDim components) of the next ray for `lane`; false: none left.
+  FunctionRef<bool(int lane, double* y)> next;
+  /// Every accepted step of the ray in `lane` (may stop the ray). May be empty.
+  FunctionRef<StepAction(int lane, const StepView& step)> on_step;
+  /// The ray in `lane` ended with final state y (kJacobiDim components) and `result`.
+  FunctionRef<void(int lane, const double* y, const GeodesicResult& result)> done;
+  /// on_step reads a StepView's states only after StepView::ensure_states, and its
+  /// pseudo-Cartesian ends: the states are converted only on request
+  /// (KerrMinoJacobiRay::bl_step_with_position).
+  bool states_on_request = false;
+};
+
 /// Whether the packet integrator serves solver `kind` (the explicit embedded pairs that
 /// integrate_with<ExplicitRK<Tab>> runs: CashKarp45, Fehlberg45, DormandPrince54; and DOP853,
 /// DormandPrince853).
@@ -124,5 +140,14 @@ void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& c
 /// domain goes to metric.integrate (which stops it there). Allocates nothing.
 void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole, const SolverConfig& cfg,
                                 const PacketRays& rays);
+
+/// The Jacobi system (jacobi.h) of light rays around a hole of the Kerr family through the
+/// derivatives of the Mino-time flow (kerr_jacobi.h), one ray per lane: each ray exactly as
+/// integrate_kerr_mino_jacobi(hole.mass, hole.a, hole.r_break, cfg, y, 0, on_step) integrates it,
+/// the right-hand side on dual numbers of SIMD lanes (kerr_mino_rhs). A ray that path does not take
+/// (through the polar axis, starting outside the metric's validity domain, ...) goes to
+/// metric.integrate (the coordinate Jacobi system). Allocates nothing.
+void integrate_kerr_mino_jacobi_packet(const Metric& metric, const KerrMinoParams& hole, const SolverConfig& cfg,
+                                       const JacobiPacketRays& rays);
 
 }  // namespace geovis

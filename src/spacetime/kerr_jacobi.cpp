@@ -51,118 +51,6 @@ bool kerr_transported_screen(double M, double a, const Vec4& x0, const Vec4& k0,
 
 namespace {
 
-using DualJ = Dual<double, 2>;
-
-/// State of the Mino flow with its derivatives along two initial directions: the coupled part
-/// (w, ζ, w', z') of the value and of each derivative first, then the quadratures (t, φ, λ) of
-/// the value and of each derivative, so the Runge–Kutta stages sum only the first 12 (kCoupled).
-struct MinoJacobiLayout {
-  static constexpr int N = 21, kCoupled = 12;
-  /// Index of Mino component i (KerrMinoRHS order) of the value (f = −1) or of derivative f.
-  static constexpr int at(int i, int f) { return i < 4 ? 4 * (f + 1) + i : 12 + 3 * (f + 1) + (i - 4); }
-  static void value(const double* y, double* v) {
-    for (int i = 0; i < KerrMinoRHS::N; ++i) v[i] = y[at(i, -1)];
-  }
-};
-
-/// The Mino system with derivatives (kerr_jacobi.h) as the integration driver sees it: the
-/// right-hand side on dual numbers (kerr_mino_rhs), everything else on the value through the
-/// ray's own KerrMinoSystem, so the ray's validity, box, escape and capture are RGB's.
-struct KerrMinoJacobiSystem {
-  using L = MinoJacobiLayout;
-  using I = KerrMinoRHS;
-  static constexpr int N = L::N;
-  static constexpr int kCoupled = L::kCoupled;
-  static constexpr bool kHasConstraint = true;
-  KerrMinoSystem ray;
-  KerrMinoCoeffs<DualJ> kd;
-
-  GEOVIS_HOT_INLINE void operator()(const double* y, double* dy) const {
-    DualJ yd[I::N], dyd[I::N];
-    for (int i = 0; i < I::N; ++i) {
-      yd[i].v = y[L::at(i, -1)];
-      yd[i].d[0] = y[L::at(i, 0)];
-      yd[i].d[1] = y[L::at(i, 1)];
-    }
-    kerr_mino_rhs(kd, false, ray.f.polar.pole, yd, dyd);
-    for (int i = 0; i < I::N; ++i) {
-      dy[L::at(i, -1)] = dyd[i].v;
-      dy[L::at(i, 0)] = dyd[i].d[0];
-      dy[L::at(i, 1)] = dyd[i].d[1];
-    }
-  }
-  double affine(const double* y) const { return y[L::at(I::LAM, -1)]; }
-  double param_per_affine(const double* y) const {
-    double v[I::N];
-    L::value(y, v);
-    return ray.param_per_affine(v);
-  }
-  /// The ray's components as in KerrMinoSystem (local errors of the BL x and k); each derivative f
-  /// in the same BL units relative to its own size max(1, max_i |V_f,i|/s_i), as the coordinate
-  /// Jacobi system holds its fields (jacobi.cpp JacobiSystem): what J needs is a relative accuracy.
-  void tolerance_inv_scale(const double* y, double* is) const {
-    double v[I::N], iv[I::N];
-    L::value(y, v);
-    ray.tolerance_inv_scale(v, iv);
-    for (int i = 0; i < I::N; ++i) is[L::at(i, -1)] = iv[i];
-    for (int f = 0; f < 2; ++f) {
-      double size = 1.0;
-      for (int i = 0; i < I::N; ++i) size = std::max(size, std::fabs(y[L::at(i, f)]) * iv[i]);
-      const double inv = 1.0 / size;
-      for (int i = 0; i < I::N; ++i) is[L::at(i, f)] = iv[i] * inv;
-    }
-  }
-  /// The ray's projection onto z'² = Z (kerr_mino.h); it moves the value by far less than the
-  /// tolerance, the derivatives keep theirs.
-  bool project_invariants(double* y) const {
-    double v[I::N];
-    L::value(y, v);
-    if (!ray.project_invariants(v)) return false;
-    y[L::at(I::Z, -1)] = v[I::Z];
-    y[L::at(I::DZ, -1)] = v[I::DZ];
-    return true;
-  }
-  bool valid(const double* y) const {
-    double v[I::N];
-    L::value(y, v);
-    return ray.valid(v);
-  }
-  bool escaped(const SolverConfig& c, const double* y, double& radius) const {
-    double v[I::N];
-    L::value(y, v);
-    return ray.escaped(c, v, radius);
-  }
-  bool captured(const SolverConfig& c, const double* y) const {
-    double v[I::N];
-    L::value(y, v);
-    return ray.captured(c, v);
-  }
-  /// Crossing the equator re-bases ζ (kerr_mino.h); δζ = δz is unchanged.
-  void rebase(double* y) {
-    double v[I::N];
-    L::value(y, v);
-    ray.rebase(v);
-    y[L::at(I::Z, -1)] = v[I::Z];
-  }
-  bool inside(const SolverConfig& c, const double* y) const {
-    double v[I::N];
-    L::value(y, v);
-    return ray.inside(c, v);
-  }
-  void constraint(const double* y, GeodesicType t, double& value, double& scale) const {
-    double v[I::N];
-    L::value(y, v);
-    ray.constraint(v, t, value, scale);
-  }
-  void reproject(double* y, GeodesicType t) const {
-    double v[I::N];
-    L::value(y, v);
-    ray.reproject(v, t);
-    y[L::at(I::DW, -1)] = v[I::DW];
-    y[L::at(I::DZ, -1)] = v[I::DZ];
-  }
-};
-
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The BL Jacobi state (jacobi.h layout) and its λ-derivative of Mino state y with σ-derivative
@@ -204,29 +92,28 @@ void to_bl_jacobi(const KerrMinoConstants& c, const PolarOffset& polar, const Th
 
 }  // namespace
 
-bool integrate_kerr_mino_jacobi(double M, double a, double r_break, const SolverConfig& cfg_in, double* y_io,
-                                double lambda0, StepCallback cb, GeodesicResult& res) {
+KerrMinoJacobiRay::KerrMinoJacobiRay(double M, double a, double r_break, const SolverConfig& cfg, const double* y_bl,
+                                     double lambda0, double* y)
+    : x0{{y_bl[0], y_bl[1], y_bl[2], y_bl[3]}},
+      k0{{y_bl[4], y_bl[5], y_bl[6], y_bl[7]}},
+      s0{Vec4{{y_bl[kJacobiS1], y_bl[kJacobiS1 + 1], y_bl[kJacobiS1 + 2], y_bl[kJacobiS1 + 3]}},
+         Vec4{{y_bl[kJacobiS2], y_bl[kJacobiS2 + 1], y_bl[kJacobiS2 + 2], y_bl[kJacobiS2 + 3]}}},
+      sys{KerrMinoSystem{c, KerrMinoRHS{c, PolarOffset{}}, 1.0 / r_break}, {}} {
   using L = MinoJacobiLayout;
   using I = KerrMinoRHS;
   // The Walker–Penrose constant is that of null geodesics; the fields must start at zero.
-  if (cfg_in.type != GeodesicType::Lightlike) return false;
+  if (cfg.type != GeodesicType::Lightlike) return;
   for (int i = 0; i < 4; ++i)
-    if (y_io[kJacobiY1 + i] != 0.0 || y_io[kJacobiY2 + i] != 0.0) return false;
-  SolverConfig cfg = cfg_in;
-  if (!cfg_in.step_max_separable) cfg.step_max = SolverConfig{}.step_max;
-  const Vec4 x0{{y_io[0], y_io[1], y_io[2], y_io[3]}};
-  const Vec4 k0{{y_io[4], y_io[5], y_io[6], y_io[7]}};
-  const Vec4 s0[2] = {Vec4{{y_io[kJacobiS1], y_io[kJacobiS1 + 1], y_io[kJacobiS1 + 2], y_io[kJacobiS1 + 3]}},
-                      Vec4{{y_io[kJacobiS2], y_io[kJacobiS2 + 1], y_io[kJacobiS2 + 2], y_io[kJacobiS2 + 3]}}};
+    if (y_bl[kJacobiY1 + i] != 0.0 || y_bl[kJacobiY2 + i] != 0.0) return;
   const double mu2 = -constraint_target(cfg.type);
-  const KerrMinoConstants c = kerr_mino_constants(M, a, x0, k0, mu2);
-  if (c.axis) return false;
+  c = kerr_mino_constants(M, a, x0, k0, mu2);
+  if (c.axis) return;
+  integrable = true;
 
   // Value: the ray's own Mino state and constants, bit for bit those of integrate_kerr_mino.
-  double y[L::N], v[I::N];
-  const PolarOffset polar0 = kerr_mino_from_bl(c, x0, k0, lambda0, v);
+  double v[I::N];
+  sys.ray.f.polar = kerr_mino_from_bl(c, x0, k0, lambda0, v);
   for (int i = 0; i < I::N; ++i) y[L::at(i, -1)] = v[i];
-  KerrMinoJacobiSystem sys{KerrMinoSystem{c, KerrMinoRHS{c, polar0}, 1.0 / r_break}, {}};
   KerrMinoCoeffs<DualJ>& kd = sys.kd;
   kd.M = M;
   kd.a = a;
@@ -241,8 +128,8 @@ bool integrate_kerr_mino_jacobi(double M, double a, double r_break, const Solver
   const double st = std::sin(x0[2]), ct = std::cos(x0[2]);
   const double sigma0 = x0[1] * x0[1] + a * a * ct * ct;
   for (int f = 0; f < 2; ++f) {
-    const Vec4 dk{{y_io[kJacobiDY1 + 8 * f], y_io[kJacobiDY1 + 8 * f + 1], y_io[kJacobiDY1 + 8 * f + 2],
-                   y_io[kJacobiDY1 + 8 * f + 3]}};
+    const Vec4 dk{{y_bl[kJacobiDY1 + 8 * f], y_bl[kJacobiDY1 + 8 * f + 1], y_bl[kJacobiDY1 + 8 * f + 2],
+                   y_bl[kJacobiDY1 + 8 * f + 3]}};
     const KerrMinoConstants dc = kerr_mino_constants(M, a, x0, dk, mu2);
     kd.E.d[f] = dc.E;
     kd.L.d[f] = dc.L;
@@ -255,35 +142,94 @@ bool integrate_kerr_mino_jacobi(double M, double a, double r_break, const Solver
     y[L::at(I::DZ, f)] = dv[I::DZ];
   }
   kd.derive_polynomial();
-
-  ThetaBranch branch = ThetaBranch::through(x0[2]);
+  branch = ThetaBranch::through(x0[2]);
   sys.ray.set_box(cfg, branch);
-  double bl0[kJacobiDim], bl1[kJacobiDim], dbl0[kJacobiDim], dbl1[kJacobiDim], p0[3], p1[3];
-  bool have0 = false;
-  auto on_step = [&](const StepView& st_) -> StepAction {
-    if (!have0) to_bl_jacobi(c, sys.ray.f.polar, branch, st_.y0, st_.dy0, bl0, dbl0, p0);
-    to_bl_jacobi(c, sys.ray.f.polar, branch, st_.y1, st_.dy1, bl1, dbl1, p1);
-    const StepAction act =
-        cb(StepView{st_.lambda0, st_.lambda1, bl0, bl1, dbl0, dbl1, kJacobiDim, st_.step_index, p0, p1});
-    std::copy(bl1, bl1 + kJacobiDim, bl0);
-    std::copy(dbl1, dbl1 + kJacobiDim, dbl0);
-    std::copy(p1, p1 + 3, p0);
-    have0 = true;
-    return act;
-  };
-  res = cb ? integrate_dispatch(sys, cfg, y, lambda0, on_step) : integrate_dispatch(sys, cfg, y, lambda0, {});
-  double dy[L::N];
+}
+
+StepView KerrMinoJacobiRay::bl_step(const StepView& s) {
+  const int end = start_ ^ 1;
+  if (!have0_) to_bl_jacobi(c, sys.ray.f.polar, branch, s.y0, s.dy0, bl_[start_], dbl_[start_], p_[start_]);
+  to_bl_jacobi(c, sys.ray.f.polar, branch, s.y1, s.dy1, bl_[end], dbl_[end], p_[end]);
+  converted_[start_] = converted_[end] = true;
+  const StepView bl{s.lambda0, s.lambda1,  bl_[start_],  bl_[end],   dbl_[start_],
+                    dbl_[end], kJacobiDim, s.step_index, p_[start_], p_[end]};
+  start_ = end;
+  have0_ = true;
+  return bl;
+}
+
+StepView KerrMinoJacobiRay::bl_step_with_position(const StepView& s) {
+  using L = MinoJacobiLayout;
+  using I = KerrMinoRHS;
+  const int end = start_ ^ 1;
+  double v[I::N];
+  if (!have0_) {
+    L::value(s.y0, v);
+    pole_[start_] = sys.ray.f.polar.pole;
+    zeta_[start_] = v[I::Z];
+    converted_[start_] = false;
+    kerr_mino_position<double>(pole_[start_], branch.sign, v, p_[start_]);
+  }
+  L::value(s.y1, v);
+  pole_[end] = sys.ray.f.polar.pole;
+  zeta_[end] = v[I::Z];
+  converted_[end] = false;
+  kerr_mino_position<double>(pole_[end], branch.sign, v, p_[end]);
+  mino_states_[0] = s.y0;
+  mino_states_[1] = s.dy0;
+  mino_states_[2] = s.y1;
+  mino_states_[3] = s.dy1;
+  StepView bl{s.lambda0, s.lambda1,  bl_[start_],  bl_[end],   dbl_[start_],
+              dbl_[end], kJacobiDim, s.step_index, p_[start_], p_[end]};
+  bl.fill_states = &fill_views;
+  bl.fill_context = this;
+  start_ = end;
+  have0_ = true;
+  return bl;
+}
+
+void KerrMinoJacobiRay::fill_views(const void* context) {
+  using L = MinoJacobiLayout;
+  using I = KerrMinoRHS;
+  // Called during the step's callback: start_ is already the step's end.
+  KerrMinoJacobiRay& r = *const_cast<KerrMinoJacobiRay*>(static_cast<const KerrMinoJacobiRay*>(context));
+  for (const int end : {0, 1}) {
+    const int slot = end ? r.start_ : r.start_ ^ 1;
+    if (r.converted_[slot]) continue;
+    double y[L::N];
+    std::copy(r.mino_states_[2 * end], r.mino_states_[2 * end] + L::N, y);
+    y[L::at(I::Z, -1)] = r.zeta_[slot];  // the start: before the re-basing after the previous step
+    PolarOffset polar;
+    polar.pole = r.pole_[slot];
+    to_bl_jacobi(r.c, polar, r.branch, y, r.mino_states_[2 * end + 1], r.bl_[slot], r.dbl_[slot]);
+    r.converted_[slot] = true;
+  }
+}
+
+void KerrMinoJacobiRay::to_bl_state(const double* y, double* y_bl) const {
+  double dy[MinoJacobiLayout::N], bl[kJacobiDim], dbl[kJacobiDim];
   sys(y, dy);
-  to_bl_jacobi(c, sys.ray.f.polar, branch, y, dy, bl1, dbl1);
+  to_bl_jacobi(c, sys.ray.f.polar, branch, y, dy, bl, dbl);
   Vec4 s[2];
-  if (!kerr_transported_screen(M, a, x0, k0, s0, Vec4{{bl1[0], bl1[1], bl1[2], bl1[3]}},
-                               Vec4{{bl1[4], bl1[5], bl1[6], bl1[7]}}, s))
+  if (!kerr_transported_screen(c.M, c.a, x0, k0, s0, Vec4{{bl[0], bl[1], bl[2], bl[3]}},
+                               Vec4{{bl[4], bl[5], bl[6], bl[7]}}, s))
     s[0] = s[1] = Vec4{{kNaN, kNaN, kNaN, kNaN}};
   for (int i = 0; i < 4; ++i) {
-    bl1[kJacobiS1 + i] = s[0][i];
-    bl1[kJacobiS2 + i] = s[1][i];
+    bl[kJacobiS1 + i] = s[0][i];
+    bl[kJacobiS2 + i] = s[1][i];
   }
-  std::copy(bl1, bl1 + kJacobiDim, y_io);
+  std::copy(bl, bl + kJacobiDim, y_bl);
+}
+
+bool integrate_kerr_mino_jacobi(double M, double a, double r_break, const SolverConfig& cfg_in, double* y_io,
+                                double lambda0, StepCallback cb, GeodesicResult& res) {
+  const SolverConfig cfg = KerrMinoRay::config(cfg_in);
+  double y[MinoJacobiLayout::N];
+  KerrMinoJacobiRay ray(M, a, r_break, cfg, y_io, lambda0, y);
+  if (!ray.integrable) return false;
+  auto on_step = [&](const StepView& s) { return cb(ray.bl_step(s)); };
+  res = cb ? integrate_dispatch(ray.sys, cfg, y, lambda0, on_step) : integrate_dispatch(ray.sys, cfg, y, lambda0, {});
+  ray.to_bl_state(y, y_io);
   return true;
 }
 

@@ -40,9 +40,14 @@
 // derivative with respect to L does not vanish: they keep the coordinate Jacobi system.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <complex>
 
+#include "spacetime/dual.h"
 #include "spacetime/geodesic.h"
+#include "spacetime/jacobi.h"
+#include "spacetime/kerr_mino.h"
 #include "spacetime/vec.h"
 
 namespace geovis {
@@ -56,6 +61,175 @@ std::complex<double> walker_penrose(double a, const Vec4& x, const Vec4& k, cons
 /// screen basis is degenerate (a principal null ray) or not finite.
 bool kerr_transported_screen(double M, double a, const Vec4& x0, const Vec4& k0, const Vec4 (&s0)[2], const Vec4& x,
                              const Vec4& k, Vec4 (&s)[2]);
+
+/// The dual numbers of the Jacobi fields: one derivative slot per field.
+using DualJ = Dual<double, 2>;
+
+/// State of the Mino flow with its derivatives along two initial directions: the coupled part
+/// (w, ζ, w', z') of the value and of each derivative first, then the quadratures (t, φ, λ) of
+/// the value and of each derivative, so the Runge–Kutta stages sum only the first 12 (kCoupled).
+struct MinoJacobiLayout {
+  static constexpr int N = 21, kCoupled = 12;
+  /// Index of Mino component i (KerrMinoRHS order) of the value (f = −1) or of derivative f.
+  static constexpr int at(int i, int f) { return i < 4 ? 4 * (f + 1) + i : 12 + 3 * (f + 1) + (i - 4); }
+  static void value(const double* y, double* v) {
+    for (int i = 0; i < KerrMinoRHS::N; ++i) v[i] = y[at(i, -1)];
+  }
+};
+
+/// The Mino system with derivatives (file comment) as the integration driver sees it: the
+/// right-hand side on dual numbers (kerr_mino_rhs), everything else on the value through the
+/// ray's own KerrMinoSystem, so the ray's validity, box, escape and capture are RGB's.
+struct KerrMinoJacobiSystem {
+  using L = MinoJacobiLayout;
+  using I = KerrMinoRHS;
+  static constexpr int N = L::N;
+  static constexpr int kCoupled = L::kCoupled;
+  static constexpr bool kHasConstraint = true;
+  /// λ of the state: the value's λ component (the packet driver reads it in place, integrate_lanes).
+  static constexpr int kAffineIndex = L::at(KerrMinoRHS::LAM, -1);
+  KerrMinoSystem ray;
+  KerrMinoCoeffs<DualJ> kd;
+
+  GEOVIS_HOT_INLINE void operator()(const double* y, double* dy) const {
+    DualJ yd[I::N], dyd[I::N];
+    for (int i = 0; i < I::N; ++i) {
+      yd[i].v = y[L::at(i, -1)];
+      yd[i].d[0] = y[L::at(i, 0)];
+      yd[i].d[1] = y[L::at(i, 1)];
+    }
+    kerr_mino_rhs(kd, false, ray.f.polar.pole, yd, dyd);
+    for (int i = 0; i < I::N; ++i) {
+      dy[L::at(i, -1)] = dyd[i].v;
+      dy[L::at(i, 0)] = dyd[i].d[0];
+      dy[L::at(i, 1)] = dyd[i].d[1];
+    }
+  }
+  double affine(const double* y) const { return y[kAffineIndex]; }
+  double param_per_affine(const double* y) const {
+    double v[I::N];
+    L::value(y, v);
+    return ray.param_per_affine(v);
+  }
+  /// The ray's components as in KerrMinoSystem (local errors of the BL x and k); each derivative f
+  /// in the same BL units relative to its own size max(1, max_i |V_f,i|/s_i), as the coordinate
+  /// Jacobi system holds its fields (jacobi.cpp JacobiSystem): what J needs is a relative accuracy.
+  void tolerance_inv_scale(const double* y, double* is) const {
+    double v[I::N], iv[I::N];
+    L::value(y, v);
+    ray.tolerance_inv_scale(v, iv);
+    for (int i = 0; i < I::N; ++i) is[L::at(i, -1)] = iv[i];
+    for (int f = 0; f < 2; ++f) {
+      double size = 1.0;
+      for (int i = 0; i < I::N; ++i) size = std::max(size, std::fabs(y[L::at(i, f)]) * iv[i]);
+      const double inv = 1.0 / size;
+      for (int i = 0; i < I::N; ++i) is[L::at(i, f)] = iv[i] * inv;
+    }
+  }
+  /// The ray's projection onto z'² = Z (kerr_mino.h); it moves the value by far less than the
+  /// tolerance, the derivatives keep theirs.
+  bool project_invariants(double* y) const {
+    double v[I::N];
+    L::value(y, v);
+    if (!ray.project_invariants(v)) return false;
+    y[L::at(I::Z, -1)] = v[I::Z];
+    y[L::at(I::DZ, -1)] = v[I::DZ];
+    return true;
+  }
+  bool valid(const double* y) const {
+    double v[I::N];
+    L::value(y, v);
+    return ray.valid(v);
+  }
+  bool escaped(const SolverConfig& c, const double* y, double& radius) const {
+    double v[I::N];
+    L::value(y, v);
+    return ray.escaped(c, v, radius);
+  }
+  bool captured(const SolverConfig& c, const double* y) const {
+    double v[I::N];
+    L::value(y, v);
+    return ray.captured(c, v);
+  }
+  /// Crossing the equator re-bases ζ (kerr_mino.h); δζ = δz is unchanged.
+  void rebase(double* y) {
+    double v[I::N];
+    L::value(y, v);
+    ray.rebase(v);
+    y[L::at(I::Z, -1)] = v[I::Z];
+  }
+  bool inside(const SolverConfig& c, const double* y) const {
+    double v[I::N];
+    L::value(y, v);
+    return ray.inside(c, v);
+  }
+  void constraint(const double* y, GeodesicType t, double& value, double& scale) const {
+    double v[I::N];
+    L::value(y, v);
+    ray.constraint(v, t, value, scale);
+  }
+  void reproject(double* y, GeodesicType t) const {
+    double v[I::N];
+    L::value(y, v);
+    ray.reproject(v, t);
+    y[L::at(I::DW, -1)] = v[I::DW];
+    y[L::at(I::DZ, -1)] = v[I::DZ];
+  }
+};
+
+/// One light ray's Jacobi system through the Mino-time flow as its integrator's caller sees it
+/// (integrate_kerr_mino_jacobi, and each lane of the packet integrator, geodesic_packet.h): the
+/// constants of the ray and their derivatives, its system, the Boyer–Lindquist Jacobi state of
+/// each accepted step and the final state with the transported screen. The system refers to the
+/// constants and the θ branch: constructed in place, never copied.
+struct KerrMinoJacobiRay {
+  /// The ray of BL Jacobi state y_bl (jacobi.h layout) at λ = lambda0 around the hole (M, a,
+  /// r_break); cfg as KerrMinoRay::config gives it. Where `integrable`, its Mino state with the
+  /// derivatives is in y (MinoJacobiLayout::N components); else (rays through the polar axis,
+  /// fields that do not start at zero, geodesics that are not light rays) nothing is set and the
+  /// caller integrates the coordinate Jacobi system.
+  KerrMinoJacobiRay(double M, double a, double r_break, const SolverConfig& cfg, const double* y_bl, double lambda0,
+                    double* y);
+  KerrMinoJacobiRay(const KerrMinoJacobiRay&) = delete;
+  KerrMinoJacobiRay& operator=(const KerrMinoJacobiRay&) = delete;
+
+  bool integrable = false;
+  Vec4 x0, k0, s0[2];  ///< the start event, tangent and screen
+  KerrMinoConstants c;
+  ThetaBranch branch;
+  KerrMinoJacobiSystem sys;
+
+  /// The accepted Mino step s (MinoJacobiLayout states) in BL Jacobi terms (jacobi.h layout, the
+  /// slots this path does not compute NaN), with the pseudo-Cartesian positions of its ends; the
+  /// view of its start is that of the previous step's end. Valid until the next step.
+  StepView bl_step(const StepView& s);
+  /// bl_step for a caller that reads the states of a step only on request (StepView::
+  /// ensure_states; JacobiPacketRays::states_on_request): the pseudo-Cartesian positions of its
+  /// ends at once (kerr_mino_position, the bits of bl_step's), the BL Jacobi states of its ends
+  /// converted only on request, and then as bl_step converts them: the start on the polar offset
+  /// and ζ it had as the previous step's end, before a re-basing (KerrMinoSystem::rebase). Why:
+  /// the renderer tests few chords against the scene (most lie in its empty ball or beyond its
+  /// bounds: render/segment_cull.h), and converting every step's end was 8 % of RGBjac's
+  /// instructions on the Kerr disk (callgrind at 100x100: kerr_mino_to_bl and to_bl_jacobi, 125
+  /// of 1532 M, issue 13). s's states are kept by reference until the callback returns.
+  StepView bl_step_with_position(const StepView& s);
+  /// The BL Jacobi state (jacobi.h layout, with the transported screen s_a) of the final Mino
+  /// state y to y_bl.
+  void to_bl_state(const double* y, double* y_bl) const;
+
+ private:
+  /// StepView::fill_states of bl_step_with_position: the views of the step's ends not converted yet.
+  static void fill_views(const void* ray);
+  /// The views of the ends of the steps: BL Jacobi state, its λ-derivative, position; where they
+  /// are converted on request, whether they are (converted_) and the polar offset and ζ of their
+  /// Mino state at their step (before a re-basing).
+  double bl_[2][kJacobiDim], dbl_[2][kJacobiDim], p_[2][3];
+  double pole_[2] = {}, zeta_[2] = {};
+  bool converted_[2] = {};
+  int start_ = 0;
+  bool have0_ = false;
+  const double* mino_states_[4] = {};  ///< y0, dy0, y1, dy1 of the step (bl_step_with_position)
+};
 
 /// The Jacobi system (jacobi.h layout, 32 components in BL, y_io updated in place) through the
 /// Mino-time flow and its derivatives (file comment), same SolverConfig meaning as

@@ -123,6 +123,8 @@ void Metric::integrate_packet(const SolverConfig&, const PacketRays&) const {
   throw Error("metric " + info().name + ": no packet integrator");
 }
 
+bool Metric::integrate_jacobi_packet(const SolverConfig&, const JacobiPacketRays&) const { return false; }
+
 bool Metric::is_valid(const Vec4& x) const {
   for (int i = 0; i < 4; ++i)
     if (!std::isfinite(x[i])) return false;

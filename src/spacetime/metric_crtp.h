@@ -198,6 +198,16 @@ class MetricCRTP : public Metric {
     integrate_geodesic_packet(MetricKernel::of(self()), cfg, rays);
   }
 
+  bool integrate_jacobi_packet(const SolverConfig& cfg, const JacobiPacketRays& rays) const override {
+    if constexpr (kSeparable) {
+      if (cfg.separable) {
+        integrate_kerr_mino_jacobi_packet(*this, self().kerr_mino_params(), cfg, rays);
+        return true;
+      }
+    }
+    return false;
+  }
+
  protected:
   const M& self() const { return static_cast<const M&>(*this); }
 };

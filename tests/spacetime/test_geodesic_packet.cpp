@@ -60,6 +60,7 @@ HWY_AFTER_NAMESPACE();
 #include "spacetime/fast_math.h"
 #include "spacetime/geodesic_packet.h"
 #include "spacetime/integrators.h"
+#include "spacetime/jacobi.h"
 #include "spacetime/metric.h"
 #include "spacetime/metric_registry.h"
 
@@ -553,6 +554,163 @@ TEST(GeodesicPacket, MinoTimeAxisBoxLambdaMaxAndStepMax) {
   y0.push_back({0, 1.5, 1.0, 0.0, -1.0, 0.1, 0.0, 0.0});  // inside the horizon r = 2
   for_every_target([&] { expect_packet_equals_scalar(*s, cfg, y0); });
   for_every_target([&] { expect_packet_equals_scalar(*m, cfg, fan(*m, 13)); });
+}
+
+// The Jacobi system of Kerr (a = 0.9) and Schwarzschild light rays through the derivatives of the
+// Mino-time flow on SIMD lanes (Metric::integrate_jacobi_packet: integrate_kerr_mino_jacobi_packet):
+// every lane is the scalar integrate_kerr_mino_jacobi of its ray (through Metric::integrate) to
+// the bit — its steps in BL Jacobi terms (the slots that path leaves NaN included), their
+// pseudo-Cartesian ends, λ, the final state with the transported screen, steps, rejections,
+// right-hand-side evaluations and stop reason — with each tableau the packets serve, on every
+// target; rays stopped by their step callback (the renderer's hit) and rays through the polar axis
+// (L = 0: the coordinate Jacobi system, as in Metric::integrate) among them. The value part is
+// that of the geodesic (KerrJacobi.TheRayIsTheGeodesicsBitForBit) and J that of the independent
+// coordinate system (KerrJacobi.MinoFlowDerivativesGiveTheCoordinateJacobiMatrix): bit identity
+// with the scalar path carries both over to the lanes.
+TEST(GeodesicPacket, KerrJacobiLanesAreTheScalarMinoJacobi) {
+  struct JacobiRecord {
+    std::vector<double> steps;  // per step: λ0, λ1, index, y0, y1, dy0, dy1 (32 each), p0, p1
+    double y[kJacobiDim] = {};
+    GeodesicResult res;
+    int stop_at = 0;
+  };
+  auto record = [](JacobiRecord& r, const StepView& st) {
+    EXPECT_EQ(st.dim, kJacobiDim);
+    r.steps.insert(r.steps.end(), {st.lambda0, st.lambda1, double(st.step_index)});
+    for (const double* v : {st.y0, st.y1, st.dy0, st.dy1}) r.steps.insert(r.steps.end(), v, v + kJacobiDim);
+    for (const double* p : {st.p0, st.p1}) {
+      if (p)
+        r.steps.insert(r.steps.end(), p, p + 3);
+      else
+        r.steps.push_back(-1.0);
+    }
+    return st.step_index == r.stop_at ? StepAction::Stop : StepAction::Continue;
+  };
+  for (const double spin : {0.9, 0.0}) {
+    SCOPED_TRACE(spin != 0.0 ? "KerrBL a = 0.9" : "Schwarzschild");
+    const auto m = spin != 0.0 ? make_metric("KerrBL", {{"mass", 1.0}, {"angmom", spin}})
+                               : make_metric("Schwarzschild", {{"mass", 1.0}});
+    // A fan of 21 directions from an observer at r = 30 (into the hole, past the photon sphere,
+    // out to the escape radius), and one ray in the (r, θ) plane of the tetrad (L = 0) from r = 20.
+    std::vector<std::array<double, kJacobiDim>> y0;
+    const Vec4 x{{0, 30, 1.2, 0.3}};
+    const Tetrad e = m->natural_tetrad(x, TetradKind::Default);
+    for (int i = 0; i < 21; ++i) {
+      const double z = 1.0 - (2.0 * i + 1.0) / 21, rho = std::sqrt(1.0 - z * z), phi = 2.399963229728653 * i;
+      std::array<double, kJacobiDim> y;
+      // Mostly towards the hole (−x of the tetrad), so that many rays pass it closely.
+      jacobi_initial_state(x, e, Vec3{-1.0 - 2.0 * rho * std::cos(phi), rho * std::sin(phi), z}, y.data());
+      y0.push_back(y);
+    }
+    const Vec4 xa{{0, 20, 0.7, 0.4}};
+    std::array<double, kJacobiDim> ya;
+    jacobi_initial_state(xa, m->natural_tetrad(xa, TetradKind::Default), Vec3{-1, 0.3, 0}, ya.data());
+    y0.push_back(ya);
+    const size_t n = y0.size();
+    SolverConfig cfg;
+    cfg.separable = true;
+    cfg.eps_abs = 1e-8;
+    cfg.max_steps = 3000;
+    cfg.lambda_max = 120.0;
+    cfg.escape_radius = 40.0;
+    cfg.capture_radius = 2.5;
+    int mino_rays = 0;
+    for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::DormandPrince54, SolverKind::DormandPrince853}) {
+      SCOPED_TRACE(solver_kind_name(kind));
+      cfg.kind = kind;
+      std::vector<JacobiRecord> scalar(n);
+      for (size_t r = 0; r < n; ++r) {
+        scalar[r].stop_at = r % 4 == 1 ? 12 + static_cast<int>(r) : 0;
+        double y[kMaxSystemDim] = {};
+        std::copy(y0[r].begin(), y0[r].end(), y);
+        auto cb = [&](const StepView& st) { return record(scalar[r], st); };
+        scalar[r].res = m->integrate(cfg, GeodesicSystem::Jacobi, y, 0.0, cb);
+        std::copy(y, y + kJacobiDim, scalar[r].y);
+        // The Mino-time path gives the steps' pseudo-Cartesian ends, the coordinate one does not.
+        if (scalar[r].res.steps > 0 && scalar[r].steps[3 + 4 * kJacobiDim] != -1.0) ++mino_rays;
+      }
+      for_every_target([&] {
+        std::vector<JacobiRecord> packet(n);
+        for (size_t r = 0; r < n; ++r) packet[r].stop_at = scalar[r].stop_at;
+        size_t next_ray = 0, finished = 0;
+        int lane_ray[kPacketLanes];
+        auto next = [&](int lane, double* y) {
+          if (next_ray == n) return false;
+          lane_ray[lane] = static_cast<int>(next_ray);
+          std::copy(y0[next_ray].begin(), y0[next_ray].end(), y);
+          ++next_ray;
+          return true;
+        };
+        auto on_step = [&](int lane, const StepView& st) { return record(packet[lane_ray[lane]], st); };
+        auto done = [&](int lane, const double* y, const GeodesicResult& res) {
+          JacobiRecord& r = packet[lane_ray[lane]];
+          std::copy(y, y + kJacobiDim, r.y);
+          r.res = res;
+          ++finished;
+        };
+        ASSERT_TRUE(m->integrate_jacobi_packet(cfg, JacobiPacketRays{next, on_step, done}));
+        ASSERT_EQ(finished, n);
+        for (size_t r = 0; r < n; ++r) {
+          SCOPED_TRACE("ray " + std::to_string(r));
+          const JacobiRecord &a = scalar[r], &b = packet[r];
+          EXPECT_EQ(stop_reason_name(b.res.reason), std::string(stop_reason_name(a.res.reason)));
+          EXPECT_EQ(b.res.steps, a.res.steps);
+          EXPECT_EQ(b.res.rejected, a.res.rejected);
+          EXPECT_EQ(b.res.rhs_evals, a.res.rhs_evals);
+          EXPECT_TRUE(same_bits(b.res.lambda, a.res.lambda)) << b.res.lambda << " vs " << a.res.lambda;
+          EXPECT_TRUE(same_bits(b.res.constraint_drift, a.res.constraint_drift));
+          EXPECT_TRUE(same_bits(b.res.escape_radius, a.res.escape_radius));
+          for (int i = 0; i < kJacobiDim; ++i)
+            EXPECT_TRUE(same_bits(b.y[i], a.y[i])) << "y[" << i << "] " << b.y[i] << " vs " << a.y[i];
+          ASSERT_EQ(b.steps.size(), a.steps.size());
+          EXPECT_EQ(std::memcmp(a.steps.data(), b.steps.data(), a.steps.size() * sizeof(double)), 0);
+        }
+        // The states on request (JacobiPacketRays::states_on_request, as the renderer asks for
+        // them): asked for at every third step only, so that the step's start is a view left
+        // unconverted at the step before (across re-basings at the equator, too), the step is the
+        // scalar one to the bit.
+        std::vector<JacobiRecord> on_request(n);
+        for (size_t r = 0; r < n; ++r) on_request[r].stop_at = scalar[r].stop_at;
+        next_ray = finished = 0;
+        auto on_step_on_request = [&](int lane, const StepView& st) {
+          JacobiRecord& r = on_request[lane_ray[lane]];
+          if (st.step_index % 3 != 0) return st.step_index == r.stop_at ? StepAction::Stop : StepAction::Continue;
+          st.ensure_states();
+          return record(r, st);
+        };
+        auto done_on_request = [&](int, const double*, const GeodesicResult&) { ++finished; };
+        ASSERT_TRUE(m->integrate_jacobi_packet(cfg, JacobiPacketRays{next, on_step_on_request, done_on_request, true}));
+        ASSERT_EQ(finished, n);
+        for (size_t r = 0; r < n; ++r) {
+          SCOPED_TRACE("ray " + std::to_string(r) + ", states on request");
+          const JacobiRecord &a = scalar[r], &b = on_request[r];
+          const size_t per_step = a.steps.size() / std::max(a.res.steps, 1);
+          // The Mino path's steps, all of one size (the coordinate path gives no positions).
+          if (a.steps.empty() || a.steps[3 + 4 * kJacobiDim] == -1.0) continue;
+          ASSERT_EQ(b.steps.size(), per_step * (a.res.steps / 3));
+          for (size_t j = 0; j < b.steps.size() / per_step; ++j) {
+            const size_t s = 3 * (j + 1) - 1;  // 0-based index of step 3(j + 1)
+            EXPECT_EQ(std::memcmp(a.steps.data() + s * per_step, b.steps.data() + j * per_step,
+                                  per_step * sizeof(double)),
+                      0)
+                << "step " << s + 1;
+          }
+        }
+      });
+    }
+    // The Mino-time path took every ray but two, which have no φ component in the tetrad (the
+    // fan's middle one, z = 0, and the last one): L = 0 for the static observer of Schwarzschild
+    // and for KerrBL's locally non-rotating frame, whose e_(0) has no angular momentum. Those went
+    // to the coordinate system, in the packet as in Metric::integrate.
+    EXPECT_EQ(mino_rays, 3 * (static_cast<int>(n) - 2));
+  }
+  // No packet path: the coordinate form (separable off) and metrics without Carter's equations.
+  SolverConfig coordinate;
+  coordinate.separable = false;
+  auto next = [](int, double*) { return false; };
+  auto done = [](int, const double*, const GeodesicResult&) {};
+  EXPECT_FALSE(make_metric("KerrBL")->integrate_jacobi_packet(coordinate, JacobiPacketRays{next, {}, done}));
+  EXPECT_FALSE(make_metric("Minkowski")->integrate_jacobi_packet(SolverConfig{}, JacobiPacketRays{next, {}, done}));
 }
 
 // Fixed step (no error control), λ_max clipping and a bounding box, on KerrBL's coordinate form.
