@@ -105,7 +105,7 @@ TEST_F(DataExr, ChannelsMissesAndHeader) {
   const RenderJob j = job();
   const RenderResult r = render_quiet(j);
   ASSERT_EQ(r.data.size(), size_t(24 * 16));  // --data without a data filter keeps the data
-  DataFileInfo info{"9.9.9", "scene.scm", "0123456789abcdef", "incl=70", 3};
+  DataFileInfo info{"9.9.9", "scene.scm", "0123456789abcdef", "incl=70", 3, ""};
   const ChannelImage img = make_data_image(j, r.image, r.data, info);
   EXPECT_EQ(img.names, data_channel_names(false));
   for (const char* c : {"R", "G", "B", "x0", "x1", "x2", "x3", "k0", "k1", "k2", "k3", "z", "objid", "stop", "lambda"})
@@ -176,13 +176,13 @@ TEST_F(DataExr, JacobiChannelsWithTheJacobiFilter) {
 TEST_F(DataExr, WrittenAtomicallyAndReadBack) {
   const RenderJob j = job();
   const RenderResult r = render_quiet(j);
-  const std::string written = write_data_exr(path("frame.png"), j, r.image, r.data, {"1", "s.scm", "ab", "", 0});
+  const std::string written = write_data_exr(path("frame.png"), j, r.image, r.data, {"1", "s.scm", "ab", "", 0, ""});
   EXPECT_EQ(written, path("frame.exr"));
   int files = 0;
   for (const auto& e : fs::directory_iterator(dir_)) files += e.is_regular_file();
   EXPECT_EQ(files, 1);  // no temporary left behind
   const ChannelImage back = read_data_file(written);
-  const ChannelImage orig = make_data_image(j, r.image, r.data, {"1", "s.scm", "ab", "", 0});
+  const ChannelImage orig = make_data_image(j, r.image, r.data, {"1", "s.scm", "ab", "", 0, ""});
   ASSERT_EQ(back.width, 24);
   ASSERT_EQ(back.height, 16);
   for (const auto& name : orig.names) {
@@ -207,7 +207,7 @@ TEST_F(DataExr, IndependentReaderSeesTheChannelsAndHeader) {
 #else
   const RenderJob j = job();
   const RenderResult r = render_quiet(j);
-  const std::string file = write_data_exr(path("frame.png"), j, r.image, r.data, {"1", "s.scm", "ab", "", 0});
+  const std::string file = write_data_exr(path("frame.png"), j, r.image, r.data, {"1", "s.scm", "ab", "", 0, ""});
   EXRVersion version;
   ASSERT_EQ(ParseEXRVersionFromFile(&version, file.c_str()), TINYEXR_SUCCESS);
   EXRHeader header;

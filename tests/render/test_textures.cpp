@@ -48,7 +48,9 @@ TEST(TextureRegistry, HoldsEveryGeoViSTextureWithItsDefaults) {
   EXPECT_EQ(texture_types(), (std::vector<std::string>{"CheckerT2D", "ChequeredT2D", "ChequeredTimeT2D", "ColorGradTex",
                                                        "DieT2D", "Image", "UniTex"}));
   for (const auto& k : texture_keys("ChequeredT2D"))
-    if (k.key == "width") EXPECT_EQ(param_default_text(k), "0.25");  // GeoViS GvsChequeredT2D
+    if (k.key == "width") {
+      EXPECT_EQ(param_default_text(k), "0.25");  // GeoViS GvsChequeredT2D
+    }
   EXPECT_TRUE(texture_keys("NoSuchTexture").empty());
 }
 

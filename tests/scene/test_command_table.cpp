@@ -44,8 +44,9 @@ TEST(CommandTable, HoldsExactlyTheGeoViSCommandsAndTheExtensions) {
   }
   // The catalogue's getenv and exit are Scheme procedures of the prelude (sandboxed), not commands.
   for (const auto& name : catalogue)
-    if (name != "getenv" && name != "exit")
+    if (name != "getenv" && name != "exit") {
       EXPECT_NE(find_scene_command(name), nullptr) << name << " of the GeoViS catalogue is not in the table";
+    }
 }
 
 TEST(CommandTable, ThePreludeWritesNoCommandByHand) {
@@ -171,11 +172,13 @@ TEST(SceneReference, NamesEveryCommandTypeAndKey) {
   const std::string ref = scene_reference_markdown();
   for (const SceneCommand& c : scene_commands()) {
     EXPECT_NE(ref.find("### " + std::string(c.name) + "\n"), std::string::npos) << c.name;
-    if (c.types && c.name != "init-solver")
-      for (const std::string& t : c.types())
+    if (c.types && c.name != "init-solver") {
+      for (const std::string& t : c.types()) {
         EXPECT_NE(ref.find("#### " + (c.name == "init-metric" ? t : std::string(c.name) + " `" + t + "`")),
                   std::string::npos)
             << c.name << " " << t;
+      }
+    }
   }
 }
 
