@@ -17,6 +17,12 @@
 //
 // A lane whose ray ended is refilled at once from the source (PacketRays::next), so the lanes stay
 // busy until the source is exhausted.
+//
+// The same driver integrates the Kerr family's rays in Mino time (integrate_kerr_mino_packet:
+// Carter's separated equations, kerr_mino.h) and, for the RGBjac filter, their Jacobi fields as
+// derivatives of the Mino-time flow (integrate_kerr_mino_jacobi_packet, JacobiPacketRays:
+// Dual<SimdD, 2> through the same kerr_mino_rhs template as the scalar integrate_kerr_mino_jacobi
+// of kerr_jacobi.h, lane by lane the same bits).
 #pragma once
 
 #include "core/function_ref.h"
