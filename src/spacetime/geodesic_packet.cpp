@@ -1460,36 +1460,59 @@ struct CoordinatePacket {
   void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
 };
 
-/// KerrMinoSystem's constraint (on SIMD lanes: mino_constraint, kerr_mino_constraint's bits),
-/// escaped and captured of the accepted states y (SoA, N rows whose first four are the Mino state's
-/// w, ζ, w', z': KerrMinoRHS, MinoJacobiLayout) of the lanes in `lanes`, lane l's system
-/// system_of(l) (its escaped and captured read the state's N components). Escape and capture are
-/// tested lane by lane, and the costly part of each (the turning-point and Bernstein tests of the
-/// radial potential) only where its radius and direction admit it.
-template <int N, class SystemOf>
-void mino_step_checks(size_t target, const MinoLaneCoeffs& coeffs, const SystemOf& system_of, const SolverConfig& c,
-                      const double* y, unsigned lanes, PacketStepChecks& out) {
-  constexpr int W = kPacketLanes;
-  static_assert(W <= 8, "mino_constraint's candidate bits: 8 per test");
-  // The lanes past the first tests of escaped and captured, which most steps fail (SIMD, with
-  // their expressions); only those are gathered and tested here.
-  const unsigned candidates = GEOVIS_PACKET_DISPATCH(mino_constraint, target)(
-      coeffs, y, c.escape_radius, c.capture_radius, c.direction >= 0 ? -1.0 : 1.0, out.constraint,
-      out.constraint_scale);
-  const unsigned may_escape = candidates & lanes, may_be_captured = candidates >> 8 & lanes;
-  out.escaped = out.captured = 0;
-  for (unsigned todo = may_escape | may_be_captured; todo != 0; todo &= todo - 1) {
-    const int l = std::countr_zero(todo);
-    double yl[N];
-    for (int i = 0; i < N; ++i) yl[i] = y[i * W + l];
-    const auto& sys = system_of(l);
-    if ((may_escape >> l & 1u) && sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
-    if ((may_be_captured >> l & 1u) && sys.captured(c, yl)) out.captured |= 1u << l;
+/// The tests of the Mino state shared by MinoPacket and MinoJacobiPacket, all lanes at once: P's
+/// states have N rows whose first four are the Mino state's w, ζ, w', z' (KerrMinoRHS,
+/// MinoJacobiLayout: the SIMD tests read only those), P has `coeffs`, `target` and system(l), lane
+/// l's scalar system (its escaped and captured read the state's N components).
+template <class P>
+struct MinoStateTests {
+  /// KerrMinoSystem::param_per_affine of all lanes' states at once (mino_param_per_affine, SIMD).
+  void param_per_affine_lanes(const double* y, double* out) const {
+    GEOVIS_PACKET_DISPATCH(mino_param_per_affine, self().target)(self().coeffs, y, out);
   }
-}
+  /// KerrMinoSystem::valid of all lanes' states at once (mino_valid, SIMD).
+  unsigned valid_lanes(const double* y, unsigned lanes) const {
+    return GEOVIS_PACKET_DISPATCH(mino_valid, self().target)(self().coeffs, y, lanes);
+  }
+  /// KerrMinoSystem's constraint (on SIMD lanes: mino_constraint, kerr_mino_constraint's bits),
+  /// escaped and captured of the accepted states y (SoA) of the lanes in `lanes`. Escape and
+  /// capture are tested lane by lane, and the costly part of each (the turning-point and Bernstein
+  /// tests of the radial potential) only where its radius and direction admit it.
+  void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) {
+    constexpr int W = kPacketLanes;
+    static_assert(W <= 8, "mino_constraint's candidate bits: 8 per test");
+    // The lanes past the first tests of escaped and captured, which most steps fail (SIMD, with
+    // their expressions); only those are gathered and tested here.
+    const unsigned candidates = GEOVIS_PACKET_DISPATCH(mino_constraint, self().target)(
+        self().coeffs, y, c.escape_radius, c.capture_radius, c.direction >= 0 ? -1.0 : 1.0, out.constraint,
+        out.constraint_scale);
+    const unsigned may_escape = candidates & lanes, may_be_captured = candidates >> 8 & lanes;
+    out.escaped = out.captured = 0;
+    for (unsigned todo = may_escape | may_be_captured; todo != 0; todo &= todo - 1) {
+      const int l = std::countr_zero(todo);
+      double yl[P::N];
+      for (int i = 0; i < P::N; ++i) yl[i] = y[i * W + l];
+      const auto& sys = static_cast<P&>(*this).system(l);
+      if ((may_escape >> l & 1u) && sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
+      if ((may_be_captured >> l & 1u) && sys.captured(c, yl)) out.captured |= 1u << l;
+    }
+  }
+  /// The lanes of `lanes` whose accepted states (y1, SoA) may be changed: all where they are
+  /// re-projected (c.reproject), else those that may be projected onto the polar first integral
+  /// near the axis — KerrMinoSystem::project_invariants' first tests, on ζ alone, all lanes at once
+  /// (mino_may_project). Why: the other states need not be gathered (~25 instructions per lane and
+  /// attempt on kerrAccretionDisk.scm, callgrind, issue 13).
+  unsigned accepted_states_may_change(const SolverConfig& c, const double* y1, unsigned lanes) const {
+    if (c.reproject) return lanes;
+    return GEOVIS_PACKET_DISPATCH(mino_may_project, self().target)(self().coeffs, y1) & lanes;
+  }
+
+ private:
+  const P& self() const { return static_cast<const P&>(*this); }
+};
 
 /// Carter's separated equations in Mino time (kerr_mino.h), one ray (KerrMinoRay) per lane.
-struct MinoPacket {
+struct MinoPacket : MinoStateTests<MinoPacket> {
   static constexpr int N = KerrMinoRHS::N;
   const Metric& metric;
   const KerrMinoParams hole;
@@ -1541,19 +1564,6 @@ struct MinoPacket {
                double* y1, double* dy1, AttemptError& err) const {
     GEOVIS_PACKET_DISPATCH(mino_attempt, target)(kind, coeffs, tol, y, dy, h, y1, dy1, err);
   }
-  /// KerrMinoSystem::param_per_affine of all lanes' states at once (mino_param_per_affine, SIMD).
-  void param_per_affine_lanes(const double* y, double* out) const {
-    GEOVIS_PACKET_DISPATCH(mino_param_per_affine, target)(coeffs, y, out);
-  }
-  /// KerrMinoSystem::valid of all lanes' states at once (mino_valid, SIMD).
-  unsigned valid_lanes(const double* y, unsigned lanes) const {
-    return GEOVIS_PACKET_DISPATCH(mino_valid, target)(coeffs, y, lanes);
-  }
-  /// KerrMinoSystem's constraint, escaped and captured of the accepted states (mino_step_checks).
-  void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) {
-    mino_step_checks<N>(
-        target, coeffs, [this](int l) -> const KerrMinoSystem& { return system(l); }, c, y, lanes, out);
-  }
   /// The BL views of the accepted steps' ends (y1, dy1: SoA), all lanes at once on SIMD lanes
   /// (kerr_mino_bl_view, the function KerrMinoRay::step evaluates per ray), on the branch each ray
   /// has after its step, written straight into each ray's next_end() (mino_end_views), which step
@@ -1588,15 +1598,6 @@ struct MinoPacket {
   }
   /// The steps go to PacketRays::on_steps a round at a time where it is set.
   bool batch_steps() const { return static_cast<bool>(rays.on_steps); }
-  /// The lanes of `lanes` whose accepted states (y1, SoA) may be changed: all where they are
-  /// re-projected (c.reproject), else those that may be projected onto the polar first integral
-  /// near the axis — KerrMinoSystem::project_invariants' first tests, on ζ alone, all lanes at once
-  /// (mino_may_project). Why: the other states need not be gathered (~25 instructions per lane and
-  /// attempt on kerrAccretionDisk.scm, callgrind, issue 13).
-  unsigned accepted_states_may_change(const SolverConfig& c, const double* y1, unsigned lanes) const {
-    if (c.reproject) return lanes;
-    return GEOVIS_PACKET_DISPATCH(mino_may_project, target)(coeffs, y1) & lanes;
-  }
   /// The accepted steps of a round (s: Mino states, SoA) handed on at once: the positions of their
   /// ends on all lanes at once (mino_end_positions, on the θ branch after the step) as
   /// PacketSteps::p1, each lane's BL view only where the caller asks for it (lane_view); then each
@@ -1689,7 +1690,7 @@ struct MinoPacket {
 /// its value rows with the Mino packet's functions (the value's w, ζ, w', z' are the layout's rows
 /// 0-3, as KerrMinoRHS's), the steps handed on lane by lane in BL Jacobi terms (bl_step, or
 /// bl_step_with_position where the caller reads the states on request).
-struct MinoJacobiPacket {
+struct MinoJacobiPacket : MinoStateTests<MinoJacobiPacket> {
   using J = MinoJacobiLayout;
   static constexpr int N = J::N;
   const Metric& metric;
@@ -1750,24 +1751,10 @@ struct MinoJacobiPacket {
                double* y1, double* dy1, AttemptError& err) const {
     GEOVIS_PACKET_DISPATCH(mino_jacobi_attempt, target)(kind, dual, tol, y, dy, h, y1, dy1, err);
   }
-  /// The value's dσ/dλ, validity and checks: those of the Mino packet on the value's rows.
-  void param_per_affine_lanes(const double* y, double* out) const {
-    GEOVIS_PACKET_DISPATCH(mino_param_per_affine, target)(coeffs, y, out);
-  }
-  unsigned valid_lanes(const double* y, unsigned lanes) const {
-    return GEOVIS_PACKET_DISPATCH(mino_valid, target)(coeffs, y, lanes);
-  }
-  void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) {
-    mino_step_checks<N>(
-        target, coeffs, [this](int l) -> const KerrMinoJacobiSystem& { return system(l); }, c, y, lanes, out);
-  }
-  /// As MinoPacket's: only a state near the axis (or re-projected) may change when it is accepted;
-  /// mino_may_project reads ζ's row, which is the value's (J::at(Z, −1) = Z).
-  unsigned accepted_states_may_change(const SolverConfig& c, const double* y1, unsigned lanes) const {
-    static_assert(J::at(KerrMinoRHS::Z, -1) == KerrMinoRHS::Z);
-    if (c.reproject) return lanes;
-    return GEOVIS_PACKET_DISPATCH(mino_may_project, target)(coeffs, y1) & lanes;
-  }
+  // The value's dσ/dλ, validity, checks and may-project tests: MinoStateTests, on the value's rows,
+  // which are the Mino state's where those tests read them.
+  static_assert(J::at(KerrMinoRHS::W, -1) == KerrMinoRHS::W && J::at(KerrMinoRHS::Z, -1) == KerrMinoRHS::Z &&
+                J::at(KerrMinoRHS::DW, -1) == KerrMinoRHS::DW && J::at(KerrMinoRHS::DZ, -1) == KerrMinoRHS::DZ);
   void rebase(int l, double* y) {
     system(l).rebase(y);
     coeffs.v[MinoLaneCoeffs::POLE][l] = dual.pole[l] = system(l).ray.f.polar.pole;
@@ -1812,7 +1799,7 @@ void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole
                                 const PacketRays& rays) {
   require_packet_solver(cfg);
   const SolverConfig mino_cfg = KerrMinoRay::config(cfg);
-  MinoPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}, {}, {}};
+  MinoPacket ps{{}, metric, hole, cfg, mino_cfg, rays, {}, {}, {}, {}};
   with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, mino_cfg, rays); });
 }
 
@@ -1820,7 +1807,7 @@ void integrate_kerr_mino_jacobi_packet(const Metric& metric, const KerrMinoParam
                                        const JacobiPacketRays& rays) {
   require_packet_solver(cfg);
   const SolverConfig mino_cfg = KerrMinoRay::config(cfg);
-  MinoJacobiPacket ps{metric, hole, cfg, mino_cfg, rays, {}, {}, {}, {}};
+  MinoJacobiPacket ps{{}, metric, hole, cfg, mino_cfg, rays, {}, {}, {}, {}};
   auto next = [&ps](int l, double* y) { return ps.next(l, y); };
   const PacketRays lane_rays{next, {}, {}, {}, false};
   with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, mino_cfg, lane_rays); });
