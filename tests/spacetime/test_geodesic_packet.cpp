@@ -76,6 +76,17 @@ namespace {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+/// A lane's run b is the scalar run a: stop reason, counts, λ, drift and escape radius to the bit.
+void expect_same_run(const GeodesicResult& b, const GeodesicResult& a) {
+  EXPECT_EQ(stop_reason_name(b.reason), std::string(stop_reason_name(a.reason)));
+  EXPECT_EQ(b.steps, a.steps);
+  EXPECT_EQ(b.rejected, a.rejected);
+  EXPECT_EQ(b.rhs_evals, a.rhs_evals);
+  EXPECT_TRUE(same_bits(b.lambda, a.lambda)) << b.lambda << " vs " << a.lambda;
+  EXPECT_TRUE(same_bits(b.constraint_drift, a.constraint_drift));
+  EXPECT_TRUE(same_bits(b.escape_radius, a.escape_radius));
+}
+
 /// Runs `body` once per SIMD target compiled in and supported here, with dynamic dispatch forced
 /// to it; restores the normal dispatch afterwards.
 template <class F>
@@ -195,13 +206,7 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
     for (size_t r = 0; r < n; ++r) {
       SCOPED_TRACE("ray " + std::to_string(r));
       const RayRecord &a = scalar[r], &b = packet[r];
-      EXPECT_EQ(stop_reason_name(b.res.reason), std::string(stop_reason_name(a.res.reason)));
-      EXPECT_EQ(b.res.steps, a.res.steps);
-      EXPECT_EQ(b.res.rejected, a.res.rejected);
-      EXPECT_EQ(b.res.rhs_evals, a.res.rhs_evals);
-      EXPECT_TRUE(same_bits(b.res.lambda, a.res.lambda)) << b.res.lambda << " vs " << a.res.lambda;
-      EXPECT_TRUE(same_bits(b.res.constraint_drift, a.res.constraint_drift));
-      EXPECT_TRUE(same_bits(b.res.escape_radius, a.res.escape_radius));
+      expect_same_run(b.res, a.res);
       for (int i = 0; i < 8; ++i)
         EXPECT_TRUE(same_bits(b.y[i], a.y[i])) << "y[" << i << "] " << b.y[i] << " vs " << a.y[i];
       ASSERT_EQ(b.steps.size(), a.steps.size());
@@ -653,13 +658,7 @@ TEST(GeodesicPacket, KerrJacobiLanesAreTheScalarMinoJacobi) {
         for (size_t r = 0; r < n; ++r) {
           SCOPED_TRACE("ray " + std::to_string(r));
           const JacobiRecord &a = scalar[r], &b = packet[r];
-          EXPECT_EQ(stop_reason_name(b.res.reason), std::string(stop_reason_name(a.res.reason)));
-          EXPECT_EQ(b.res.steps, a.res.steps);
-          EXPECT_EQ(b.res.rejected, a.res.rejected);
-          EXPECT_EQ(b.res.rhs_evals, a.res.rhs_evals);
-          EXPECT_TRUE(same_bits(b.res.lambda, a.res.lambda)) << b.res.lambda << " vs " << a.res.lambda;
-          EXPECT_TRUE(same_bits(b.res.constraint_drift, a.res.constraint_drift));
-          EXPECT_TRUE(same_bits(b.res.escape_radius, a.res.escape_radius));
+          expect_same_run(b.res, a.res);
           for (int i = 0; i < kJacobiDim; ++i)
             EXPECT_TRUE(same_bits(b.y[i], a.y[i])) << "y[" << i << "] " << b.y[i] << " vs " << a.y[i];
           ASSERT_EQ(b.steps.size(), a.steps.size());
