@@ -293,12 +293,7 @@ TEST(ObjLocal, SimultaneitySlopeOfASampledMotionIsTheDerivativeOfItsFunction) {
   // The orbit as sphereAroundBlackhole.scm computes it: paper §3's, over ±500.
   std::shared_ptr<const Metric> m(make_metric("Schwarzschild"));
   const ParamSet circular = testing_support::paper_orbit_params(500.0, 500.0, 1.5707963);
-  ParamSet fall("init-motion", SourceLoc{"fall.scm", 1});
-  fall.add("type", "Geodesic");
-  fall.add("pos", std::vector<double>{0.0, 10.0, M_PI / 2, 0.0});
-  fall.add("localvel", std::vector<double>{0, 0, 0});
-  fall.add("maxnumpoints", 1000);
-  fall.add("forward", 30.0);
+  const ParamSet fall = testing_support::radial_fall_params(1000, 30.0);
   SolverConfig fall_solver;
   fall_solver.step_ctrl = false;
   fall_solver.step_size = 0.05;

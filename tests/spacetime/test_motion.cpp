@@ -196,12 +196,7 @@ TEST(Motion, FrameDerivativeIsTheParallelTransportAlongTheOrbit) {
 
 TEST(Motion, RadialFreeFallSchwarzschild) {
   std::shared_ptr<const Metric> m = make_metric("Schwarzschild");
-  ParamSet ps("init-motion", SourceLoc{"fall.scm", 86});
-  ps.add("type", "Geodesic");
-  ps.add("pos", std::vector<double>{0.0, 10.0, M_PI / 2, 0.0});
-  ps.add("localvel", std::vector<double>{0, 0, 0});
-  ps.add("maxnumpoints", 8000);
-  ps.add("forward", 100.0);
+  const ParamSet ps = testing_support::radial_fall_params(8000, 100.0, SourceLoc{"fall.scm", 86});
   SolverConfig cfg;  // fallEddFinkIn.scm: GSL_RK_Fehlberg, step_ctrl #f, step_size 0.005
   cfg.step_ctrl = false;
   cfg.step_size = 0.005;

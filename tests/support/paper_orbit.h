@@ -28,6 +28,18 @@ inline ParamSet paper_orbit_params(double forward = 70.0, double backward = 10.0
   return ps;
 }
 
+/// A radial free fall in Schwarzschild from rest at r = 10M in the equatorial plane (init-motion,
+/// fallEddFinkIn.scm's start), over the proper time `forward` with `points` points.
+inline ParamSet radial_fall_params(int points, double forward, SourceLoc loc = SourceLoc{"fall.scm", 1}) {
+  ParamSet ps("init-motion", loc);
+  ps.add("type", "Geodesic");
+  ps.add("pos", std::vector<double>{0.0, 10.0, M_PI / 2, 0.0});
+  ps.add("localvel", std::vector<double>{0, 0, 0});
+  ps.add("maxnumpoints", points);
+  ps.add("forward", forward);
+  return ps;
+}
+
 inline SolverConfig paper_solver() {
   SolverConfig cfg;  // paper §3: GSL_RK_Cash-Karp, step_ctrl #f, step_size 0.1
   cfg.kind = SolverKind::CashKarp45;
