@@ -76,6 +76,22 @@ namespace {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+/// The rays' start states y0 handed to a packet's lanes in order (PacketRays::next), with the ray
+/// each lane carries (lane_ray) for the step and end callbacks.
+template <class States>
+struct RaySource {
+  const States& y0;
+  size_t next_ray = 0;
+  int lane_ray[kPacketLanes] = {};
+  bool operator()(int lane, double* y) {
+    if (next_ray == y0.size()) return false;
+    lane_ray[lane] = static_cast<int>(next_ray);
+    std::copy(y0[next_ray].begin(), y0[next_ray].end(), y);
+    ++next_ray;
+    return true;
+  }
+};
+
 /// A lane's run b is the scalar run a: stop reason, counts, λ, drift and escape radius to the bit.
 void expect_same_run(const GeodesicResult& b, const GeodesicResult& a) {
   EXPECT_EQ(stop_reason_name(b.reason), std::string(stop_reason_name(a.reason)));
@@ -159,24 +175,18 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
     scalar[r].res = m.integrate(cfg, GeodesicSystem::Geodesic, y, 0.0, cb);
     std::copy(y, y + 8, scalar[r].y);
   }
-  size_t next_ray = 0, finished = 0;
-  int lane_ray[kPacketLanes];
-  auto next = [&](int lane, double* y) {
-    if (next_ray == n) return false;
-    lane_ray[lane] = static_cast<int>(next_ray);
-    std::copy(y0[next_ray].begin(), y0[next_ray].end(), y);
-    ++next_ray;
-    return true;
-  };
+  RaySource source{y0};
+  size_t finished = 0;
+  auto next = [&](int lane, double* y) { return source(lane, y); };
   // The packet with its steps handed on lane by lane (on_step), and a round at a time (on_steps,
   // the views gathered by PacketSteps::view: the same steps).
   for (const bool batch : {false, true}) {
     SCOPED_TRACE(batch ? "on_steps" : "on_step");
     std::vector<RayRecord> packet(n);
     for (size_t r = 0; r < n; ++r) packet[r].stop_at = stops[r];
-    next_ray = 0;
+    source.next_ray = 0;
     finished = 0;
-    auto on_step = [&](int lane, const StepView& st) { return record(packet[lane_ray[lane]], st); };
+    auto on_step = [&](int lane, const StepView& st) { return record(packet[source.lane_ray[lane]], st); };
     auto on_steps = [&](const PacketSteps& steps) {
       unsigned stop = 0;
       for (int l = 0; l < kPacketLanes; ++l) {
@@ -184,7 +194,7 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
         double views[4][8];
         const StepView st = steps.view(l, views);
         // The step starts where the lane's previous one ended.
-        RayRecord& r = packet[lane_ray[l]];
+        RayRecord& r = packet[source.lane_ray[l]];
         if (!r.steps.empty()) {
           for (int i = 0; i < 8; ++i) EXPECT_TRUE(same_bits(st.y0[i], r.steps.back()[i])) << "y0[" << i << "]";
         }
@@ -193,7 +203,7 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
       return stop;
     };
     auto done = [&](int lane, const double* y, const GeodesicResult& res) {
-      RayRecord& r = packet[lane_ray[lane]];
+      RayRecord& r = packet[source.lane_ray[lane]];
       std::copy(y, y + 8, r.y);
       r.res = res;
       ++finished;
@@ -228,11 +238,11 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
   // the previous step's end). Lane by lane and a round at a time (on_steps: the views of the
   // other steps are never made).
   for (const bool batch : {false, true}) {
-    next_ray = 0;
+    source.next_ray = 0;
     finished = 0;
     std::vector<RayRecord> on_request(n);
     auto on_step_on_request = [&](int lane, const StepView& st) {
-      RayRecord& r = on_request[lane_ray[lane]];
+      RayRecord& r = on_request[source.lane_ray[lane]];
       if (st.step_index % 3 == 0) {
         st.ensure_states();
         std::array<double, 16> s0;
@@ -251,7 +261,7 @@ void expect_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
         if (steps.step_index[l] % 3 != 1) {
           double views[4][8];
           if (on_step_on_request(l, steps.view(l, views)) == StepAction::Stop) stop |= 1u << l;
-        } else if (steps.step_index[l] == on_request[lane_ray[l]].stop_at) {
+        } else if (steps.step_index[l] == on_request[source.lane_ray[l]].stop_at) {
           stop |= 1u << l;
         }
       }
@@ -637,18 +647,12 @@ TEST(GeodesicPacket, KerrJacobiLanesAreTheScalarMinoJacobi) {
       for_every_target([&] {
         std::vector<JacobiRecord> packet(n);
         for (size_t r = 0; r < n; ++r) packet[r].stop_at = scalar[r].stop_at;
-        size_t next_ray = 0, finished = 0;
-        int lane_ray[kPacketLanes];
-        auto next = [&](int lane, double* y) {
-          if (next_ray == n) return false;
-          lane_ray[lane] = static_cast<int>(next_ray);
-          std::copy(y0[next_ray].begin(), y0[next_ray].end(), y);
-          ++next_ray;
-          return true;
-        };
-        auto on_step = [&](int lane, const StepView& st) { return record(packet[lane_ray[lane]], st); };
+        RaySource source{y0};
+        size_t finished = 0;
+        auto next = [&](int lane, double* y) { return source(lane, y); };
+        auto on_step = [&](int lane, const StepView& st) { return record(packet[source.lane_ray[lane]], st); };
         auto done = [&](int lane, const double* y, const GeodesicResult& res) {
-          JacobiRecord& r = packet[lane_ray[lane]];
+          JacobiRecord& r = packet[source.lane_ray[lane]];
           std::copy(y, y + kJacobiDim, r.y);
           r.res = res;
           ++finished;
@@ -670,9 +674,9 @@ TEST(GeodesicPacket, KerrJacobiLanesAreTheScalarMinoJacobi) {
         // scalar one to the bit.
         std::vector<JacobiRecord> on_request(n);
         for (size_t r = 0; r < n; ++r) on_request[r].stop_at = scalar[r].stop_at;
-        next_ray = finished = 0;
+        source.next_ray = finished = 0;
         auto on_step_on_request = [&](int lane, const StepView& st) {
-          JacobiRecord& r = on_request[lane_ray[lane]];
+          JacobiRecord& r = on_request[source.lane_ray[lane]];
           if (st.step_index % 3 != 0) return st.step_index == r.stop_at ? StepAction::Stop : StepAction::Continue;
           st.ensure_states();
           return record(r, st);
