@@ -139,6 +139,23 @@ inline void sincos_t(const Dual<double, K>& x, Dual<double, K>& s, Dual<double, 
   c = chain(x, cv, -sv);
 }
 
+/// sin and e^x of a first-order dual for the metric templates (found by argument-dependent lookup
+/// before fast_math.h's generic sin_t and exp_t, which would call libm): fast_sincos and fast_exp of
+/// the value, as on doubles and on SIMD lanes (simd.h's Dual<SimdD, K>), so the Jacobi system's
+/// terms from an acceleration template (jacobi_terms_from_accel) give a packet's lanes the bits of
+/// the scalar integrator.
+template <int K>
+inline Dual<double, K> sin_t(const Dual<double, K>& x) {
+  double sv, cv;
+  fast_sincos(x.v, sv, cv);
+  return chain(x, sv, cv);
+}
+template <int K>
+inline Dual<double, K> exp_t(const Dual<double, K>& x) {
+  const double e = fast_exp(x.v);
+  return chain(x, e, e);
+}
+
 /// Seeds x as the independent variables: x[μ] has ∂_μ = 1.
 template <class T>
 inline Vec4T<Dual<T>> seed(const Vec4T<T>& x) {

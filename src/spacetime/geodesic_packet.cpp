@@ -28,6 +28,7 @@
 #include "core/error.h"
 #include "spacetime/geodesic_packet.h"
 #include "spacetime/integrators.h"
+#include "spacetime/jacobi_system.h"
 #include "spacetime/kerr_jacobi.h"
 #include "spacetime/kerr_mino.h"
 #include "spacetime/metric.h"
@@ -148,9 +149,6 @@ constexpr bool kCombinedEstimate = requires {
 HWY_BEFORE_NAMESPACE();
 namespace geovis {
 namespace HWY_NAMESPACE {
-#define GEOVIS_DUAL_ATTR HWY_ATTR __attribute__((always_inline))
-#include "spacetime/dual_arith.h"  // Dual: this target's copy, for Dual<SimdD, 2>
-#undef GEOVIS_DUAL_ATTR
 #include "spacetime/kerr_mino_bl.h"
 #include "spacetime/kerr_mino_rhs.h"
 
@@ -485,6 +483,100 @@ void mino_jacobi_tolerance(const MinoLaneCoeffs& c, double eps_abs, double eps_r
       for (int i = 0; i < N; ++i) is[J::at(i, f)] = iv[i] * inv_size;
     }
     for (int i = 0; i < J::N; ++i) {
+      if (eps_rel == 0.0)
+        is[i] = is[i] * SimdD(inv_eps_abs);
+      else
+        is[i] = SimdD(1.0) / (SimdD(eps_abs) / is[i] + SimdD(eps_rel) * fabs(SimdD::load(y + i * W + l)));
+      is[i].store(inv + i * W + l);
+    }
+  }
+}
+
+/// JacobiRHS (jacobi.h) from the Jacobi system's terms t of a packet's lanes
+/// (MetricKernel::packet_jacobi_terms), with its operations in its order on SIMD lanes: the rows
+/// from kJacobiK on of dy (the rows dx/dλ = k are rk_attempt_lanes's velocity rows, or
+/// coordinate_jacobi_rhs's copy).
+HWY_INLINE void jacobi_rhs_rows_lanes(const double* y, const double* t, double* dy) {
+  constexpr size_t W = kPacketLanes;
+  for (size_t l = 0; l < W; l += SimdD::lanes()) {
+    auto at = [&](const double* p, int row) { return SimdD::load(p + row * W + l); };
+    SimdD Gk[4][4];
+    for (int mu = 0; mu < 4; ++mu)
+      for (int b = 0; b < 4; ++b) Gk[mu][b] = at(t, 4 * mu + b);
+    auto contract = [&](int mu, const SimdD (&e)[4]) {
+      return Gk[mu][0] * e[0] + Gk[mu][1] * e[1] + Gk[mu][2] * e[2] + Gk[mu][3] * e[3];
+    };
+    for (int v = 0; v < 3; ++v) {  // k, s1, s2: e' = −Γ(k, e)
+      const SimdD e[4] = {at(y, kJacobiK + 4 * v), at(y, kJacobiK + 4 * v + 1), at(y, kJacobiK + 4 * v + 2),
+                          at(y, kJacobiK + 4 * v + 3)};
+      for (int mu = 0; mu < 4; ++mu) (-contract(mu, e)).store(dy + (kJacobiK + 4 * v + mu) * W + l);
+    }
+    for (int f = 0; f < 2; ++f) {
+      const int dy_row = kJacobiDY1 + 8 * f;
+      const SimdD d[4] = {at(y, dy_row), at(y, dy_row + 1), at(y, dy_row + 2), at(y, dy_row + 3)};
+      for (int mu = 0; mu < 4; ++mu) {
+        d[mu].store(dy + (kJacobiY1 + 8 * f + mu) * W + l);
+        (-(SimdD(2.0) * contract(mu, d) + at(t, 16 + 4 * f + mu))).store(dy + (dy_row + mu) * W + l);
+      }
+    }
+  }
+}
+
+/// dy = f(y) of the Jacobi system in the metric's coordinates for the lanes in `lanes`; the other
+/// lanes' dy are left as they are (they hold f of their states, which the terms t — room for
+/// kJacobiTermRows rows — need not have for those lanes).
+void coordinate_jacobi_rhs(const MetricKernel& m, unsigned lanes, const double* y, double* dy, double* t) {
+  constexpr int W = kPacketLanes;
+  m.packet_jacobi_terms(y, t, lanes);
+  HWY_ALIGN double f[kJacobiDim * W];
+  std::memcpy(f + kJacobiX * W, y + kJacobiK * W, 4 * W * sizeof(double));
+  jacobi_rhs_rows_lanes(y, t, f);
+  const SimdTag d;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    const uint8_t bits = static_cast<uint8_t>(lanes >> l);
+    const auto on = hn::LoadMaskBits(d, &bits);
+    for (int i = 0; i < kJacobiDim; ++i) hn::BlendedStore(hn::LoadU(d, f + i * W + l), on, d, dy + i * W + l);
+  }
+}
+
+/// The attempt of solver `kind` on the Jacobi system in the metric's coordinates (as rk_attempt:
+/// dx/dλ = k read from the stage states, the other rows from coordinate_jacobi_rhs's).
+void coordinate_jacobi_attempt(SolverKind kind, const MetricKernel& m, unsigned lanes, const LaneTolerance& tol,
+                               const double* y, const double* dy, const double* h, double* y1, double* dy1,
+                               AttemptError& err, double* t) {
+  with_packet_tableau(kind, [&]<class Tab>() {
+    HWY_ALIGN double e[kJacobiDim * kPacketLanes];
+    HWY_ALIGN double e3[kCombinedEstimate<Tab> ? kJacobiDim * kPacketLanes : 1];
+    rk_attempt_lanes<Tab, kJacobiDim, kJacobiDim, 4>(
+        [&](const double* yy, double* dyy) {
+          m.packet_jacobi_terms(yy, t, lanes);
+          jacobi_rhs_rows_lanes(yy, t, dyy);
+        },
+        y, dy, h, y1, e, e3, dy1);
+    attempt_error_lanes<Tab, kJacobiDim>(tol, y, y1, e, e3, h, err);
+  });
+}
+
+/// The 1/D_i of integrate_with's set_tolerance for JacobiSystem (jacobi_system.h:
+/// tolerance_inv_scale, then eps_abs and eps_rel) on every lane, with its operations
+/// (std::max(size, v) as the select size < v ? v : size).
+void coordinate_jacobi_tolerance(double eps_abs, double eps_rel, const double* y, double* inv) {
+  constexpr int W = kPacketLanes;
+  const double inv_eps_abs = 1.0 / eps_abs;
+  for (size_t l = 0; l < static_cast<size_t>(W); l += SimdD::lanes()) {
+    SimdD is[kJacobiDim];
+    for (int i = 0; i < kJacobiY1; ++i) is[i] = SimdD(1.0);
+    for (int f = 0; f < 2; ++f) {
+      const int row = kJacobiY1 + 8 * f;  // Y_f (4) then Y_f' (4)
+      SimdD size(1.0);
+      for (int i = 0; i < 8; ++i) {
+        const SimdD v = fabs(SimdD::load(y + (row + i) * W + l));
+        size = select(size < v, v, size);
+      }
+      const SimdD inv_size = SimdD(1.0) / size;
+      for (int i = 0; i < 8; ++i) is[row + i] = inv_size;
+    }
+    for (int i = 0; i < kJacobiDim; ++i) {
       if (eps_rel == 0.0)
         is[i] = is[i] * SimdD(inv_eps_abs);
       else
@@ -935,6 +1027,9 @@ HWY_EXPORT(copy_lanes);
 HWY_EXPORT(mino_jacobi_rhs);
 HWY_EXPORT(mino_jacobi_attempt);
 HWY_EXPORT(mino_jacobi_tolerance);
+HWY_EXPORT(coordinate_jacobi_rhs);
+HWY_EXPORT(coordinate_jacobi_attempt);
+HWY_EXPORT(coordinate_jacobi_tolerance);
 
 namespace {
 
@@ -1460,6 +1555,58 @@ struct CoordinatePacket {
   void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
 };
 
+/// The Jacobi system in the metric's coordinates (JacobiSystem, jacobi_system.h), the same for all
+/// lanes: the Jacobi system's terms from the metric (MetricKernel::packet_jacobi_terms), the rest on
+/// SIMD lanes; the state's first eight rows are the geodesic's x and k, which the metric's packet
+/// tests read (valid_lanes, step_checks, inside_lanes as CoordinatePacket's).
+struct CoordinateJacobiPacket {
+  static constexpr int N = kJacobiDim;
+  const MetricKernel& metric;
+  const JacobiPacketRays& rays;
+  size_t target = packet_target();  ///< the SIMD functions' (GEOVIS_PACKET_DISPATCH)
+  JacobiRHS<MetricKernel> f{metric};
+  JacobiSystem sys{{metric, f}};
+  /// Each lane's start state as rays.next gave it (the driver's start sees x and k only).
+  double start_state[kPacketLanes][kJacobiDim] = {};
+  /// The Jacobi system's terms of the stage being evaluated (coordinate_jacobi_rhs).
+  HWY_ALIGN double terms[kJacobiTermRows * kPacketLanes] = {};
+
+  const JacobiSystem& system(int) const { return sys; }
+  /// PacketRays::next of the driver: the next ray's whole start state kept for start().
+  bool next(int l, double* y) {
+    if (!rays.next(l, start_state[l])) return false;
+    std::memcpy(y, start_state[l], kDim * sizeof(double));
+    return true;
+  }
+  bool start(int l, const double*, double* y) const {
+    std::memcpy(y, start_state[l], N * sizeof(double));
+    return true;
+  }
+  void rhs(const double* y, double* dy, unsigned lanes) {
+    GEOVIS_PACKET_DISPATCH(coordinate_jacobi_rhs, target)(metric, lanes, y, dy, terms);
+  }
+  void attempt(SolverKind kind, unsigned lanes, const LaneTolerance& tol, const double* y, const double* dy,
+               const double* h, double* y1, double* dy1, AttemptError& err) {
+    GEOVIS_PACKET_DISPATCH(coordinate_jacobi_attempt, target)(kind, metric, lanes, tol, y, dy, h, y1, dy1, err, terms);
+  }
+  void tolerance_inv(double eps_abs, double eps_rel, const double* y, double* inv) const {
+    GEOVIS_PACKET_DISPATCH(coordinate_jacobi_tolerance, target)(eps_abs, eps_rel, y, inv);
+  }
+  unsigned valid_lanes(const double* y, unsigned lanes) const { return metric.packet_valid(y, lanes); }
+  unsigned inside_lanes(const SolverConfig& c, const double* y) const {
+    const double box[8] = {c.box_ll[0], c.box_ll[1], c.box_ll[2], c.box_ll[3],
+                           c.box_ur[0], c.box_ur[1], c.box_ur[2], c.box_ur[3]};
+    return GEOVIS_PACKET_DISPATCH(inside_box_lanes, target)(box, y);
+  }
+  /// MetricSystem::reproject (its rescale is the geodesic system's only).
+  bool accepted_states_change(const SolverConfig& c) const { return c.reproject; }
+  void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) const {
+    metric.packet_step_checks(c, y, lanes, out);
+  }
+  StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
+  void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
+};
+
 /// The tests of the Mino state shared by MinoPacket and MinoJacobiPacket, all lanes at once: P's
 /// states have N rows whose first four are the Mino state's w, ζ, w', z' (KerrMinoRHS,
 /// MinoJacobiLayout: the SIMD tests read only those), P has `coeffs`, `target` and system(l), lane
@@ -1801,6 +1948,15 @@ void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole
   const SolverConfig mino_cfg = KerrMinoRay::config(cfg);
   MinoPacket ps{{}, metric, hole, cfg, mino_cfg, rays, {}, {}, {}, {}};
   with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, mino_cfg, rays); });
+}
+
+void integrate_jacobi_packet_on_kernel(const MetricKernel& metric, const SolverConfig& cfg,
+                                       const JacobiPacketRays& rays) {
+  require_packet_solver(cfg);
+  CoordinateJacobiPacket ps{metric, rays};
+  auto next = [&ps](int l, double* y) { return ps.next(l, y); };
+  const PacketRays lane_rays{next, {}, {}, {}, false};
+  with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, cfg, lane_rays); });
 }
 
 void integrate_kerr_mino_jacobi_packet(const Metric& metric, const KerrMinoParams& hole, const SolverConfig& cfg,

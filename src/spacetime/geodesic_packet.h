@@ -153,6 +153,15 @@ void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole
 /// the right-hand side on dual numbers of SIMD lanes (kerr_mino_rhs). A ray that path does not take
 /// (through the polar axis, starting outside the metric's validity domain, ...) goes to
 /// metric.integrate (the coordinate Jacobi system). Allocates nothing.
+/// The Jacobi system (jacobi.h: GeodesicSystem::Jacobi, 32 components) in the metric's
+/// coordinates, one ray per lane, each exactly as metric.integrate(cfg, Jacobi, y, 0, on_step)
+/// integrates it with the same solver (integrate_jacobi_on_kernel: the same steps, tolerance scales
+/// and stops to the bit); the Jacobi system's terms per stage from MetricKernel::packet_jacobi_terms
+/// (SIMD lanes where the metric has them), the rest of the right-hand side and the Runge–Kutta
+/// arithmetic on SIMD lanes. packet_solver(cfg.kind) must hold. Allocates nothing.
+void integrate_jacobi_packet_on_kernel(const MetricKernel& metric, const SolverConfig& cfg,
+                                       const JacobiPacketRays& rays);
+
 void integrate_kerr_mino_jacobi_packet(const Metric& metric, const KerrMinoParams& hole, const SolverConfig& cfg,
                                        const JacobiPacketRays& rays);
 

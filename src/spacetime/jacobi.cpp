@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "spacetime/integrators.h"
+#include "spacetime/jacobi_system.h"
 #include "spacetime/metric.h"
 #include "spacetime/metric_kernel.h"
 
@@ -124,30 +125,6 @@ JacobiParams trace_jacobi(const Metric& m, const SolverConfig& cfg_in, const Vec
   if (result) *result = r;
   return jacobi_params_from_state(m, y, r.lambda);
 }
-
-namespace {
-
-/// The Jacobi system as the driver sees it, with per-component tolerance scales (integrators.h
-/// ErrorScale): x, k and the Sachs basis keep eps_abs as in the geodesic system, each Jacobi field
-/// (Y_f, Y_f') is held to eps_abs relative to its own size max(1, max_i |(Y_f, Y_f')_i|). Why:
-/// the Jacobi equation is linear, the fields' scale is the arbitrary normalisation J'(0) = 1, and
-/// what the lensing parameters need is J = g(s_a, Y_b) to a relative accuracy (μ = λ²/det J,
-/// d± its singular values); Y grows like λ, and an absolute tolerance on it made the fields, not
-/// the ray, set the step (Kerr disk: 1.75x the steps of x, k, s alone; docs/PERFORMANCE.md).
-struct JacobiSystem : MetricSystem<MetricKernel, JacobiRHS<MetricKernel>> {
-  void tolerance_inv_scale(const double* y, double* is) const {
-    for (int i = 0; i < kJacobiY1; ++i) is[i] = 1.0;
-    for (int f = 0; f < 2; ++f) {
-      const double* Y = y + kJacobiY1 + 8 * f;  // Y_f (4) then Y_f' (4)
-      double size = 1.0;
-      for (int i = 0; i < 8; ++i) size = std::max(size, std::fabs(Y[i]));
-      const double inv = 1.0 / size;
-      for (int i = 0; i < 8; ++i) is[kJacobiY1 + 8 * f + i] = inv;
-    }
-  }
-};
-
-}  // namespace
 
 GeodesicResult integrate_jacobi_on_kernel(const MetricKernel& k, const SolverConfig& cfg, double* y, double lambda0,
                                           StepCallback cb) {

@@ -117,6 +117,32 @@ inline void contract_with_k(const ChristoffelT<D>& G, const Vec4& k, double Gk[4
 }
 }  // namespace jacobi_detail
 
+/// The Jacobi system's terms from a metric's acceleration template a^μ = accel(x, k) = −Γ^μ_{ab} k^a k^b
+/// on any number type (the templates of metrics/*_accel.h), by one evaluation on first-order duals
+/// with six slots: x seeded along Y_1 and Y_2 (slots 0, 1), k along the coordinate directions
+/// (slots 2-5). Since Γ^μ_{ab} is symmetric in a, b, ∂a^μ/∂k^b = −2 Γ^μ_{bc} k^c, so
+/// Gk[μ][b] = −½ a^μ.d[2+b]; and Y_f^ν ∂_ν a^μ = −Y_f^ν ∂_ν Γ^μ_{ab} k^a k^b, so dGkk[f][μ] =
+/// −a^μ.d[f]. Both are exact derivatives of the closed-form symbols (no differences). The packet
+/// integrator's packet_jacobi_terms_simd (simd.h) runs the same operations on SIMD lanes.
+template <class Accel>
+inline void jacobi_terms_from_accel(const Accel& accel, const Vec4& x, const Vec4& k, const Vec4 (&Y)[2],
+                                    JacobiTerms& t) {
+  using D = Dual<double, 6>;
+  Vec4T<D> xd, kd, a;
+  for (int i = 0; i < 4; ++i) {
+    xd[i] = D(x[i]);
+    xd[i].d[0] = Y[0][i];
+    xd[i].d[1] = Y[1][i];
+    kd[i] = D(k[i]);
+    kd[i].d[2 + i] = 1.0;
+  }
+  accel(xd, kd, a);
+  for (int mu = 0; mu < 4; ++mu) {
+    for (int b = 0; b < 4; ++b) t.Gk[mu][b] = a[mu].d[2 + b] * -0.5;
+    for (int f = 0; f < 2; ++f) t.dGkk[f][mu] = -a[mu].d[f];
+  }
+}
+
 /// The Jacobi system's terms (JacobiTerms, metric_kernel.h) without virtual calls or heap
 /// allocation. A metric may write them out (jacobi_terms_closed, e.g. KerrBL: twenty symbols, no
 /// zeros); a metric with closed-form symbols on any number type (has_christoffel_tmpl) evaluates
@@ -153,10 +179,6 @@ inline void jacobi_terms(const M& m, const Vec4& x, const Vec4& k, const Vec4 (&
 inline void jacobi_terms(const MetricKernel& m, const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) {
   m.jacobi_terms(x, k, Y, t);
 }
-
-/// Indices into the 32-component Jacobi state (header comment).
-constexpr int kJacobiX = 0, kJacobiK = 4, kJacobiS1 = 8, kJacobiS2 = 12, kJacobiY1 = 16, kJacobiDY1 = 20,
-              kJacobiY2 = 24, kJacobiDY2 = 28, kJacobiDim = 32;
 
 /// The Jacobi system (header comment). One evaluation of the Γ terms per stage (jacobi_terms)
 /// serves the transport of k, s1, s2 and both Jacobi fields: with Gk[μ][b] = Γ^μ_{bc} k^c and

@@ -16,6 +16,7 @@
 // the other systems and steppers through M's function table (metric_kernel.h).
 #pragma once
 
+#include <bit>
 #include <concepts>
 #include <memory>
 #include <type_traits>
@@ -124,6 +125,13 @@ class MetricCRTP : public Metric {
     m.packet_constraint_simd(y, 0.0, v, v);
   };
   bool has_simd_packet_constraint() const override { return kSimdConstraint; }
+  /// A metric with `void packet_jacobi_terms_simd(const double* y, double* t) const` (all lanes:
+  /// simd.h's packet_jacobi_terms_simd on its acceleration template) gives packets of rays with
+  /// their Jacobi fields (RGBjac) the Jacobi system's terms on SIMD lanes; the others evaluate
+  /// jacobi_terms lane by lane.
+  static constexpr bool kSimdJacobi = requires(const M& m, const double* y, double* t) {
+    m.packet_jacobi_terms_simd(y, t);
+  };
   /// A metric with `unsigned packet_is_valid_simd(const double* y) const` (all lanes, bit l: lane l;
   /// simd.h's packet_position_mask_simd on its is_valid template) gives packets of rays its
   /// validity test on SIMD lanes.
@@ -199,13 +207,15 @@ class MetricCRTP : public Metric {
   }
 
   bool integrate_jacobi_packet(const SolverConfig& cfg, const JacobiPacketRays& rays) const override {
+    if (!packet_solver(cfg.kind)) return false;
     if constexpr (kSeparable) {
       if (cfg.separable) {
         integrate_kerr_mino_jacobi_packet(*this, self().kerr_mino_params(), cfg, rays);
         return true;
       }
     }
-    return false;
+    integrate_jacobi_packet_on_kernel(MetricKernel::of(self()), cfg, rays);
+    return true;
   }
 
  protected:
@@ -346,6 +356,32 @@ MetricKernel MetricKernel::of(const M& m) {
               if (sys.escaped(c, yl, out.escape_radius[l])) out.escaped |= 1u << l;
             if constexpr (!M::kSimdCapture)
               if (sys.captured(c, yl)) out.captured |= 1u << l;
+          }
+        }
+      },
+      // The Jacobi system's terms of a packet: the metric's SIMD version where it has one, else
+      // jacobi_terms lane by lane (the function of the scalar integrator, so the same bits).
+      [](V p, const double* y, double* t, unsigned lanes) {
+        const M& mm = *static_cast<const M*>(p);
+        if constexpr (M::kSimdJacobi) {
+          mm.packet_jacobi_terms_simd(y, t);
+        } else {
+          constexpr int W = kPacketLanes;
+          for (unsigned todo = lanes; todo != 0; todo &= todo - 1) {
+            const int l = std::countr_zero(todo);
+            Vec4 x, k, Y[2];
+            for (int i = 0; i < 4; ++i) {
+              x[i] = y[(kJacobiX + i) * W + l];
+              k[i] = y[(kJacobiK + i) * W + l];
+              Y[0][i] = y[(kJacobiY1 + i) * W + l];
+              Y[1][i] = y[(kJacobiY2 + i) * W + l];
+            }
+            JacobiTerms jt;
+            geovis::jacobi_terms(mm, x, k, Y, jt);
+            for (int mu = 0; mu < 4; ++mu) {
+              for (int b = 0; b < 4; ++b) t[(4 * mu + b) * W + l] = jt.Gk[mu][b];
+              for (int f = 0; f < 2; ++f) t[(16 + 4 * f + mu) * W + l] = jt.dGkk[f][mu];
+            }
           }
         }
       },

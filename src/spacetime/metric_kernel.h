@@ -36,6 +36,14 @@ struct JacobiTerms {
   double Gk[4][4];
   double dGkk[2][4];
 };
+/// The terms of a packet's lanes (MetricKernel::packet_jacobi_terms), SoA: Gk[μ][b] at row 4μ + b,
+/// dGkk[f][μ] at row 16 + 4f + μ, kPacketLanes doubles per row.
+constexpr int kJacobiTermRows = 24;
+
+/// Indices into the 32-component state of the Jacobi system (jacobi.h header comment): x, k, the
+/// Sachs vectors s1, s2, the Jacobi fields Y1, Y2 and their derivatives Y1', Y2'.
+constexpr int kJacobiX = 0, kJacobiK = 4, kJacobiS1 = 8, kJacobiS2 = 12, kJacobiY1 = 16, kJacobiDY1 = 20,
+              kJacobiY2 = 24, kJacobiDY2 = 28, kJacobiDim = 32;
 
 /// The tests of MetricSystem (integrators.h) after an accepted step of a packet of rays
 /// (geodesic_packet.h), for the lanes asked for: the constraint's value and scale
@@ -71,6 +79,11 @@ struct MetricKernelOps {
   /// in `lanes` (the constraint on SIMD lanes for a metric with a g_μν template compiled per target).
   void (*packet_step_checks)(const void* m, const SolverConfig& c, const double* y, unsigned lanes,
                              PacketStepChecks& out);
+  /// The Jacobi system's terms (JacobiTerms) of the lanes in `lanes` of a packet of Jacobi states y
+  /// (kJacobiDim rows of kPacketLanes doubles) into t (kJacobiTermRows such rows): on SIMD lanes for
+  /// a metric with an acceleration template compiled per target (packet_jacobi_terms_simd), else
+  /// jacobi_terms lane by lane.
+  void (*packet_jacobi_terms)(const void* m, const double* y, double* t, unsigned lanes);
 };
 
 /// The view integrators.h instantiates once: it offers the member functions the ODE systems call
@@ -118,6 +131,9 @@ class MetricKernel {
   unsigned packet_valid(const double* y, unsigned lanes) const { return ops_->packet_valid(m_, y, lanes); }
   void packet_step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) const {
     ops_->packet_step_checks(m_, c, y, lanes, out);
+  }
+  void packet_jacobi_terms(const double* y, double* t, unsigned lanes) const {
+    ops_->packet_jacobi_terms(m_, y, t, lanes);
   }
 
   /// The table for metric type M (its members called through MetricCRTP's inline versions).

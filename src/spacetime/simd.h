@@ -23,6 +23,7 @@
 #include <hwy/highway.h>
 
 #include "spacetime/fast_math.h"
+#include "spacetime/metric_kernel.h"
 #include "spacetime/vec.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -170,6 +171,46 @@ HWY_API SimdD exp_t(SimdD x) {
   return er * SimdD(hn::BitCast(d, bits));
 }
 
+// Dual numbers of lanes: dual_arith.h's Dual compiled for this target (Dual<SimdD, K>: lane l of
+// each part is that of a Dual<double, K>), with the first-order functions of dual.h that the metric
+// templates call on them (chain, sqrt, sincos_t, sin_t, exp_t): the same operations, so a lane
+// equals the scalar dual number to the bit.
+#define GEOVIS_DUAL_ATTR HWY_ATTR __attribute__((always_inline))
+#include "spacetime/dual_arith.h"  // Dual: this target's copy
+#undef GEOVIS_DUAL_ATTR
+
+/// f(a) with f(a.v) = fv and f'(a.v) = dfv (dual.h chain).
+template <int K>
+HWY_INLINE Dual<SimdD, K> chain(const Dual<SimdD, K>& a, SimdD fv, SimdD dfv) {
+  Dual<SimdD, K> r;
+  r.v = fv;
+  for (int i = 0; i < K; ++i) r.d[i] = dfv * a.d[i];
+  return r;
+}
+template <int K>
+HWY_INLINE Dual<SimdD, K> sqrt(const Dual<SimdD, K>& a) {
+  const SimdD s = sqrt(a.v);
+  return chain(a, s, SimdD(0.5) / s);
+}
+template <int K>
+HWY_INLINE void sincos_t(const Dual<SimdD, K>& x, Dual<SimdD, K>& s, Dual<SimdD, K>& c) {
+  SimdD sv, cv;
+  sincos_t(x.v, sv, cv);
+  s = chain(x, sv, cv);
+  c = chain(x, cv, -sv);
+}
+template <int K>
+HWY_INLINE Dual<SimdD, K> sin_t(const Dual<SimdD, K>& x) {
+  SimdD sv, cv;
+  sincos_t(x.v, sv, cv);
+  return chain(x, sv, cv);
+}
+template <int K>
+HWY_INLINE Dual<SimdD, K> exp_t(const Dual<SimdD, K>& x) {
+  const SimdD e = exp_t(x.v);
+  return chain(x, e, e);
+}
+
 /// A metric's acceleration template a = accel(x, k) (Vec4T<SimdD>) on a packet of `stride` lanes
 /// in structure-of-arrays layout (geodesic_packet.h): y holds x^μ, k^μ (8 rows of `stride`
 /// doubles), a receives a^μ (4 rows), one SimdD of lanes at a time.
@@ -183,6 +224,31 @@ HWY_INLINE void packet_acceleration_simd(const F& accel, const double* y, double
     }
     accel(x, k, acc);
     for (int i = 0; i < 4; ++i) acc[i].store(a + i * stride + l);
+  }
+}
+
+/// The Jacobi system's terms (JacobiTerms, metric_kernel.h) of a packet's Jacobi states y (the
+/// layout of metric_kernel.h's kJacobi… rows, SoA of `stride` lanes) into t (kJacobiTermRows rows:
+/// Gk[μ][b] at row 4μ + b, dGkk[f][μ] at row 16 + 4f + μ) from a metric's acceleration template
+/// on first-order duals: jacobi_terms_from_accel (jacobi.h, where the derivation is) lane by lane,
+/// with the same operations.
+template <class F>
+HWY_INLINE void packet_jacobi_terms_simd(const F& accel, const double* y, double* t, size_t stride) {
+  using D = Dual<SimdD, 6>;
+  for (size_t l = 0; l < stride; l += SimdD::lanes()) {
+    Vec4T<D> x, k, a;
+    for (int i = 0; i < 4; ++i) {
+      x[i] = D(SimdD::load(y + (kJacobiX + i) * stride + l));
+      x[i].d[0] = SimdD::load(y + (kJacobiY1 + i) * stride + l);
+      x[i].d[1] = SimdD::load(y + (kJacobiY2 + i) * stride + l);
+      k[i] = D(SimdD::load(y + (kJacobiK + i) * stride + l));
+      k[i].d[2 + i] = SimdD(1.0);
+    }
+    accel(x, k, a);
+    for (int mu = 0; mu < 4; ++mu) {
+      for (int b = 0; b < 4; ++b) (a[mu].d[2 + b] * SimdD(-0.5)).store(t + (4 * mu + b) * stride + l);
+      for (int f = 0; f < 2; ++f) (-a[mu].d[f]).store(t + (16 + 4 * f + mu) * stride + l);
+    }
   }
 }
 

@@ -314,6 +314,98 @@ SolverConfig packet_config() {
   return cfg;
 }
 
+/// What one ray of the Jacobi system did: per accepted step λ0, λ1, index, y0, y1, dy0, dy1 (32
+/// components each) and the pseudo-Cartesian ends p0, p1 (−1 where not given); its end.
+struct JacobiRecord {
+  std::vector<double> steps;
+  double y[kJacobiDim] = {};
+  GeodesicResult res;
+  int stop_at = 0;  ///< the step callback stops the ray at this step (0: never)
+};
+
+StepAction record_jacobi(JacobiRecord& r, const StepView& st) {
+  EXPECT_EQ(st.dim, kJacobiDim);
+  r.steps.insert(r.steps.end(), {st.lambda0, st.lambda1, double(st.step_index)});
+  for (const double* v : {st.y0, st.y1, st.dy0, st.dy1}) r.steps.insert(r.steps.end(), v, v + kJacobiDim);
+  for (const double* p : {st.p0, st.p1}) {
+    if (p)
+      r.steps.insert(r.steps.end(), p, p + 3);
+    else
+      r.steps.push_back(-1.0);
+  }
+  return st.step_index == r.stop_at ? StepAction::Stop : StepAction::Continue;
+}
+
+/// Each start state's Jacobi system (jacobi.h) through Metric::integrate and through
+/// Metric::integrate_jacobi_packet on every SIMD target: the same steps, states and results to the
+/// bit. Returns the scalar runs.
+std::vector<JacobiRecord> expect_jacobi_packet_equals_scalar(const Metric& m, const SolverConfig& cfg,
+                                                             const std::vector<std::array<double, kJacobiDim>>& y0_all,
+                                                             const std::vector<int>& stop_at) {
+  // A ray on which the metric throws (HalilsoyWave: a Bessel function outside its domain) is left
+  // out; the others are compared.
+  std::vector<std::array<double, kJacobiDim>> y0;
+  std::vector<JacobiRecord> scalar;
+  for (size_t r = 0; r < y0_all.size(); ++r) {
+    JacobiRecord rec;
+    rec.stop_at = r < stop_at.size() ? stop_at[r] : 0;
+    double y[kMaxSystemDim] = {};
+    std::copy(y0_all[r].begin(), y0_all[r].end(), y);
+    auto cb = [&](const StepView& st) { return record_jacobi(rec, st); };
+    try {
+      rec.res = m.integrate(cfg, GeodesicSystem::Jacobi, y, 0.0, cb);
+    } catch (const std::exception&) {
+      continue;
+    }
+    std::copy(y, y + kJacobiDim, rec.y);
+    y0.push_back(y0_all[r]);
+    scalar.push_back(std::move(rec));
+  }
+  const size_t n = y0.size();
+  for_every_target([&] {
+    std::vector<JacobiRecord> packet(n);
+    for (size_t r = 0; r < n; ++r) packet[r].stop_at = scalar[r].stop_at;
+    RaySource source{y0};
+    size_t finished = 0;
+    auto next = [&](int lane, double* y) { return source(lane, y); };
+    auto on_step = [&](int lane, const StepView& st) { return record_jacobi(packet[source.lane_ray[lane]], st); };
+    auto done = [&](int lane, const double* y, const GeodesicResult& res) {
+      JacobiRecord& r = packet[source.lane_ray[lane]];
+      std::copy(y, y + kJacobiDim, r.y);
+      r.res = res;
+      ++finished;
+    };
+    ASSERT_TRUE(m.integrate_jacobi_packet(cfg, JacobiPacketRays{next, on_step, done}));
+    ASSERT_EQ(finished, n);
+    for (size_t r = 0; r < n; ++r) {
+      SCOPED_TRACE("ray " + std::to_string(r));
+      const JacobiRecord &a = scalar[r], &b = packet[r];
+      expect_same_run(b.res, a.res);
+      for (int i = 0; i < kJacobiDim; ++i)
+        EXPECT_TRUE(same_bits(b.y[i], a.y[i])) << "y[" << i << "] " << b.y[i] << " vs " << a.y[i];
+      ASSERT_EQ(b.steps.size(), a.steps.size());
+      for (size_t k = 0; k < a.steps.size(); ++k)
+        ASSERT_TRUE(same_bits(a.steps[k], b.steps[k])) << "entry " << k << ": " << a.steps[k] << " vs " << b.steps[k];
+    }
+  });
+  return scalar;
+}
+
+/// Jacobi start states (jacobi_initial_state) for a fan of n directions of the default tetrad at
+/// the sample position.
+std::vector<std::array<double, kJacobiDim>> jacobi_fan(const Metric& m, int n) {
+  const Vec4 x = m.info().sample_pos;
+  const Tetrad e = m.natural_tetrad(x, TetradKind::Default);
+  std::vector<std::array<double, kJacobiDim>> y;
+  for (int i = 0; i < n; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / n, rho = std::sqrt(1.0 - z * z), phi = 2.399963229728653 * i;
+    std::array<double, kJacobiDim> yi;
+    jacobi_initial_state(x, e, Vec3{rho * std::cos(phi), rho * std::sin(phi), z}, yi.data());
+    y.push_back(yi);
+  }
+  return y;
+}
+
 class PacketEveryMetric : public ::testing::TestWithParam<std::string> {};
 
 std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
@@ -345,6 +437,24 @@ TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
     }
   }
   EXPECT_GE(hwy::SupportedAndGeneratedTargets().size(), 2u) << "no SIMD target besides the scalar emulation";
+}
+
+// (a') RGBjac's Jacobi system in the metric's coordinates (integrate_jacobi_packet_on_kernel) on
+// every metric of the registry: 11 rays, one with its step callback stopping it, bit-identical to
+// the scalar integrator on every target with each tableau the packets serve. The Jacobi system's
+// terms come from the metric's SIMD acceleration template on dual lanes where it has one
+// (jacobi_terms_from_accel) and lane by lane otherwise, the same function as the scalar one's.
+TEST_P(PacketEveryMetric, JacobiSystemSameBitsAsTheScalarIntegrator) {
+  const auto m = make_metric(GetParam());
+  const auto y0 = jacobi_fan(*m, 11);
+  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54,
+                                SolverKind::DormandPrince853}) {
+    SCOPED_TRACE(solver_kind_name(kind));
+    SolverConfig cfg = packet_config();
+    cfg.kind = kind;
+    const auto runs = expect_jacobi_packet_equals_scalar(*m, cfg, y0, {0, 0, 5});
+    EXPECT_GE(runs.size(), 8u);  // at least a full packet compared
+  }
 }
 
 // Metric::pseudo_cartesian_radii (the renderer's radii of a packet's step ends) is each lane's
@@ -583,24 +693,6 @@ TEST(GeodesicPacket, MinoTimeAxisBoxLambdaMaxAndStepMax) {
 // coordinate system (KerrJacobi.MinoFlowDerivativesGiveTheCoordinateJacobiMatrix): bit identity
 // with the scalar path carries both over to the lanes.
 TEST(GeodesicPacket, KerrJacobiLanesAreTheScalarMinoJacobi) {
-  struct JacobiRecord {
-    std::vector<double> steps;  // per step: λ0, λ1, index, y0, y1, dy0, dy1 (32 each), p0, p1
-    double y[kJacobiDim] = {};
-    GeodesicResult res;
-    int stop_at = 0;
-  };
-  auto record = [](JacobiRecord& r, const StepView& st) {
-    EXPECT_EQ(st.dim, kJacobiDim);
-    r.steps.insert(r.steps.end(), {st.lambda0, st.lambda1, double(st.step_index)});
-    for (const double* v : {st.y0, st.y1, st.dy0, st.dy1}) r.steps.insert(r.steps.end(), v, v + kJacobiDim);
-    for (const double* p : {st.p0, st.p1}) {
-      if (p)
-        r.steps.insert(r.steps.end(), p, p + 3);
-      else
-        r.steps.push_back(-1.0);
-    }
-    return st.step_index == r.stop_at ? StepAction::Stop : StepAction::Continue;
-  };
   for (const double spin : {0.9, 0.0}) {
     SCOPED_TRACE(spin != 0.0 ? "KerrBL a = 0.9" : "Schwarzschild");
     const auto m = spin != 0.0 ? make_metric("KerrBL", {{"mass", 1.0}, {"angmom", spin}})
@@ -638,7 +730,7 @@ TEST(GeodesicPacket, KerrJacobiLanesAreTheScalarMinoJacobi) {
         scalar[r].stop_at = r % 4 == 1 ? 12 + static_cast<int>(r) : 0;
         double y[kMaxSystemDim] = {};
         std::copy(y0[r].begin(), y0[r].end(), y);
-        auto cb = [&](const StepView& st) { return record(scalar[r], st); };
+        auto cb = [&](const StepView& st) { return record_jacobi(scalar[r], st); };
         scalar[r].res = m->integrate(cfg, GeodesicSystem::Jacobi, y, 0.0, cb);
         std::copy(y, y + kJacobiDim, scalar[r].y);
         // The Mino-time path gives the steps' pseudo-Cartesian ends, the coordinate one does not.
@@ -650,7 +742,7 @@ TEST(GeodesicPacket, KerrJacobiLanesAreTheScalarMinoJacobi) {
         RaySource source{y0};
         size_t finished = 0;
         auto next = [&](int lane, double* y) { return source(lane, y); };
-        auto on_step = [&](int lane, const StepView& st) { return record(packet[source.lane_ray[lane]], st); };
+        auto on_step = [&](int lane, const StepView& st) { return record_jacobi(packet[source.lane_ray[lane]], st); };
         auto done = [&](int lane, const double* y, const GeodesicResult& res) {
           JacobiRecord& r = packet[source.lane_ray[lane]];
           std::copy(y, y + kJacobiDim, r.y);
@@ -679,7 +771,7 @@ TEST(GeodesicPacket, KerrJacobiLanesAreTheScalarMinoJacobi) {
           JacobiRecord& r = on_request[source.lane_ray[lane]];
           if (st.step_index % 3 != 0) return st.step_index == r.stop_at ? StepAction::Stop : StepAction::Continue;
           st.ensure_states();
-          return record(r, st);
+          return record_jacobi(r, st);
         };
         auto done_on_request = [&](int, const double*, const GeodesicResult&) { ++finished; };
         ASSERT_TRUE(m->integrate_jacobi_packet(cfg, JacobiPacketRays{next, on_step_on_request, done_on_request, true}));
@@ -707,13 +799,17 @@ TEST(GeodesicPacket, KerrJacobiLanesAreTheScalarMinoJacobi) {
     // to the coordinate system, in the packet as in Metric::integrate.
     EXPECT_EQ(mino_rays, 3 * (static_cast<int>(n) - 2));
   }
-  // No packet path: the coordinate form (separable off) and metrics without Carter's equations.
-  SolverConfig coordinate;
-  coordinate.separable = false;
+  // No packet path for a solver the packets do not serve; the coordinate form (separable off) and
+  // the metrics without Carter's equations have one (JacobiSystemSameBitsAsTheScalarIntegrator).
+  SolverConfig other;
+  other.kind = SolverKind::BulirschStoer;
   auto next = [](int, double*) { return false; };
   auto done = [](int, const double*, const GeodesicResult&) {};
-  EXPECT_FALSE(make_metric("KerrBL")->integrate_jacobi_packet(coordinate, JacobiPacketRays{next, {}, done}));
-  EXPECT_FALSE(make_metric("Minkowski")->integrate_jacobi_packet(SolverConfig{}, JacobiPacketRays{next, {}, done}));
+  EXPECT_FALSE(make_metric("KerrBL")->integrate_jacobi_packet(other, JacobiPacketRays{next, {}, done}));
+  EXPECT_FALSE(make_metric("Minkowski")->integrate_jacobi_packet(other, JacobiPacketRays{next, {}, done}));
+  SolverConfig coordinate;
+  coordinate.separable = false;
+  EXPECT_TRUE(make_metric("KerrBL")->integrate_jacobi_packet(coordinate, JacobiPacketRays{next, {}, done}));
 }
 
 // Fixed step (no error control), λ_max clipping and a bounding box, on KerrBL's coordinate form.

@@ -65,6 +65,14 @@ class BarriolaVilenkin final : public MetricCRTP<BarriolaVilenkin> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::barriola_vilenkin_accel(k2_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The Jacobi system's terms (RGBjac) from the acceleration template on dual numbers
+  /// (jacobi_terms_from_accel, jacobi.h), and the same on every lane of a packet, SIMD.
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    jacobi_terms_from_accel(
+        [this](const auto& xx, const auto& kk, auto& a) { scalar::barriola_vilenkin_accel(k2_, xx, kk, a); }, x, k, Y,
+        t);
+  }
+  void packet_jacobi_terms_simd(const double* y, double* t) const;
   /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
   void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
@@ -111,6 +119,10 @@ void barriola_vilenkin_packet_acceleration(double k2, const double* y, double* a
       [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { barriola_vilenkin_accel(k2, x, k, acc); },
       y, a, kPacketLanes);
 }
+void barriola_vilenkin_packet_jacobi_terms(double k2, const double* y, double* t) {
+  packet_jacobi_terms_simd([&](const auto& x, const auto& k, auto& a) { barriola_vilenkin_accel(k2, x, k, a); }, y, t,
+                           kPacketLanes);
+}
 void barriola_vilenkin_packet_constraint(double k2, const double* y, double target, double* value, double* scale) {
   packet_constraint_simd([k2](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { barriola_vilenkin_metric_tensor(k2, x, g); }, y,
                          target, value, scale, kPacketLanes);
@@ -124,6 +136,10 @@ namespace geovis {
 HWY_EXPORT(barriola_vilenkin_packet_acceleration);
 void BarriolaVilenkin::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(barriola_vilenkin_packet_acceleration)(k2_, y, a);
+}
+HWY_EXPORT(barriola_vilenkin_packet_jacobi_terms);
+void BarriolaVilenkin::packet_jacobi_terms_simd(const double* y, double* t) const {
+  HWY_DYNAMIC_DISPATCH(barriola_vilenkin_packet_jacobi_terms)(k2_, y, t);
 }
 HWY_EXPORT(barriola_vilenkin_packet_constraint);
 void BarriolaVilenkin::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {

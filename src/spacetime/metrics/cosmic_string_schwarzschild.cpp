@@ -75,6 +75,14 @@ class CosmicStringSchwarzschild final : public MetricCRTP<CosmicStringSchwarzsch
   }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The Jacobi system's terms (RGBjac) from the acceleration template on dual numbers
+  /// (jacobi_terms_from_accel, jacobi.h), and the same on every lane of a packet, SIMD.
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    jacobi_terms_from_accel([this](const auto& xx, const auto& kk,
+                                   auto& a) { scalar::cosmic_string_schwarzschild_accel(rs_, b2_, xx, kk, a); },
+                            x, k, Y, t);
+  }
+  void packet_jacobi_terms_simd(const double* y, double* t) const;
   /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
   void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
@@ -134,6 +142,11 @@ void cosmic_string_schwarzschild_packet_acceleration(double rs, double b2, const
                                Vec4T<SimdD>& acc) { cosmic_string_schwarzschild_accel(rs, b2, x, k, acc); },
                            y, a, kPacketLanes);
 }
+void cosmic_string_schwarzschild_packet_jacobi_terms(double rs, double b2, const double* y, double* t) {
+  packet_jacobi_terms_simd(
+      [&](const auto& x, const auto& k, auto& a) { cosmic_string_schwarzschild_accel(rs, b2, x, k, a); }, y, t,
+      kPacketLanes);
+}
 void cosmic_string_schwarzschild_packet_constraint(double rs, double b2, const double* y, double target, double* value,
                                                    double* scale) {
   packet_constraint_simd(
@@ -149,6 +162,10 @@ namespace geovis {
 HWY_EXPORT(cosmic_string_schwarzschild_packet_acceleration);
 void CosmicStringSchwarzschild::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(cosmic_string_schwarzschild_packet_acceleration)(rs_, b2_, y, a);
+}
+HWY_EXPORT(cosmic_string_schwarzschild_packet_jacobi_terms);
+void CosmicStringSchwarzschild::packet_jacobi_terms_simd(const double* y, double* t) const {
+  HWY_DYNAMIC_DISPATCH(cosmic_string_schwarzschild_packet_jacobi_terms)(rs_, b2_, y, t);
 }
 HWY_EXPORT(cosmic_string_schwarzschild_packet_constraint);
 void CosmicStringSchwarzschild::packet_constraint_simd(const double* y, double target, double* value,

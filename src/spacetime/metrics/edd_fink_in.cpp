@@ -77,6 +77,13 @@ class EddFinkIn final : public MetricCRTP<EddFinkIn> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::edd_fink_in_accel(rs_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The Jacobi system's terms (RGBjac) from the acceleration template on dual numbers
+  /// (jacobi_terms_from_accel, jacobi.h), and the same on every lane of a packet, SIMD.
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    jacobi_terms_from_accel(
+        [this](const auto& xx, const auto& kk, auto& a) { scalar::edd_fink_in_accel(rs_, xx, kk, a); }, x, k, Y, t);
+  }
+  void packet_jacobi_terms_simd(const double* y, double* t) const;
   /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
   void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
   /// is_valid on every lane of a packet, SIMD (bit l: lane l); the packet's validity test was
@@ -203,6 +210,10 @@ void edd_fink_in_packet_acceleration(double rs, const double* y, double* a) {
       [rs](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { edd_fink_in_accel(rs, x, k, acc); }, y,
       a, kPacketLanes);
 }
+void edd_fink_in_packet_jacobi_terms(double rs, const double* y, double* t) {
+  packet_jacobi_terms_simd([&](const auto& x, const auto& k, auto& a) { edd_fink_in_accel(rs, x, k, a); }, y, t,
+                           kPacketLanes);
+}
 void edd_fink_in_packet_constraint(double rs, const double* y, double target, double* value, double* scale) {
   packet_constraint_simd([rs](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { edd_fink_in_metric_tensor(rs, x, g); },
                          [rs](const Vec4T<SimdD>& x, const Mat4T<SimdD>& g, const Vec4T<SimdD>& k) {
@@ -257,6 +268,10 @@ namespace geovis {
 HWY_EXPORT(edd_fink_in_packet_acceleration);
 void EddFinkIn::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(edd_fink_in_packet_acceleration)(rs_, y, a);
+}
+HWY_EXPORT(edd_fink_in_packet_jacobi_terms);
+void EddFinkIn::packet_jacobi_terms_simd(const double* y, double* t) const {
+  HWY_DYNAMIC_DISPATCH(edd_fink_in_packet_jacobi_terms)(rs_, y, t);
 }
 HWY_EXPORT(edd_fink_in_packet_is_valid);
 unsigned EddFinkIn::packet_is_valid_simd(const double* y) const {

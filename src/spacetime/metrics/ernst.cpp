@@ -65,6 +65,13 @@ class Ernst final : public MetricCRTP<Ernst> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::ernst_accel(B2_, rs_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The Jacobi system's terms (RGBjac) from the acceleration template on dual numbers
+  /// (jacobi_terms_from_accel, jacobi.h), and the same on every lane of a packet, SIMD.
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    jacobi_terms_from_accel(
+        [this](const auto& xx, const auto& kk, auto& a) { scalar::ernst_accel(B2_, rs_, xx, kk, a); }, x, k, Y, t);
+  }
+  void packet_jacobi_terms_simd(const double* y, double* t) const;
   /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
   void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
@@ -111,6 +118,10 @@ void ernst_packet_acceleration(double B2, double rs, const double* y, double* a)
       [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { ernst_accel(B2, rs, x, k, acc); }, y, a,
       kPacketLanes);
 }
+void ernst_packet_jacobi_terms(double B2, double rs, const double* y, double* t) {
+  packet_jacobi_terms_simd([&](const auto& x, const auto& k, auto& a) { ernst_accel(B2, rs, x, k, a); }, y, t,
+                           kPacketLanes);
+}
 void ernst_packet_constraint(double B2, double rs, const double* y, double target, double* value, double* scale) {
   packet_constraint_simd([B2, rs](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { ernst_metric_tensor(B2, rs, x, g); }, y,
                          target, value, scale, kPacketLanes);
@@ -124,6 +135,10 @@ namespace geovis {
 HWY_EXPORT(ernst_packet_acceleration);
 void Ernst::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(ernst_packet_acceleration)(B2_, rs_, y, a);
+}
+HWY_EXPORT(ernst_packet_jacobi_terms);
+void Ernst::packet_jacobi_terms_simd(const double* y, double* t) const {
+  HWY_DYNAMIC_DISPATCH(ernst_packet_jacobi_terms)(B2_, rs_, y, t);
 }
 HWY_EXPORT(ernst_packet_constraint);
 void Ernst::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {

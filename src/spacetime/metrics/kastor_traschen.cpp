@@ -105,6 +105,14 @@ class KastorTraschen final : public MetricCRTP<KastorTraschen> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::kastor_traschen_accel(prm_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The Jacobi system's terms (RGBjac) from the acceleration template on dual numbers
+  /// (jacobi_terms_from_accel, jacobi.h), and the same on every lane of a packet, SIMD.
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    jacobi_terms_from_accel(
+        [this](const auto& xx, const auto& kk, auto& a) { scalar::kastor_traschen_accel(prm_, xx, kk, a); }, x, k, Y,
+        t);
+  }
+  void packet_jacobi_terms_simd(const double* y, double* t) const;
   /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
   void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
@@ -181,6 +189,10 @@ void kastor_traschen_packet_acceleration(const KastorTraschenParams& p, const do
       [&p](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { kastor_traschen_accel(p, x, k, acc); },
       y, a, kPacketLanes);
 }
+void kastor_traschen_packet_jacobi_terms(const KastorTraschenParams& p, const double* y, double* t) {
+  packet_jacobi_terms_simd([&](const auto& x, const auto& k, auto& a) { kastor_traschen_accel(p, x, k, a); }, y, t,
+                           kPacketLanes);
+}
 unsigned kastor_traschen_packet_is_valid(const KastorTraschenParams& p, double r_break1, double r_break2,
                                          double horizon_eps, const double* y) {
   return packet_position_mask_simd(
@@ -209,6 +221,10 @@ namespace geovis {
 HWY_EXPORT(kastor_traschen_packet_acceleration);
 void KastorTraschen::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(kastor_traschen_packet_acceleration)(prm_, y, a);
+}
+HWY_EXPORT(kastor_traschen_packet_jacobi_terms);
+void KastorTraschen::packet_jacobi_terms_simd(const double* y, double* t) const {
+  HWY_DYNAMIC_DISPATCH(kastor_traschen_packet_jacobi_terms)(prm_, y, t);
 }
 HWY_EXPORT(kastor_traschen_packet_is_valid);
 unsigned KastorTraschen::packet_is_valid_simd(const double* y) const {

@@ -69,6 +69,13 @@ class Kottler final : public MetricCRTP<Kottler> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::kottler_accel(M_, L_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The Jacobi system's terms (RGBjac) from the acceleration template on dual numbers
+  /// (jacobi_terms_from_accel, jacobi.h), and the same on every lane of a packet, SIMD.
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    jacobi_terms_from_accel(
+        [this](const auto& xx, const auto& kk, auto& a) { scalar::kottler_accel(M_, L_, xx, kk, a); }, x, k, Y, t);
+  }
+  void packet_jacobi_terms_simd(const double* y, double* t) const;
   /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
   void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
@@ -133,6 +140,10 @@ void kottler_packet_acceleration(double M, double L, const double* y, double* a)
       [=](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { kottler_accel(M, L, x, k, acc); }, y, a,
       kPacketLanes);
 }
+void kottler_packet_jacobi_terms(double M, double L, const double* y, double* t) {
+  packet_jacobi_terms_simd([&](const auto& x, const auto& k, auto& a) { kottler_accel(M, L, x, k, a); }, y, t,
+                           kPacketLanes);
+}
 void kottler_packet_constraint(double M, double L, const double* y, double target, double* value, double* scale) {
   packet_constraint_simd([M, L](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { kottler_metric_tensor(M, L, x, g); }, y,
                          target, value, scale, kPacketLanes);
@@ -146,6 +157,10 @@ namespace geovis {
 HWY_EXPORT(kottler_packet_acceleration);
 void Kottler::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(kottler_packet_acceleration)(M_, L_, y, a);
+}
+HWY_EXPORT(kottler_packet_jacobi_terms);
+void Kottler::packet_jacobi_terms_simd(const double* y, double* t) const {
+  HWY_DYNAMIC_DISPATCH(kottler_packet_jacobi_terms)(M_, L_, y, t);
 }
 HWY_EXPORT(kottler_packet_constraint);
 void Kottler::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {

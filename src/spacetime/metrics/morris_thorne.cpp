@@ -77,6 +77,13 @@ class MorrisThorne final : public MetricCRTP<MorrisThorne> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::morris_thorne_accel(b02_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The Jacobi system's terms (RGBjac) from the acceleration template on dual numbers
+  /// (jacobi_terms_from_accel, jacobi.h), and the same on every lane of a packet, SIMD.
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    jacobi_terms_from_accel(
+        [this](const auto& xx, const auto& kk, auto& a) { scalar::morris_thorne_accel(b02_, xx, kk, a); }, x, k, Y, t);
+  }
+  void packet_jacobi_terms_simd(const double* y, double* t) const;
   /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
   void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
   /// is_valid on every lane of a packet, SIMD (bit l: lane l); the packet's validity test was
@@ -161,6 +168,10 @@ void morris_thorne_packet_acceleration(double b02, const double* y, double* a) {
       [b02](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { morris_thorne_accel(b02, x, k, acc); },
       y, a, kPacketLanes);
 }
+void morris_thorne_packet_jacobi_terms(double b02, const double* y, double* t) {
+  packet_jacobi_terms_simd([&](const auto& x, const auto& k, auto& a) { morris_thorne_accel(b02, x, k, a); }, y, t,
+                           kPacketLanes);
+}
 void morris_thorne_packet_constraint(double b02, const double* y, double target, double* value, double* scale) {
   packet_diagonal_constraint_simd(
       [b02](const Vec4T<SimdD>& x, SimdD(&g)[4]) { morris_thorne_metric_diagonal(b02, x, g); }, y, target, value, scale,
@@ -214,6 +225,10 @@ namespace geovis {
 HWY_EXPORT(morris_thorne_packet_acceleration);
 void MorrisThorne::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(morris_thorne_packet_acceleration)(b02_, y, a);
+}
+HWY_EXPORT(morris_thorne_packet_jacobi_terms);
+void MorrisThorne::packet_jacobi_terms_simd(const double* y, double* t) const {
+  HWY_DYNAMIC_DISPATCH(morris_thorne_packet_jacobi_terms)(b02_, y, t);
 }
 HWY_EXPORT(morris_thorne_packet_is_valid);
 unsigned MorrisThorne::packet_is_valid_simd(const double* y) const {

@@ -68,6 +68,14 @@ class ReissnerNordstrom final : public MetricCRTP<ReissnerNordstrom> {
   void accel_closed(const Vec4& x, const Vec4& k, Vec4& a) const { scalar::reissner_nordstrom_accel(M_, Q2_, x, k, a); }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The Jacobi system's terms (RGBjac) from the acceleration template on dual numbers
+  /// (jacobi_terms_from_accel, jacobi.h), and the same on every lane of a packet, SIMD.
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    jacobi_terms_from_accel(
+        [this](const auto& xx, const auto& kk, auto& a) { scalar::reissner_nordstrom_accel(M_, Q2_, xx, kk, a); }, x, k,
+        Y, t);
+  }
+  void packet_jacobi_terms_simd(const double* y, double* t) const;
   /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
   void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
@@ -144,6 +152,10 @@ void reissner_nordstrom_packet_acceleration(double M, double Q2, const double* y
                                Vec4T<SimdD>& acc) { reissner_nordstrom_accel(M, Q2, x, k, acc); },
                            y, a, kPacketLanes);
 }
+void reissner_nordstrom_packet_jacobi_terms(double M, double Q2, const double* y, double* t) {
+  packet_jacobi_terms_simd([&](const auto& x, const auto& k, auto& a) { reissner_nordstrom_accel(M, Q2, x, k, a); }, y,
+                           t, kPacketLanes);
+}
 void reissner_nordstrom_packet_constraint(double M, double Q2, const double* y, double target, double* value,
                                           double* scale) {
   packet_constraint_simd(
@@ -159,6 +171,10 @@ namespace geovis {
 HWY_EXPORT(reissner_nordstrom_packet_acceleration);
 void ReissnerNordstrom::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(reissner_nordstrom_packet_acceleration)(M_, Q2_, y, a);
+}
+HWY_EXPORT(reissner_nordstrom_packet_jacobi_terms);
+void ReissnerNordstrom::packet_jacobi_terms_simd(const double* y, double* t) const {
+  HWY_DYNAMIC_DISPATCH(reissner_nordstrom_packet_jacobi_terms)(M_, Q2_, y, t);
 }
 HWY_EXPORT(reissner_nordstrom_packet_constraint);
 void ReissnerNordstrom::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {

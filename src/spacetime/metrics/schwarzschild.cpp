@@ -75,6 +75,13 @@ class Schwarzschild final : public MetricCRTP<Schwarzschild> {
   }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The Jacobi system's terms (RGBjac) from the acceleration template on dual numbers
+  /// (jacobi_terms_from_accel, jacobi.h), and the same on every lane of a packet, SIMD.
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    jacobi_terms_from_accel(
+        [this](const auto& xx, const auto& kk, auto& a) { scalar::schwarzschild_accel(rs_, xx, kk, a); }, x, k, Y, t);
+  }
+  void packet_jacobi_terms_simd(const double* y, double* t) const;
   /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
   void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
@@ -149,6 +156,10 @@ void schwarzschild_packet_acceleration(double rs, const double* y, double* a) {
       [rs](const Vec4T<SimdD>& x, const Vec4T<SimdD>& k, Vec4T<SimdD>& acc) { schwarzschild_accel(rs, x, k, acc); },
       y, a, kPacketLanes);
 }
+void schwarzschild_packet_jacobi_terms(double rs, const double* y, double* t) {
+  packet_jacobi_terms_simd([&](const auto& x, const auto& k, auto& a) { schwarzschild_accel(rs, x, k, a); }, y, t,
+                           kPacketLanes);
+}
 void schwarzschild_packet_constraint(double rs, const double* y, double target, double* value, double* scale) {
   packet_constraint_simd([rs](const Vec4T<SimdD>& x, Mat4T<SimdD>& g) { schwarzschild_metric_tensor(rs, x, g); }, y,
                          target, value, scale, kPacketLanes);
@@ -162,6 +173,10 @@ namespace geovis {
 HWY_EXPORT(schwarzschild_packet_acceleration);
 void Schwarzschild::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(schwarzschild_packet_acceleration)(rs_, y, a);
+}
+HWY_EXPORT(schwarzschild_packet_jacobi_terms);
+void Schwarzschild::packet_jacobi_terms_simd(const double* y, double* t) const {
+  HWY_DYNAMIC_DISPATCH(schwarzschild_packet_jacobi_terms)(rs_, y, t);
 }
 HWY_EXPORT(schwarzschild_packet_constraint);
 void Schwarzschild::packet_constraint_simd(const double* y, double target, double* value, double* scale) const {

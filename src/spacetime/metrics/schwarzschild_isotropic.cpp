@@ -66,6 +66,14 @@ class SchwarzschildIsotropic final : public MetricCRTP<SchwarzschildIsotropic> {
   }
   /// The same on every lane of a packet (geodesic_packet.h), SIMD.
   void packet_acceleration_simd(const double* y, double* a) const;
+  /// The Jacobi system's terms (RGBjac) from the acceleration template on dual numbers
+  /// (jacobi_terms_from_accel, jacobi.h), and the same on every lane of a packet, SIMD.
+  void jacobi_terms_closed(const Vec4& x, const Vec4& k, const Vec4 (&Y)[2], JacobiTerms& t) const {
+    jacobi_terms_from_accel(
+        [this](const auto& xx, const auto& kk, auto& a) { scalar::schwarzschild_isotropic_accel(rho_s_, xx, kk, a); },
+        x, k, Y, t);
+  }
+  void packet_jacobi_terms_simd(const double* y, double* t) const;
   /// The integrator's constraint test (MetricSystem::constraint) on every lane of a packet, SIMD.
   void packet_constraint_simd(const double* y, double target, double* value, double* scale) const;
 
@@ -128,6 +136,11 @@ void schwarzschild_isotropic_packet_acceleration(double rho_s, const double* y, 
                                Vec4T<SimdD>& acc) { schwarzschild_isotropic_accel(rho_s, x, k, acc); },
                            y, a, kPacketLanes);
 }
+void schwarzschild_isotropic_packet_jacobi_terms(double rho_s, const double* y, double* t) {
+  packet_jacobi_terms_simd(
+      [&](const auto& x, const auto& k, auto& a) { schwarzschild_isotropic_accel(rho_s, x, k, a); }, y, t,
+      kPacketLanes);
+}
 void schwarzschild_isotropic_packet_constraint(double rho_s, const double* y, double target, double* value,
                                                double* scale) {
   packet_constraint_simd(
@@ -143,6 +156,10 @@ namespace geovis {
 HWY_EXPORT(schwarzschild_isotropic_packet_acceleration);
 void SchwarzschildIsotropic::packet_acceleration_simd(const double* y, double* a) const {
   HWY_DYNAMIC_DISPATCH(schwarzschild_isotropic_packet_acceleration)(rho_s_, y, a);
+}
+HWY_EXPORT(schwarzschild_isotropic_packet_jacobi_terms);
+void SchwarzschildIsotropic::packet_jacobi_terms_simd(const double* y, double* t) const {
+  HWY_DYNAMIC_DISPATCH(schwarzschild_isotropic_packet_jacobi_terms)(rho_s_, y, t);
 }
 HWY_EXPORT(schwarzschild_isotropic_packet_constraint);
 void SchwarzschildIsotropic::packet_constraint_simd(const double* y, double target, double* value,
