@@ -2,15 +2,17 @@
 // (one core, `gvsRender`, first frame unless noted; the figures of the table below were measured
 // with GeoViS on the project's build machine kind, 2 vCPU AMD EPYC KVM guest) and prints our pixels
 // per CPU-second and integration steps per ray next to GeoViS's, the speed-up per scene and its
-// geometric mean, the cost of the data filters (RGBpdz, RGBjac) relative to RGB, and the speed-up
+// geometric mean, the cost of the data filters (RGBpdz, RGBjac) relative to RGB on three scenes, and the speed-up
 // of two threads over one. Each scene is also rendered on the reference path (RenderJob::
 // reference_tracing: every ray alone through the integrator, no SIMD packets, straight lines,
 // escape or capture stops) and the fraction of pixels differing from it by more than 25/255 in a
 // channel is printed (issue 13: at most 0.5 %).
 //
 //   cmake --build build --target geovis_scene_bench && build/bench/geovis_scene_bench [--quick] [--gyoto] [--repeat N]
+//       [--only scenes|filters|threads]
 //
 // --quick renders every scene at a quarter of the pixels (half width and height) for a smoke run.
+// --only runs one part: the seven scenes (with Gyoto), the data filters' cost or the thread scaling.
 // --gyoto also times Gyoto (Debian gyoto-bin) on bench/gyoto/gyoto-kerr-disk.xml, one thread, 128×128, as
 // issue 13 timed it on the machine GeoViS was measured on (17.05 s), and prints the ratios also with GeoViS's
 // figures scaled to this machine by that ratio: machines of the same kind differ by up to 3× in speed (Gyoto took
@@ -182,6 +184,9 @@ int main(int argc, char** argv) {
   app.add_flag("--gyoto", gyoto, "also time Gyoto on bench/gyoto/gyoto-kerr-disk.xml and calibrate by it");
   app.add_option("--repeat", repeat, "measure every figure this many times and report the fastest")
       ->check(CLI::Range(1, 100));
+  std::string only;
+  app.add_option("--only", only, "only one part: the seven scenes, the data filters or the threads")
+      ->check(CLI::IsMember({"scenes", "filters", "threads"}));
   CLI11_PARSE(app, argc, argv);
 
   const fs::path data = fs::path(GEOVIS_SOURCE_DIR) / "tests" / "data";
@@ -195,114 +200,126 @@ int main(int argc, char** argv) {
   const int div = quick ? 2 : 1;
   std::printf("every figure: the fastest of %d runs (the slowest in brackets)\n", repeat);
 
-  // Gyoto before our scenes (and again after them, below).
-  Spread gyoto_cpu;
-  bool gyoto_failed = false;
-  if (gyoto) {
-    std::fprintf(stderr, "timing Gyoto ...\n");
-    const double g = time_gyoto(tex);
-    if (g > 0) gyoto_cpu.add(g);
-    gyoto_failed = g <= 0;
-  }
-
-  std::vector<SceneResult> results;
-  for (const SceneCase& s : kScenes) {
-    SceneResult r{&s, s.width / div, s.height / div, {}, {}, 0, {}};
-    std::fprintf(stderr, "rendering %s ...\n", s.name);
-    try {
-      const fs::path file = data / s.file;
-      for (int k = 0; k < repeat; ++k) add_run(r.ours, render_scene(file, search, r.w, r.h, s.frame, 1));
-      r.reference = render_scene(file, search, r.w, r.h, s.frame, 1, nullptr, true);
-      r.differ = match_images(r.ours.fastest.image, r.reference.image).differ;
-    } catch (const std::exception& e) {
-      r.error = e.what();
+  if (only.empty() || only == "scenes") {
+    // Gyoto before our scenes (and again after them, below).
+    Spread gyoto_cpu;
+    bool gyoto_failed = false;
+    if (gyoto) {
+      std::fprintf(stderr, "timing Gyoto ...\n");
+      const double g = time_gyoto(tex);
+      if (g > 0) gyoto_cpu.add(g);
+      gyoto_failed = g <= 0;
     }
-    results.push_back(std::move(r));
-  }
 
-  if (gyoto && !gyoto_failed) {
-    std::fprintf(stderr, "timing Gyoto again ...\n");
-    const double g = time_gyoto(tex);
-    if (g > 0) gyoto_cpu.add(g);
-  }
-  // Speed of this machine relative to the one GeoViS's figures come from (1: not calibrated).
-  double speed = 1.0;
-  if (gyoto_cpu.n > 0) {
-    speed = kGyotoSecondsThere / gyoto_cpu.best;
-    std::printf(
-        "Gyoto 1 thread 128x128: %.2f CPU s here (%.2f), %.2f s on GeoViS's machine: this machine is %.2fx as fast; "
-        "\"cal.\" = ratio against GeoViS's figures scaled by that\n",
-        gyoto_cpu.best, gyoto_cpu.worst, kGyotoSecondsThere, speed);
-  } else if (gyoto) {
-    std::printf("Gyoto could not run (apt-get install gyoto-bin): ratios not calibrated\n");
-  }
-
-  std::printf("%-24s %9s %18s %12s %8s %10s %10s %10s %9s\n", "scene", "res", "ours px/s (slowest)", "GeoViS px/s",
-              "ratio", "steps/ray", "GeoViS", "reference", "differ");
-  double log_sum = 0, log_sum_cal = 0;
-  int n = 0;
-  double worst = 1e300;
-  for (const SceneResult& r : results) {
-    const SceneCase& s = *r.scene;
-    if (!r.error.empty()) {
-      std::printf("%-24s error: %s\n", s.name, r.error.c_str());
-      continue;
+    std::vector<SceneResult> results;
+    for (const SceneCase& s : kScenes) {
+      SceneResult r{&s, s.width / div, s.height / div, {}, {}, 0, {}};
+      std::fprintf(stderr, "rendering %s ...\n", s.name);
+      try {
+        const fs::path file = data / s.file;
+        for (int k = 0; k < repeat; ++k) add_run(r.ours, render_scene(file, search, r.w, r.h, s.frame, 1));
+        r.reference = render_scene(file, search, r.w, r.h, s.frame, 1, nullptr, true);
+        r.differ = match_images(r.ours.fastest.image, r.reference.image).differ;
+      } catch (const std::exception& e) {
+        r.error = e.what();
+      }
+      results.push_back(std::move(r));
     }
-    const Measured& m = r.ours.fastest;
-    const double pxs = r.w * r.h / r.ours.cpu.best, slowest = r.w * r.h / r.ours.cpu.worst;
-    const double ratio = pxs / s.geovis_px_per_s;
-    log_sum += std::log(ratio);
-    log_sum_cal += std::log(ratio / speed);
-    worst = std::min(worst, ratio);
-    ++n;
-    char gsteps[32] = "-";
-    if (s.geovis_steps > 0) std::snprintf(gsteps, sizeof gsteps, "%.0f", s.geovis_steps);
-    std::printf("%-24s %4dx%-4d %9.0f (%7.0f) %12.0f %7.2fx %10.0f %10s %10.0f %8.3f%%", s.name, r.w, r.h, pxs,
-                slowest, s.geovis_px_per_s, ratio, m.rays ? double(m.steps) / m.rays : 0.0, gsteps,
-                r.reference.rays ? double(r.reference.steps) / r.reference.rays : 0.0, 100.0 * r.differ);
-    if (speed != 1.0) std::printf("  cal. %.2fx", ratio / speed);
-    std::printf("\n");
-  }
-  if (n)
-    std::printf(
-        "geometric mean %.2fx GeoViS per core (goal 30x), worst scene %.2fx (goal 10x); \"reference\": steps/ray "
-        "on the reference path, \"differ\": pixels differing from it by > 25/255 (goal <= 0.5 %%)\n",
-        std::exp(log_sum / n), worst);
-  if (n && speed != 1.0)
-    std::printf("calibrated to GeoViS's machine by Gyoto: geometric mean %.2fx, worst scene %.2fx\n",
-                std::exp(log_sum_cal / n), worst / speed);
-  std::fflush(stdout);
 
-  // Data filters on the Kerr disk at the table's resolution, interleaved.
-  std::fprintf(stderr, "rendering the data filters ...\n");
-  const fs::path kerr = data / "geovis/scenes/kerrAccretionDisk.scm";
-  const int fw = 400 / div, fh = 400 / div;
-  const Filter rgb = Filter::RGB, pdz = Filter::RGBpdz, jac = Filter::RGBjac;
-  Repeated m_rgb, m_pdz, m_jac;
-  for (int k = 0; k < repeat; ++k) {
-    add_run(m_rgb, render_scene(kerr, search, fw, fh, 0, 1, &rgb));
-    add_run(m_pdz, render_scene(kerr, search, fw, fh, 0, 1, &pdz));
-    add_run(m_jac, render_scene(kerr, search, fw, fh, 0, 1, &jac));
-  }
-  std::printf(
-      "kerrAccretionDisk %dx%d CPU s: RGB %.2f (%.2f), RGBpdz %.2f (%.2f): %.2fx, goal <= 1.1x; RGBjac %.2f (%.2f): "
-      "%.2fx, goal <= 3x\n",
-      fw, fh, m_rgb.cpu.best, m_rgb.cpu.worst, m_pdz.cpu.best, m_pdz.cpu.worst, m_pdz.cpu.best / m_rgb.cpu.best,
-      m_jac.cpu.best, m_jac.cpu.worst, m_jac.cpu.best / m_rgb.cpu.best);
-  const auto per_ray = [](const Measured& m) { return m.rays ? double(m.steps) / m.rays : 0.0; };
-  std::printf("  steps/ray: RGB %.0f, RGBpdz %.0f, RGBjac %.0f\n", per_ray(m_rgb.fastest), per_ray(m_pdz.fastest),
-              per_ray(m_jac.fastest));
+    if (gyoto && !gyoto_failed) {
+      std::fprintf(stderr, "timing Gyoto again ...\n");
+      const double g = time_gyoto(tex);
+      if (g > 0) gyoto_cpu.add(g);
+    }
+    // Speed of this machine relative to the one GeoViS's figures come from (1: not calibrated).
+    double speed = 1.0;
+    if (gyoto_cpu.n > 0) {
+      speed = kGyotoSecondsThere / gyoto_cpu.best;
+      std::printf(
+          "Gyoto 1 thread 128x128: %.2f CPU s here (%.2f), %.2f s on GeoViS's machine: this machine is %.2fx as fast; "
+          "\"cal.\" = ratio against GeoViS's figures scaled by that\n",
+          gyoto_cpu.best, gyoto_cpu.worst, kGyotoSecondsThere, speed);
+    } else if (gyoto) {
+      std::printf("Gyoto could not run (apt-get install gyoto-bin): ratios not calibrated\n");
+    }
 
-  // Threads: wall time of the same render on 1 and 2 threads, interleaved.
-  std::fprintf(stderr, "rendering on 1 and 2 threads ...\n");
-  Repeated one, two;
-  for (int k = 0; k < repeat; ++k) {
-    add_run(one, render_scene(kerr, search, 400 / div, 400 / div, 0, 1));
-    add_run(two, render_scene(kerr, search, 400 / div, 400 / div, 0, 2));
+    std::printf("%-24s %9s %18s %12s %8s %10s %10s %10s %9s\n", "scene", "res", "ours px/s (slowest)", "GeoViS px/s",
+                "ratio", "steps/ray", "GeoViS", "reference", "differ");
+    double log_sum = 0, log_sum_cal = 0;
+    int n = 0;
+    double worst = 1e300;
+    for (const SceneResult& r : results) {
+      const SceneCase& s = *r.scene;
+      if (!r.error.empty()) {
+        std::printf("%-24s error: %s\n", s.name, r.error.c_str());
+        continue;
+      }
+      const Measured& m = r.ours.fastest;
+      const double pxs = r.w * r.h / r.ours.cpu.best, slowest = r.w * r.h / r.ours.cpu.worst;
+      const double ratio = pxs / s.geovis_px_per_s;
+      log_sum += std::log(ratio);
+      log_sum_cal += std::log(ratio / speed);
+      worst = std::min(worst, ratio);
+      ++n;
+      char gsteps[32] = "-";
+      if (s.geovis_steps > 0) std::snprintf(gsteps, sizeof gsteps, "%.0f", s.geovis_steps);
+      std::printf("%-24s %4dx%-4d %9.0f (%7.0f) %12.0f %7.2fx %10.0f %10s %10.0f %8.3f%%", s.name, r.w, r.h, pxs,
+                  slowest, s.geovis_px_per_s, ratio, m.rays ? double(m.steps) / m.rays : 0.0, gsteps,
+                  r.reference.rays ? double(r.reference.steps) / r.reference.rays : 0.0, 100.0 * r.differ);
+      if (speed != 1.0) std::printf("  cal. %.2fx", ratio / speed);
+      std::printf("\n");
+    }
+    if (n)
+      std::printf(
+          "geometric mean %.2fx GeoViS per core (goal 30x), worst scene %.2fx (goal 10x); \"reference\": steps/ray "
+          "on the reference path, \"differ\": pixels differing from it by > 25/255 (goal <= 0.5 %%)\n",
+          std::exp(log_sum / n), worst);
+    if (n && speed != 1.0)
+      std::printf("calibrated to GeoViS's machine by Gyoto: geometric mean %.2fx, worst scene %.2fx\n",
+                  std::exp(log_sum_cal / n), worst / speed);
+    std::fflush(stdout);
   }
-  std::printf("kerrAccretionDisk %dx%d wall s: 1 thread %.2f (%.2f), 2 threads %.2f (%.2f): %.2fx, goal >= 1.9x\n",
-              400 / div, 400 / div, one.wall.best, one.wall.worst, two.wall.best, two.wall.worst,
-              one.wall.best / two.wall.best);
+  if (only.empty() || only == "filters") {
+    // Data filters at the table's resolutions, interleaved, on the scenes of the three Jacobi paths:
+    // the Kerr disk (derivatives of the Mino-time flow, spacetime/kerr_jacobi.h), the sphere around
+    // a Schwarzschild hole (the same in Mino time) and the wormhole (the Jacobi system in the
+    // metric's coordinates, its terms on SIMD lanes: jacobi_terms_from_accel).
+    std::fprintf(stderr, "rendering the data filters ...\n");
+    const Filter rgb = Filter::RGB, pdz = Filter::RGBpdz, jac = Filter::RGBjac;
+    for (const SceneCase* fs_case : {&kScenes[0], &kScenes[1], &kScenes[2]}) {
+      const fs::path file = data / fs_case->file;
+      const int fw = fs_case->width / div, fh = fs_case->height / div;
+      Repeated m_rgb, m_pdz, m_jac;
+      for (int k = 0; k < repeat; ++k) {
+        add_run(m_rgb, render_scene(file, search, fw, fh, 0, 1, &rgb));
+        add_run(m_pdz, render_scene(file, search, fw, fh, 0, 1, &pdz));
+        add_run(m_jac, render_scene(file, search, fw, fh, 0, 1, &jac));
+      }
+      std::printf(
+          "%s %dx%d CPU s: RGB %.2f (%.2f), RGBpdz %.2f (%.2f): %.2fx, goal <= 1.1x; RGBjac %.2f (%.2f): %.2fx, goal "
+          "<= 3x\n",
+          fs_case->name, fw, fh, m_rgb.cpu.best, m_rgb.cpu.worst, m_pdz.cpu.best, m_pdz.cpu.worst,
+          m_pdz.cpu.best / m_rgb.cpu.best, m_jac.cpu.best, m_jac.cpu.worst, m_jac.cpu.best / m_rgb.cpu.best);
+      const auto per_ray = [](const Measured& m) { return m.rays ? double(m.steps) / m.rays : 0.0; };
+      std::printf("  steps/ray: RGB %.0f, RGBpdz %.0f, RGBjac %.0f\n", per_ray(m_rgb.fastest), per_ray(m_pdz.fastest),
+                  per_ray(m_jac.fastest));
+      std::fflush(stdout);
+    }
+  }
+  if (only.empty() || only == "threads") {
+    const fs::path kerr = data / "geovis/scenes/kerrAccretionDisk.scm";
+
+    // Threads: wall time of the same render on 1 and 2 threads, interleaved.
+    std::fprintf(stderr, "rendering on 1 and 2 threads ...\n");
+    Repeated one, two;
+    for (int k = 0; k < repeat; ++k) {
+      add_run(one, render_scene(kerr, search, 400 / div, 400 / div, 0, 1));
+      add_run(two, render_scene(kerr, search, 400 / div, 400 / div, 0, 2));
+    }
+    std::printf("kerrAccretionDisk %dx%d wall s: 1 thread %.2f (%.2f), 2 threads %.2f (%.2f): %.2fx, goal >= 1.9x\n",
+                400 / div, 400 / div, one.wall.best, one.wall.worst, two.wall.best, two.wall.worst,
+                one.wall.best / two.wall.best);
+  }
   fs::remove_all(tex);
   return 0;
 }

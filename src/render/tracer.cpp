@@ -607,15 +607,16 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
   // ball is skipped (test_step_general's result and RayState::prev for it). The per-step virtual
   // radius, the lane's gathered StepView and the call per lane and step were ~150 instructions per
   // step on fallEddFinkIn, where nearly every chord lies in the empty ball (callgrind, issue 13).
-  auto on_steps = [&](const PacketSteps& steps) {
-    if (steps.p1) return on_steps_at(steps);
+  // (ray_state(l): lane l's RayState; the geodesic pass's lanes or, for RGBjac's Jacobi pass in
+  // the metric's coordinates, its own.)
+  auto coordinate_steps = [&](const PacketSteps& steps, auto&& ray_state) {
     double radius[kPacketLanes];
     int chart[kPacketLanes];
     m.pseudo_cartesian_radii(steps.y1, steps.lanes, radius, chart);
     unsigned stop = 0;
     for (unsigned todo = steps.lanes; todo != 0; todo &= todo - 1) {
       const int l = std::countr_zero(todo);
-      RayState& rs = lanes[l].rs;
+      RayState& rs = ray_state(l);
       if (rs.have_prev) {
         const double radius2 = radius[l] * radius[l];
         if (cull_.inside_empty_ball(rs.prev.chart, rs.prev.radius2, chart[l], radius2)) {
@@ -626,15 +627,20 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
           continue;  // the chart is the same
         }
       }
-      double views[4][8];
+      double views[4][kMaxSystemDim];
       if (test_step(rs, steps.view(l, views)) == StepAction::Stop) stop |= 1u << l;
     }
     return stop;
   };
+  auto on_steps = [&](const PacketSteps& steps) {
+    if (steps.p1) return on_steps_at(steps);
+    return coordinate_steps(steps, [&](int l) -> RayState& { return lanes[l].rs; });
+  };
   // RGBjac: the rays that hit, traced again with their Jacobi fields (trace_direction) a batch at a
   // time after the geodesic pass (or when the batch is full), in packets where the metric has a
-  // packet path for them (Metric::integrate_jacobi_packet: the Kerr family in Mino time), else one
-  // by one (trace_system). Each ray's result as trace_system's: the same start, steps, hit search
+  // packet path for them (Metric::integrate_jacobi_packet: the Kerr family in Mino time, the others
+  // in their coordinates with the steps a round at a time, coordinate_steps), else one by one
+  // (trace_system). Each ray's result as trace_system's: the same start, steps, hit search
   // and end (end_ray).
   struct HitRay {
     size_t sample;
@@ -671,12 +677,16 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
       return true;
     };
     auto on_jacobi_step = [&](int lane, const StepView& st) { return test_step(jacobi_lanes[lane].rs, st); };
+    auto on_jacobi_steps = [&](const PacketSteps& steps) {
+      return coordinate_steps(steps, [&](int l) -> RayState& { return jacobi_lanes[l].rs; });
+    };
     auto jacobi_done = [&](int lane, const double* y, const GeodesicResult& gr) {
       const JacobiLane& r = jacobi_lanes[lane];
       keep(r.sample, end_ray(system_, r.rs, r.k0, y, r.y_start, gr, stats));
     };
     // test_step reads the states of a step only in test_chord, after ensure_states.
-    if (!m.integrate_jacobi_packet(cfg_, JacobiPacketRays{next_jacobi, on_jacobi_step, jacobi_done, true}))
+    if (!m.integrate_jacobi_packet(cfg_,
+                                   JacobiPacketRays{next_jacobi, on_jacobi_step, jacobi_done, true, on_jacobi_steps}))
       for (size_t i = 0; i < n_hits; ++i) keep(hits[i].sample, trace_system(system_, hits[i].d, stats, {}));
     n_hits = 0;
   };

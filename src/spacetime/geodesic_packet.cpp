@@ -1307,7 +1307,9 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
       // and after the step.
       const double* lambda0 = kOwnAffine ? affine_row(y) : s.lambda;
       const double* lambda1 = kOwnAffine ? affine_row(y1) : s.param1;
-      const unsigned stopped = ps.steps(PacketSteps{stepping, y, y1, dy, dy1, lambda0, lambda1, s.steps});
+      PacketSteps round{stepping, y, y1, dy, dy1, lambda0, lambda1, s.steps};
+      round.dim = N;
+      const unsigned stopped = ps.steps(round);
       GEOVIS_PACKET_DISPATCH(take_step_ends, ps.target)(stepping, y1, dy1, y, dy, N);
       if constexpr (kAfterSteps) inside = ps.after_steps(cfg, stepping, y);
       set_tolerance(stepping);
@@ -1604,6 +1606,11 @@ struct CoordinateJacobiPacket {
     metric.packet_step_checks(c, y, lanes, out);
   }
   StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
+  /// The steps go to JacobiPacketRays::on_steps a round at a time where it is set (32 components
+  /// per state: gathering and handing on each lane's step was a fifth of morristhorne.scm's RGBjac
+  /// Jacobi pass, callgrind).
+  bool batch_steps() const { return static_cast<bool>(rays.on_steps); }
+  unsigned steps(const PacketSteps& s) const { return rays.on_steps(s); }
   void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
 };
 

@@ -25,6 +25,8 @@
 // of kerr_jacobi.h, lane by lane the same bits).
 #pragma once
 
+#include <stdexcept>
+
 #include "core/function_ref.h"
 #include "spacetime/geodesic.h"
 
@@ -57,17 +59,22 @@ struct PacketSteps {
   /// l); valid until the next call. Else view gathers y0, y1, dy0, dy1, the metric's (x, k).
   StepView (*lane_view)(void* context, int l) = nullptr;
   void* lane_view_context = nullptr;
+  /// The states' components (rows of y0, y1, dy0, dy1): 8 for (x, k), kJacobiDim for the Jacobi
+  /// system (integrate_jacobi_packet_on_kernel).
+  int dim = 8;
 
-  /// Lane l's step as a StepView, its four states gathered into `buf` (or lane_view's).
-  StepView view(int l, double (&buf)[4][8]) const {
+  /// Lane l's step as a StepView, its four states gathered into `buf` (or lane_view's); C ≥ dim.
+  template <int C>
+  StepView view(int l, double (&buf)[4][C]) const {
     if (lane_view) return lane_view(lane_view_context, l);
-    for (int i = 0; i < 8; ++i) {
+    if (dim > C) throw std::logic_error("PacketSteps::view: the buffer is smaller than the state");
+    for (int i = 0; i < dim; ++i) {
       buf[0][i] = y0[i * kPacketLanes + l];
       buf[1][i] = y1[i * kPacketLanes + l];
       buf[2][i] = dy0[i * kPacketLanes + l];
       buf[3][i] = dy1[i * kPacketLanes + l];
     }
-    return StepView{lambda0[l], lambda1[l], buf[0], buf[1], buf[2], buf[3], 8, step_index[l]};
+    return StepView{lambda0[l], lambda1[l], buf[0], buf[1], buf[2], buf[3], dim, step_index[l]};
   }
 };
 
@@ -107,6 +114,11 @@ struct JacobiPacketRays {
   /// pseudo-Cartesian ends: the states are converted only on request
   /// (KerrMinoJacobiRay::bl_step_with_position).
   bool states_on_request = false;
+  /// May be empty. Where set, the Jacobi system in the metric's coordinates
+  /// (integrate_jacobi_packet_on_kernel) hands its accepted steps a round at a time here instead of
+  /// to on_step, as PacketRays::on_steps (PacketSteps::dim = kJacobiDim); returns the lanes whose
+  /// rays stop. The Kerr family's path in Mino time hands them to on_step.
+  FunctionRef<unsigned(const PacketSteps& steps)> on_steps = {};
 };
 
 /// Whether the packet integrator serves solver `kind` (the explicit embedded pairs that

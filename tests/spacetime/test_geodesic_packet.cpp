@@ -68,7 +68,7 @@ namespace geovis {
 HWY_EXPORT(simd_sincos);
 HWY_EXPORT(simd_exp);
 HWY_EXPORT(simd_asin);
-}
+}  // namespace geovis
 
 using namespace geovis;
 
@@ -362,30 +362,47 @@ std::vector<JacobiRecord> expect_jacobi_packet_equals_scalar(const Metric& m, co
     scalar.push_back(std::move(rec));
   }
   const size_t n = y0.size();
+  // The packet with its steps handed on lane by lane (on_step), and a round at a time where the
+  // path takes them so (on_steps, the views gathered by PacketSteps::view: the same steps).
   for_every_target([&] {
-    std::vector<JacobiRecord> packet(n);
-    for (size_t r = 0; r < n; ++r) packet[r].stop_at = scalar[r].stop_at;
-    RaySource source{y0};
-    size_t finished = 0;
-    auto next = [&](int lane, double* y) { return source(lane, y); };
-    auto on_step = [&](int lane, const StepView& st) { return record_jacobi(packet[source.lane_ray[lane]], st); };
-    auto done = [&](int lane, const double* y, const GeodesicResult& res) {
-      JacobiRecord& r = packet[source.lane_ray[lane]];
-      std::copy(y, y + kJacobiDim, r.y);
-      r.res = res;
-      ++finished;
-    };
-    ASSERT_TRUE(m.integrate_jacobi_packet(cfg, JacobiPacketRays{next, on_step, done}));
-    ASSERT_EQ(finished, n);
-    for (size_t r = 0; r < n; ++r) {
-      SCOPED_TRACE("ray " + std::to_string(r));
-      const JacobiRecord &a = scalar[r], &b = packet[r];
-      expect_same_run(b.res, a.res);
-      for (int i = 0; i < kJacobiDim; ++i)
-        EXPECT_TRUE(same_bits(b.y[i], a.y[i])) << "y[" << i << "] " << b.y[i] << " vs " << a.y[i];
-      ASSERT_EQ(b.steps.size(), a.steps.size());
-      for (size_t k = 0; k < a.steps.size(); ++k)
-        ASSERT_TRUE(same_bits(a.steps[k], b.steps[k])) << "entry " << k << ": " << a.steps[k] << " vs " << b.steps[k];
+    for (const bool batch : {false, true}) {
+      std::vector<JacobiRecord> packet(n);
+      for (size_t r = 0; r < n; ++r) packet[r].stop_at = scalar[r].stop_at;
+      RaySource source{y0};
+      size_t finished = 0;
+      auto next = [&](int lane, double* y) { return source(lane, y); };
+      auto on_step = [&](int lane, const StepView& st) { return record_jacobi(packet[source.lane_ray[lane]], st); };
+      auto on_steps = [&](const PacketSteps& steps) {
+        EXPECT_EQ(steps.dim, kJacobiDim);
+        unsigned stop = 0;
+        for (unsigned todo = steps.lanes; todo != 0; todo &= todo - 1) {
+          const int l = std::countr_zero(todo);
+          double views[4][kJacobiDim];
+          if (on_step(l, steps.view(l, views)) == StepAction::Stop) stop |= 1u << l;
+        }
+        return stop;
+      };
+      auto done = [&](int lane, const double* y, const GeodesicResult& res) {
+        JacobiRecord& r = packet[source.lane_ray[lane]];
+        std::copy(y, y + kJacobiDim, r.y);
+        r.res = res;
+        ++finished;
+      };
+      if (batch)
+        ASSERT_TRUE(m.integrate_jacobi_packet(cfg, JacobiPacketRays{next, on_step, done, false, on_steps}));
+      else
+        ASSERT_TRUE(m.integrate_jacobi_packet(cfg, JacobiPacketRays{next, on_step, done}));
+      ASSERT_EQ(finished, n);
+      for (size_t r = 0; r < n; ++r) {
+        SCOPED_TRACE("ray " + std::to_string(r) + (batch ? ", on_steps" : ""));
+        const JacobiRecord &a = scalar[r], &b = packet[r];
+        expect_same_run(b.res, a.res);
+        for (int i = 0; i < kJacobiDim; ++i)
+          EXPECT_TRUE(same_bits(b.y[i], a.y[i])) << "y[" << i << "] " << b.y[i] << " vs " << a.y[i];
+        ASSERT_EQ(b.steps.size(), a.steps.size());
+        for (size_t k = 0; k < a.steps.size(); ++k)
+          ASSERT_TRUE(same_bits(a.steps[k], b.steps[k])) << "entry " << k << ": " << a.steps[k] << " vs " << b.steps[k];
+      }
     }
   });
   return scalar;
@@ -420,13 +437,13 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
 // (a) Every metric of the registry: 11 rays (one full packet and a refill) from the sample
 // position, bit-identical to the scalar integrator on every target, with each tableau the packets
 // serve (Cash–Karp; Fehlberg, GeoViS's GSL_RK_Fehlberg; Dormand–Prince 5(4), first-same-as-last;
-// DOP853, 12 stages and the combined norm of two error estimates); KerrBL and Schwarzschild also through Carter's separated equations in Mino time (kerr_mino.h),
-// their default.
+// DOP853, 12 stages and the combined norm of two error estimates); KerrBL and Schwarzschild also through Carter's
+// separated equations in Mino time (kerr_mino.h), their default.
 TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
   const auto m = make_metric(GetParam());
   const auto y0 = fan(*m, 11);
-  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54,
-                                SolverKind::DormandPrince853}) {
+  for (const SolverKind kind :
+       {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54, SolverKind::DormandPrince853}) {
     SCOPED_TRACE(solver_kind_name(kind));
     SolverConfig cfg = packet_config();
     cfg.kind = kind;
@@ -447,8 +464,8 @@ TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
 TEST_P(PacketEveryMetric, JacobiSystemSameBitsAsTheScalarIntegrator) {
   const auto m = make_metric(GetParam());
   const auto y0 = jacobi_fan(*m, 11);
-  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54,
-                                SolverKind::DormandPrince853}) {
+  for (const SolverKind kind :
+       {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54, SolverKind::DormandPrince853}) {
     SCOPED_TRACE(solver_kind_name(kind));
     SolverConfig cfg = packet_config();
     cfg.kind = kind;
@@ -496,8 +513,8 @@ TEST(GeodesicPacket, KastorTraschenExpandingSameBitsAsScalar) {
   const auto m = make_metric("KastorTraschen", {{"h", 0.02}, {"z1", 4.0}, {"z2", -4.0}});
   SolverConfig cfg = packet_config();
   cfg.escape_radius = 1e300;
-  for (const SolverKind kind : {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54,
-                                SolverKind::DormandPrince853}) {
+  for (const SolverKind kind :
+       {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54, SolverKind::DormandPrince853}) {
     SCOPED_TRACE(solver_kind_name(kind));
     cfg.kind = kind;
     for_every_target([&] { expect_packet_equals_scalar(*m, cfg, fan(*m, 13, Vec4{{-20.0, 10.0, 0.5, 1.0}})); });
@@ -509,9 +526,9 @@ TEST(GeodesicPacket, KastorTraschenExpandingSameBitsAsScalar) {
 // functions lane by lane), so the bit-identity above is a test of the templates, not of the scalar
 // function twice.
 TEST(GeodesicPacket, MetricsWithSimdAcceleration) {
-  for (const char* name : {"EddFinkIn", "KerrBL", "MorrisThorne", "Schwarzschild", "KastorTraschen",
-                           "ReissnerNordstrom", "Kottler", "BarriolaVilenkin", "Ernst", "SchwarzschildIsotropic",
-                           "CosmicStringSchwarzschild"}) {
+  for (const char* name :
+       {"EddFinkIn", "KerrBL", "MorrisThorne", "Schwarzschild", "KastorTraschen", "ReissnerNordstrom", "Kottler",
+        "BarriolaVilenkin", "Ernst", "SchwarzschildIsotropic", "CosmicStringSchwarzschild"}) {
     EXPECT_TRUE(make_metric(name)->has_simd_packet_acceleration()) << name;
     EXPECT_TRUE(make_metric(name)->has_simd_packet_constraint()) << name;
   }
@@ -785,9 +802,8 @@ TEST(GeodesicPacket, KerrJacobiLanesAreTheScalarMinoJacobi) {
           ASSERT_EQ(b.steps.size(), per_step * (a.res.steps / 3));
           for (size_t j = 0; j < b.steps.size() / per_step; ++j) {
             const size_t s = 3 * (j + 1) - 1;  // 0-based index of step 3(j + 1)
-            EXPECT_EQ(std::memcmp(a.steps.data() + s * per_step, b.steps.data() + j * per_step,
-                                  per_step * sizeof(double)),
-                      0)
+            EXPECT_EQ(
+                std::memcmp(a.steps.data() + s * per_step, b.steps.data() + j * per_step, per_step * sizeof(double)), 0)
                 << "step " << s + 1;
           }
         }
@@ -915,8 +931,8 @@ void expect_accepted_step_control_is_scalar() {
         }
         StepController<q> scalar{before.h_old[l], before.q_old[l]};
         const double next = std::min(
-            before.hmax[l],
-            std::max(scalar.next_with_root(h[l], err[l], root[l], true, before.after_reject[l] != 0.0), before.hmin[l]));
+            before.hmax[l], std::max(scalar.next_with_root(h[l], err[l], root[l], true, before.after_reject[l] != 0.0),
+                                     before.hmin[l]));
         EXPECT_TRUE(same_bits(ctl.h_next[l], next)) << ctl.h_next[l] << " vs " << next;
         EXPECT_TRUE(same_bits(ctl.h_old[l], scalar.h_old)) << ctl.h_old[l] << " vs " << scalar.h_old;
         EXPECT_TRUE(same_bits(ctl.q_old[l], scalar.q_old)) << ctl.q_old[l] << " vs " << scalar.q_old;
@@ -978,8 +994,8 @@ TEST(Simd, ExpIsFastExpLaneByLane) {
 TEST(Simd, AsinIsFastAsinLaneByLane) {
   std::vector<double> x;
   for (int i = -3000; i <= 3000; ++i) x.push_back(i / 3000.0 + (i % 3) * 1.234e-5);
-  for (double v : {0.0, -0.0, 1.0, -1.0, 0.5, -0.5, 0.975, -0.975, 1e-9, -3e-200, 4.9e-324, 1.0000000000000002,
-                   -2.0, double(NAN), double(INFINITY)})
+  for (double v : {0.0, -0.0, 1.0, -1.0, 0.5, -0.5, 0.975, -0.975, 1e-9, -3e-200, 4.9e-324, 1.0000000000000002, -2.0,
+                   double(NAN), double(INFINITY)})
     x.push_back(v);
   while (x.size() % 8) x.push_back(0.25);
   std::vector<double> a(x.size());
