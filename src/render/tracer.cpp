@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "spacetime/circular_orbit.h"
@@ -434,9 +435,9 @@ Tracer::Tracer(const RenderJob& job) : job_(job), cfg_(job.solver) {
   // Packets (spacetime/geodesic_packet.h): the geodesic system with an embedded Runge–Kutta pair
   // (packet_solver: Cash–Karp, Fehlberg, Dormand–Prince 5(4), DOP853), in the metric's
   // coordinates or through Carter's separated equations (Metric::integrate_packet chooses as
-  // integrate does), also RGBjac's geodesic pass (jacobi_hits_only_) and its Jacobi pass where the
-  // metric has a packet path for it (Metric::integrate_jacobi_packet); other solvers stay scalar,
-  // and straight rays need no integrator at all.
+  // integrate does), also RGBjac's geodesic pass (jacobi_hits_only_) and its Jacobi pass
+  // (Metric::integrate_jacobi_packet); other solvers stay scalar, and straight rays need no
+  // integrator at all.
   jacobi_hits_only_ = system_ == GeodesicSystem::Jacobi;
   packets_ = packet_solver(cfg_.kind) && !straight_;
   if (job.reference_tracing) {
@@ -637,10 +638,9 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
     return coordinate_steps(steps, [&](int l) -> RayState& { return lanes[l].rs; });
   };
   // RGBjac: the rays that hit, traced again with their Jacobi fields (trace_direction) a batch at a
-  // time after the geodesic pass (or when the batch is full), in packets where the metric has a
-  // packet path for them (Metric::integrate_jacobi_packet: the Kerr family in Mino time, the others
-  // in their coordinates with the steps a round at a time, coordinate_steps), else one by one
-  // (trace_system). Each ray's result as trace_system's: the same start, steps, hit search
+  // time after the geodesic pass (or when the batch is full), in packets (Metric::
+  // integrate_jacobi_packet: the Kerr family in Mino time, the others in their coordinates with
+  // the steps a round at a time, coordinate_steps). Each ray's result as trace_system's: the same start, steps, hit search
   // and end (end_ray).
   struct HitRay {
     size_t sample;
@@ -685,9 +685,10 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
       keep(r.sample, end_ray(system_, r.rs, r.k0, y, r.y_start, gr, stats));
     };
     // test_step reads the states of a step only in test_chord, after ensure_states.
+    // The packets' solvers (packet_tracing) are the ones integrate_jacobi_packet takes.
     if (!m.integrate_jacobi_packet(cfg_,
                                    JacobiPacketRays{next_jacobi, on_jacobi_step, jacobi_done, true, on_jacobi_steps}))
-      for (size_t i = 0; i < n_hits; ++i) keep(hits[i].sample, trace_system(system_, hits[i].d, stats, {}));
+      throw std::logic_error("Tracer: the Jacobi pass has no packet path for the packets' solver");
     n_hits = 0;
   };
   auto done = [&](int lane, const double* y, const GeodesicResult& gr) {

@@ -68,8 +68,7 @@ class Tracer {
   /// Light rays go in packets: the geodesic system with a solver packet_solver accepts (CashKarp45,
   /// Fehlberg45, DormandPrince54, DormandPrince853), in coordinates or through Carter's separated equations (RGBjac:
   /// its first, geodesic pass; the rays that hit are traced again with their Jacobi fields, in
-  /// packets where the metric has a packet path for them, Metric::integrate_jacobi_packet, else
-  /// one by one).
+  /// packets too, Metric::integrate_jacobi_packet).
   bool packet_tracing() const { return packets_; }
 
   /// Traces the ray leaving the observer in local direction `d` (need not be unit).

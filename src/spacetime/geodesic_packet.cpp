@@ -5,7 +5,8 @@
 // (the HWY_ONCE part), as one driver over the system (integrate_lanes): the geodesic system in
 // the metric's coordinates (CoordinatePacket), Carter's separated equations in Mino time
 // (MinoPacket, kerr_mino.h), or those with their derivatives along two Jacobi fields on dual
-// numbers of lanes (MinoJacobiPacket, kerr_jacobi.h: RGBjac's rays that hit).
+// numbers of lanes (MinoJacobiPacket, kerr_jacobi.h: RGBjac's rays that hit), or the Jacobi system
+// in the metric's coordinates (CoordinateJacobiPacket, jacobi_system.h: RGBjac's rays elsewhere).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "spacetime/geodesic_packet.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep

@@ -22,7 +22,10 @@
 // Carter's separated equations, kerr_mino.h) and, for the RGBjac filter, their Jacobi fields as
 // derivatives of the Mino-time flow (integrate_kerr_mino_jacobi_packet, JacobiPacketRays:
 // Dual<SimdD, 2> through the same kerr_mino_rhs template as the scalar integrate_kerr_mino_jacobi
-// of kerr_jacobi.h, lane by lane the same bits).
+// of kerr_jacobi.h, lane by lane the same bits), and every other metric's rays with their Jacobi
+// fields in its coordinates (integrate_jacobi_packet_on_kernel: the 32-component system of
+// jacobi.h, its Γ terms from the metric's acceleration template on Dual<SimdD, 6> where it has one,
+// jacobi_terms_from_accel).
 #pragma once
 
 #include <stdexcept>
@@ -159,12 +162,6 @@ void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& c
 void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole, const SolverConfig& cfg,
                                 const PacketRays& rays);
 
-/// The Jacobi system (jacobi.h) of light rays around a hole of the Kerr family through the
-/// derivatives of the Mino-time flow (kerr_jacobi.h), one ray per lane: each ray exactly as
-/// integrate_kerr_mino_jacobi(hole.mass, hole.a, hole.r_break, cfg, y, 0, on_step) integrates it,
-/// the right-hand side on dual numbers of SIMD lanes (kerr_mino_rhs). A ray that path does not take
-/// (through the polar axis, starting outside the metric's validity domain, ...) goes to
-/// metric.integrate (the coordinate Jacobi system). Allocates nothing.
 /// The Jacobi system (jacobi.h: GeodesicSystem::Jacobi, 32 components) in the metric's
 /// coordinates, one ray per lane, each exactly as metric.integrate(cfg, Jacobi, y, 0, on_step)
 /// integrates it with the same solver (integrate_jacobi_on_kernel: the same steps, tolerance scales
@@ -174,6 +171,12 @@ void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole
 void integrate_jacobi_packet_on_kernel(const MetricKernel& metric, const SolverConfig& cfg,
                                        const JacobiPacketRays& rays);
 
+/// The Jacobi system (jacobi.h) of light rays around a hole of the Kerr family through the
+/// derivatives of the Mino-time flow (kerr_jacobi.h), one ray per lane: each ray exactly as
+/// integrate_kerr_mino_jacobi(hole.mass, hole.a, hole.r_break, cfg, y, 0, on_step) integrates it,
+/// the right-hand side on dual numbers of SIMD lanes (kerr_mino_rhs). A ray that path does not take
+/// (through the polar axis, starting outside the metric's validity domain, ...) goes to
+/// metric.integrate (the coordinate Jacobi system). Allocates nothing.
 void integrate_kerr_mino_jacobi_packet(const Metric& metric, const KerrMinoParams& hole, const SolverConfig& cfg,
                                        const JacobiPacketRays& rays);
 

@@ -181,10 +181,11 @@ class Metric {
   /// accepts; the geodesic system in coordinates, or Carter's separated equations where integrate
   /// uses them); each ray as integrate(cfg, Geodesic, y, 0, cb).
   virtual void integrate_packet(const SolverConfig& cfg, const PacketRays& rays) const;
-  /// Light rays with their Jacobi fields (GeodesicSystem::Jacobi) a packet at a time where the
-  /// metric has a packet path for them (the Kerr family through the derivatives of the Mino-time
-  /// flow with cfg.separable: integrate_kerr_mino_jacobi_packet, geodesic_packet.h), each ray as
-  /// integrate(cfg, Jacobi, y, 0, cb); false, with no ray taken, where it has none.
+  /// Light rays with their Jacobi fields (GeodesicSystem::Jacobi) a packet at a time with a solver
+  /// packet_solver accepts (geodesic_packet.h: the Kerr family through the derivatives of the
+  /// Mino-time flow with cfg.separable, integrate_kerr_mino_jacobi_packet; every other case in the
+  /// metric's coordinates, integrate_jacobi_packet_on_kernel), each ray as integrate(cfg, Jacobi,
+  /// y, 0, cb); false, with no ray taken, for another solver.
   virtual bool integrate_jacobi_packet(const SolverConfig& cfg, const JacobiPacketRays& rays) const;
   /// True where a packet's right-hand side runs on SIMD lanes (the metric's acceleration template
   /// compiled per Highway target, metric_crtp.h), false where it runs lane by lane; for tests.
