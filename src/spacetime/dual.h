@@ -18,15 +18,6 @@ namespace geovis {
 #include "spacetime/dual_arith.h"  // struct Dual: in namespace geovis
 #undef GEOVIS_DUAL_ATTR
 
-/// Chain rule helper: f(a) with f(a.v) = fv and f'(a.v) = dfv.
-template <class T, int K>
-inline Dual<T, K> chain(const Dual<T, K>& a, const T& fv, const T& dfv) {
-  Dual<T, K> r;
-  r.v = fv;
-  for (int i = 0; i < K; ++i) r.d[i] = dfv * a.d[i];
-  return r;
-}
-
 // Plain-double overloads so generic metric code can call value_of etc. on any scalar.
 inline double value_of(double x) { return x; }
 template <class T, int K>
@@ -34,12 +25,6 @@ inline double value_of(const Dual<T, K>& x) {
   return value_of(x.v);
 }
 
-template <class T, int K>
-inline Dual<T, K> sqrt(const Dual<T, K>& a) {
-  using std::sqrt;
-  T s = sqrt(a.v);
-  return chain(a, s, T(0.5) / s);
-}
 template <class T, int K>
 inline Dual<T, K> sin(const Dual<T, K>& a) {
   using std::cos;
@@ -125,35 +110,6 @@ inline Dual<T, K> atan2(const Dual<T, K>& y, const Dual<T, K>& x) {
   const T den = x.v * x.v + y.v * y.v;
   for (int i = 0; i < K; ++i) r.d[i] = (x.v * y.d[i] - y.v * x.d[i]) / den;
   return r;
-}
-
-/// sin and cos of a first-order dual for the metric templates (found by argument-dependent lookup
-/// before the generic sincos_t of fast_math.h): one inline fast_sincos of the value instead of
-/// four libm calls, since the Jacobi right-hand side (spacetime/jacobi.h) evaluates the closed-form
-/// Christoffel symbols on these numbers at every stage. d sin = cos·dx, d cos = −sin·dx.
-template <int K>
-inline void sincos_t(const Dual<double, K>& x, Dual<double, K>& s, Dual<double, K>& c) {
-  double sv, cv;
-  fast_sincos(x.v, sv, cv);
-  s = chain(x, sv, cv);
-  c = chain(x, cv, -sv);
-}
-
-/// sin and e^x of a first-order dual for the metric templates (found by argument-dependent lookup
-/// before fast_math.h's generic sin_t and exp_t, which would call libm): fast_sincos and fast_exp of
-/// the value, as on doubles and on SIMD lanes (simd.h's Dual<SimdD, K>), so the Jacobi system's
-/// terms from an acceleration template (jacobi_terms_from_accel) give a packet's lanes the bits of
-/// the scalar integrator.
-template <int K>
-inline Dual<double, K> sin_t(const Dual<double, K>& x) {
-  double sv, cv;
-  fast_sincos(x.v, sv, cv);
-  return chain(x, sv, cv);
-}
-template <int K>
-inline Dual<double, K> exp_t(const Dual<double, K>& x) {
-  const double e = fast_exp(x.v);
-  return chain(x, e, e);
 }
 
 /// Seeds x as the independent variables: x[μ] has ∂_μ = 1.

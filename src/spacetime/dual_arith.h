@@ -1,5 +1,5 @@
-// The dual number type of dual.h (struct Dual and its arithmetic) as a template over the number
-// type. Included (no include guard) by dual.h into namespace geovis, and by the packet integrator
+// The dual number type of dual.h (struct Dual, its arithmetic, the chain rule and the first-order
+// sqrt, sincos_t, sin_t and exp_t of the metric templates) as a template over the number type. Included (no include guard) by dual.h into namespace geovis, and by the packet integrator
 // (geodesic_packet.cpp) into each SIMD target's namespace (geovis::HWY_NAMESPACE), where its
 // instantiation on SimdD (the Jacobi fields of a packet's rays, kerr_jacobi.h) must be compiled
 // with that target's instruction set: operators defined outside the target's region are compiled
@@ -78,3 +78,53 @@ struct Dual {
   GEOVIS_DUAL_ATTR friend bool operator<=(const Dual& a, double b) { return a.v <= b; }
   GEOVIS_DUAL_ATTR friend bool operator>=(const Dual& a, double b) { return a.v >= b; }
 };
+
+/// Whether T is a dual number (the first-order functions below take plain values only).
+template <class T>
+inline constexpr bool kIsDual = false;
+template <class T, int K>
+inline constexpr bool kIsDual<Dual<T, K>> = true;
+
+/// Chain rule helper: f(a) with f(a.v) = fv and f'(a.v) = dfv.
+template <class T, int K>
+GEOVIS_DUAL_ATTR inline Dual<T, K> chain(const Dual<T, K>& a, const T& fv, const T& dfv) {
+  Dual<T, K> r;
+  r.v = fv;
+  for (int i = 0; i < K; ++i) r.d[i] = dfv * a.d[i];
+  return r;
+}
+
+template <class T, int K>
+GEOVIS_DUAL_ATTR inline Dual<T, K> sqrt(const Dual<T, K>& a) {
+  using std::sqrt;
+  const T s = sqrt(a.v);
+  return chain(a, s, T(0.5) / s);
+}
+
+/// sin, cos and e^x of a first-order dual for the metric templates (found by argument-dependent
+/// lookup before fast_math.h's generic sincos_t, sin_t and exp_t, which would call libm): the
+/// value's sincos_t and exp_t — fast_sincos and fast_exp on doubles, their SIMD twins on lanes
+/// (simd.h) — so a formula on Dual<SimdD, K> gives each lane the bits of Dual<double, K> (the
+/// Jacobi system's terms, jacobi_terms_from_accel), and one inline polynomial instead of libm
+/// calls per stage. d sin = cos·dx, d cos = −sin·dx, d e^x = e^x·dx.
+template <class T, int K>
+  requires(!kIsDual<T>)
+GEOVIS_DUAL_ATTR inline void sincos_t(const Dual<T, K>& x, Dual<T, K>& s, Dual<T, K>& c) {
+  T sv, cv;
+  sincos_t(x.v, sv, cv);
+  s = chain(x, sv, cv);
+  c = chain(x, cv, -sv);
+}
+template <class T, int K>
+  requires(!kIsDual<T>)
+GEOVIS_DUAL_ATTR inline Dual<T, K> sin_t(const Dual<T, K>& x) {
+  T sv, cv;
+  sincos_t(x.v, sv, cv);
+  return chain(x, sv, cv);
+}
+template <class T, int K>
+  requires(!kIsDual<T>)
+GEOVIS_DUAL_ATTR inline Dual<T, K> exp_t(const Dual<T, K>& x) {
+  const T e = exp_t(x.v);
+  return chain(x, e, e);
+}

@@ -1515,6 +1515,13 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   }
 }
 
+/// MetricSystem::inside of all lanes' states y (their first four rows x) at once (inside_box_lanes).
+unsigned inside_box(const SolverConfig& c, const double* y, size_t target) {
+  const double box[8] = {c.box_ll[0], c.box_ll[1], c.box_ll[2], c.box_ll[3],
+                         c.box_ur[0], c.box_ur[1], c.box_ur[2], c.box_ur[3]};
+  return GEOVIS_PACKET_DISPATCH(inside_box_lanes, target)(box, y);
+}
+
 /// The geodesic system y = (x, k) in the metric's coordinates (MetricSystem), the same for all
 /// lanes.
 struct CoordinatePacket {
@@ -1539,11 +1546,7 @@ struct CoordinatePacket {
   /// (MetricKernel::packet_valid, packet_step_checks).
   unsigned valid_lanes(const double* y, unsigned lanes) const { return metric.packet_valid(y, lanes); }
   /// MetricSystem::inside of all lanes' states at once (inside_box_lanes).
-  unsigned inside_lanes(const SolverConfig& c, const double* y) const {
-    const double box[8] = {c.box_ll[0], c.box_ll[1], c.box_ll[2], c.box_ll[3],
-                           c.box_ur[0], c.box_ur[1], c.box_ur[2], c.box_ur[3]};
-    return GEOVIS_PACKET_DISPATCH(inside_box_lanes, target)(box, y);
-  }
+  unsigned inside_lanes(const SolverConfig& c, const double* y) const { return inside_box(c, y, target); }
   /// MetricSystem::reproject and rescale (the only ones that change an accepted state here).
   bool accepted_states_change(const SolverConfig& c) const {
     return c.reproject || (c.type == GeodesicType::Lightlike && metric.rescales_null_direction());
@@ -1596,11 +1599,7 @@ struct CoordinateJacobiPacket {
     GEOVIS_PACKET_DISPATCH(coordinate_jacobi_tolerance, target)(eps_abs, eps_rel, y, inv);
   }
   unsigned valid_lanes(const double* y, unsigned lanes) const { return metric.packet_valid(y, lanes); }
-  unsigned inside_lanes(const SolverConfig& c, const double* y) const {
-    const double box[8] = {c.box_ll[0], c.box_ll[1], c.box_ll[2], c.box_ll[3],
-                           c.box_ur[0], c.box_ur[1], c.box_ur[2], c.box_ur[3]};
-    return GEOVIS_PACKET_DISPATCH(inside_box_lanes, target)(box, y);
-  }
+  unsigned inside_lanes(const SolverConfig& c, const double* y) const { return inside_box(c, y, target); }
   /// MetricSystem::reproject (its rescale is the geodesic system's only).
   bool accepted_states_change(const SolverConfig& c) const { return c.reproject; }
   void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) const {

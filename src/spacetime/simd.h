@@ -172,44 +172,11 @@ HWY_API SimdD exp_t(SimdD x) {
 }
 
 // Dual numbers of lanes: dual_arith.h's Dual compiled for this target (Dual<SimdD, K>: lane l of
-// each part is that of a Dual<double, K>), with the first-order functions of dual.h that the metric
-// templates call on them (chain, sqrt, sincos_t, sin_t, exp_t): the same operations, so a lane
-// equals the scalar dual number to the bit.
+// each part is that of a Dual<double, K>) with its first-order functions on this target's sqrt,
+// sincos_t and exp_t: the same operations, so a lane equals the scalar dual number to the bit.
 #define GEOVIS_DUAL_ATTR HWY_ATTR __attribute__((always_inline))
 #include "spacetime/dual_arith.h"  // Dual: this target's copy
 #undef GEOVIS_DUAL_ATTR
-
-/// f(a) with f(a.v) = fv and f'(a.v) = dfv (dual.h chain).
-template <int K>
-HWY_INLINE Dual<SimdD, K> chain(const Dual<SimdD, K>& a, SimdD fv, SimdD dfv) {
-  Dual<SimdD, K> r;
-  r.v = fv;
-  for (int i = 0; i < K; ++i) r.d[i] = dfv * a.d[i];
-  return r;
-}
-template <int K>
-HWY_INLINE Dual<SimdD, K> sqrt(const Dual<SimdD, K>& a) {
-  const SimdD s = sqrt(a.v);
-  return chain(a, s, SimdD(0.5) / s);
-}
-template <int K>
-HWY_INLINE void sincos_t(const Dual<SimdD, K>& x, Dual<SimdD, K>& s, Dual<SimdD, K>& c) {
-  SimdD sv, cv;
-  sincos_t(x.v, sv, cv);
-  s = chain(x, sv, cv);
-  c = chain(x, cv, -sv);
-}
-template <int K>
-HWY_INLINE Dual<SimdD, K> sin_t(const Dual<SimdD, K>& x) {
-  SimdD sv, cv;
-  sincos_t(x.v, sv, cv);
-  return chain(x, sv, cv);
-}
-template <int K>
-HWY_INLINE Dual<SimdD, K> exp_t(const Dual<SimdD, K>& x) {
-  const SimdD e = exp_t(x.v);
-  return chain(x, e, e);
-}
 
 /// A metric's acceleration template a = accel(x, k) (Vec4T<SimdD>) on a packet of `stride` lanes
 /// in structure-of-arrays layout (geodesic_packet.h): y holds x^μ, k^μ (8 rows of `stride`

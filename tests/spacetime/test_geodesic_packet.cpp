@@ -303,6 +303,12 @@ std::vector<std::array<double, 8>> fan(const Metric& m, int n, std::optional<Vec
   return y;
 }
 
+/// Every solver the packets serve (packet_solver): Cash–Karp; Fehlberg, GeoViS's GSL_RK_Fehlberg;
+/// Dormand–Prince 5(4), first-same-as-last; DOP853, 12 stages and the combined norm of two error
+/// estimates.
+constexpr SolverKind kPacketSolvers[] = {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54,
+                                         SolverKind::DormandPrince853};
+
 SolverConfig packet_config() {
   SolverConfig cfg;
   cfg.kind = SolverKind::CashKarp45;
@@ -436,14 +442,12 @@ std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
 
 // (a) Every metric of the registry: 11 rays (one full packet and a refill) from the sample
 // position, bit-identical to the scalar integrator on every target, with each tableau the packets
-// serve (Cash–Karp; Fehlberg, GeoViS's GSL_RK_Fehlberg; Dormand–Prince 5(4), first-same-as-last;
-// DOP853, 12 stages and the combined norm of two error estimates); KerrBL and Schwarzschild also through Carter's
-// separated equations in Mino time (kerr_mino.h), their default.
+// serve (kPacketSolvers); KerrBL and Schwarzschild also through Carter's separated equations in
+// Mino time (kerr_mino.h), their default.
 TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
   const auto m = make_metric(GetParam());
   const auto y0 = fan(*m, 11);
-  for (const SolverKind kind :
-       {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54, SolverKind::DormandPrince853}) {
+  for (const SolverKind kind : kPacketSolvers) {
     SCOPED_TRACE(solver_kind_name(kind));
     SolverConfig cfg = packet_config();
     cfg.kind = kind;
@@ -464,8 +468,7 @@ TEST_P(PacketEveryMetric, SameBitsAsTheScalarIntegrator) {
 TEST_P(PacketEveryMetric, JacobiSystemSameBitsAsTheScalarIntegrator) {
   const auto m = make_metric(GetParam());
   const auto y0 = jacobi_fan(*m, 11);
-  for (const SolverKind kind :
-       {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54, SolverKind::DormandPrince853}) {
+  for (const SolverKind kind : kPacketSolvers) {
     SCOPED_TRACE(solver_kind_name(kind));
     SolverConfig cfg = packet_config();
     cfg.kind = kind;
@@ -513,8 +516,7 @@ TEST(GeodesicPacket, KastorTraschenExpandingSameBitsAsScalar) {
   const auto m = make_metric("KastorTraschen", {{"h", 0.02}, {"z1", 4.0}, {"z2", -4.0}});
   SolverConfig cfg = packet_config();
   cfg.escape_radius = 1e300;
-  for (const SolverKind kind :
-       {SolverKind::CashKarp45, SolverKind::Fehlberg45, SolverKind::DormandPrince54, SolverKind::DormandPrince853}) {
+  for (const SolverKind kind : kPacketSolvers) {
     SCOPED_TRACE(solver_kind_name(kind));
     cfg.kind = kind;
     for_every_target([&] { expect_packet_equals_scalar(*m, cfg, fan(*m, 13, Vec4{{-20.0, 10.0, 0.5, 1.0}})); });
