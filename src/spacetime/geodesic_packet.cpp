@@ -1522,9 +1522,34 @@ unsigned inside_box(const SolverConfig& c, const double* y, size_t target) {
   return GEOVIS_PACKET_DISPATCH(inside_box_lanes, target)(box, y);
 }
 
+/// The tests and the hand-over of the packets in the metric's coordinates (CoordinatePacket,
+/// CoordinateJacobiPacket), all lanes at once: P has `metric` (MetricKernel), `rays` (PacketRays or
+/// JacobiPacketRays) and `target`; the first eight rows of its states are x and k, which
+/// MetricSystem's tests read (MetricKernel::packet_valid, packet_step_checks: the metric's functions
+/// inlined).
+template <class P>
+struct CoordinateStateTests {
+  unsigned valid_lanes(const double* y, unsigned lanes) const { return self().metric.packet_valid(y, lanes); }
+  /// MetricSystem::inside of all lanes' states at once (inside_box_lanes).
+  unsigned inside_lanes(const SolverConfig& c, const double* y) const { return inside_box(c, y, self().target); }
+  void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) const {
+    self().metric.packet_step_checks(c, y, lanes, out);
+  }
+  StepAction step(int l, const StepView& s) const {
+    return self().rays.on_step ? self().rays.on_step(l, s) : StepAction::Continue;
+  }
+  /// The steps go to the rays' on_steps a round at a time where it is set.
+  bool batch_steps() const { return static_cast<bool>(self().rays.on_steps); }
+  unsigned steps(const PacketSteps& s) const { return self().rays.on_steps(s); }
+  void done(int l, const double* y, const GeodesicResult& res) const { self().rays.done(l, y, res); }
+
+ private:
+  const P& self() const { return static_cast<const P&>(*this); }
+};
+
 /// The geodesic system y = (x, k) in the metric's coordinates (MetricSystem), the same for all
 /// lanes.
-struct CoordinatePacket {
+struct CoordinatePacket : CoordinateStateTests<CoordinatePacket> {
   static constexpr int N = kDim;
   const MetricKernel& metric;
   const PacketRays& rays;
@@ -1542,30 +1567,19 @@ struct CoordinatePacket {
                const double* h, double* y1, double* dy1, AttemptError& err) const {
     GEOVIS_PACKET_DISPATCH(rk_attempt, target)(kind, metric, lanes, tol, y, dy, h, y1, dy1, err);
   }
-  /// MetricSystem's tests of all lanes' states at once, with the metric's functions inlined
-  /// (MetricKernel::packet_valid, packet_step_checks).
-  unsigned valid_lanes(const double* y, unsigned lanes) const { return metric.packet_valid(y, lanes); }
-  /// MetricSystem::inside of all lanes' states at once (inside_box_lanes).
-  unsigned inside_lanes(const SolverConfig& c, const double* y) const { return inside_box(c, y, target); }
   /// MetricSystem::reproject and rescale (the only ones that change an accepted state here).
   bool accepted_states_change(const SolverConfig& c) const {
     return c.reproject || (c.type == GeodesicType::Lightlike && metric.rescales_null_direction());
   }
-  void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) const {
-    metric.packet_step_checks(c, y, lanes, out);
-  }
-  StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
-  /// The steps go to PacketRays::on_steps a round at a time where it is set.
-  bool batch_steps() const { return static_cast<bool>(rays.on_steps); }
-  unsigned steps(const PacketSteps& s) const { return rays.on_steps(s); }
-  void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
 };
 
 /// The Jacobi system in the metric's coordinates (JacobiSystem, jacobi_system.h), the same for all
 /// lanes: the Jacobi system's terms from the metric (MetricKernel::packet_jacobi_terms), the rest on
 /// SIMD lanes; the state's first eight rows are the geodesic's x and k, which the metric's packet
-/// tests read (valid_lanes, step_checks, inside_lanes as CoordinatePacket's).
-struct CoordinateJacobiPacket {
+/// tests read (CoordinateStateTests). Its steps (32 components per state) go to
+/// JacobiPacketRays::on_steps a round at a time where that is set: gathering and handing on each
+/// lane's step was a fifth of morristhorne.scm's RGBjac Jacobi pass (callgrind).
+struct CoordinateJacobiPacket : CoordinateStateTests<CoordinateJacobiPacket> {
   static constexpr int N = kJacobiDim;
   const MetricKernel& metric;
   const JacobiPacketRays& rays;
@@ -1598,20 +1612,8 @@ struct CoordinateJacobiPacket {
   void tolerance_inv(double eps_abs, double eps_rel, const double* y, double* inv) const {
     GEOVIS_PACKET_DISPATCH(coordinate_jacobi_tolerance, target)(eps_abs, eps_rel, y, inv);
   }
-  unsigned valid_lanes(const double* y, unsigned lanes) const { return metric.packet_valid(y, lanes); }
-  unsigned inside_lanes(const SolverConfig& c, const double* y) const { return inside_box(c, y, target); }
   /// MetricSystem::reproject (its rescale is the geodesic system's only).
   bool accepted_states_change(const SolverConfig& c) const { return c.reproject; }
-  void step_checks(const SolverConfig& c, const double* y, unsigned lanes, PacketStepChecks& out) const {
-    metric.packet_step_checks(c, y, lanes, out);
-  }
-  StepAction step(int l, const StepView& s) const { return rays.on_step ? rays.on_step(l, s) : StepAction::Continue; }
-  /// The steps go to JacobiPacketRays::on_steps a round at a time where it is set (32 components
-  /// per state: gathering and handing on each lane's step was a fifth of morristhorne.scm's RGBjac
-  /// Jacobi pass, callgrind).
-  bool batch_steps() const { return static_cast<bool>(rays.on_steps); }
-  unsigned steps(const PacketSteps& s) const { return rays.on_steps(s); }
-  void done(int l, const double* y, const GeodesicResult& res) const { rays.done(l, y, res); }
 };
 
 /// The tests of the Mino state shared by MinoPacket and MinoJacobiPacket, all lanes at once: P's
@@ -1945,7 +1947,7 @@ bool packet_solver(SolverKind kind) {
 
 void integrate_geodesic_packet(const MetricKernel& metric, const SolverConfig& cfg, const PacketRays& rays) {
   require_packet_solver(cfg);
-  CoordinatePacket ps{metric, rays};
+  CoordinatePacket ps{{}, metric, rays};
   with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, cfg, rays); });
 }
 
@@ -1960,7 +1962,7 @@ void integrate_kerr_mino_packet(const Metric& metric, const KerrMinoParams& hole
 void integrate_jacobi_packet_on_kernel(const MetricKernel& metric, const SolverConfig& cfg,
                                        const JacobiPacketRays& rays) {
   require_packet_solver(cfg);
-  CoordinateJacobiPacket ps{metric, rays};
+  CoordinateJacobiPacket ps{{}, metric, rays};
   auto next = [&ps](int l, double* y) { return ps.next(l, y); };
   const PacketRays lane_rays{next, {}, {}, {}, false};
   with_packet_tableau(cfg.kind, [&]<class Tab>() { integrate_lanes<Tab>(ps, cfg, lane_rays); });
