@@ -1,10 +1,12 @@
 // The dual number type of dual.h (struct Dual, its arithmetic, the chain rule and the first-order
-// sqrt, sincos_t, sin_t and exp_t of the metric templates) as a template over the number type. Included (no include guard) by dual.h into namespace geovis, and by the packet integrator
-// (geodesic_packet.cpp) into each SIMD target's namespace (geovis::HWY_NAMESPACE), where its
-// instantiation on SimdD (the Jacobi fields of a packet's rays, kerr_jacobi.h) must be compiled
-// with that target's instruction set: operators defined outside the target's region are compiled
-// for the baseline and cannot inline Highway's operations (as kerr_mino_rhs.h). One definition,
-// so a lane's arithmetic is operation for operation that of Dual<double, K>. Needs <type_traits>.
+// sqrt, sincos_t, sin_t and exp_t of the metric templates) as a template over the number type.
+// Included (no include guard) by dual.h into namespace geovis, and by simd.h into each SIMD
+// target's namespace (geovis::HWY_NAMESPACE), where its instantiation on SimdD (the Jacobi fields of
+// a packet's rays: kerr_jacobi.h, jacobi_terms_from_accel) must be compiled with that target's
+// instruction set: operators defined outside the target's region are compiled for the baseline and
+// cannot inline Highway's operations (as kerr_mino_rhs.h). One definition, so a lane's arithmetic is
+// operation for operation that of Dual<double, K>. Needs <cmath> and <type_traits>, and the value
+// type's sqrt, sincos_t and exp_t declared or found by argument-dependent lookup.
 // GEOVIS_DUAL_ATTR (defined by the includer: empty, or the target's attributes) marks every
 // function: GCC's target pragma of the per-target region does not reach the friends and members
 // of a class template instantiated there.
