@@ -640,8 +640,8 @@ void Tracer::trace_pixels(std::span<const PixelSample> samples, Color* colors, T
   // RGBjac: the rays that hit, traced again with their Jacobi fields (trace_direction) a batch at a
   // time after the geodesic pass (or when the batch is full), in packets (Metric::
   // integrate_jacobi_packet: the Kerr family in Mino time, the others in their coordinates with
-  // the steps a round at a time, coordinate_steps). Each ray's result as trace_system's: the same start, steps, hit search
-  // and end (end_ray).
+  // the steps a round at a time, coordinate_steps). Each ray's result as trace_system's: the same
+  // start, steps, hit search and end (end_ray).
   struct HitRay {
     size_t sample;
     Vec3 d;
