@@ -848,8 +848,8 @@ void take_step_ends(unsigned lanes, const double* y1, const double* dy1, double*
     const uint8_t bits = static_cast<uint8_t>(lanes >> l);
     const auto on = hn::LoadMaskBits(d, &bits);
     for (int i = 0; i < rows; ++i) {
-      hn::BlendedStore(hn::Load(d, y1 + i * W + l), on, d, y + i * W + l);
-      hn::BlendedStore(hn::Load(d, dy1 + i * W + l), on, d, dy + i * W + l);
+      hn::BlendedStore(hn::LoadU(d, y1 + i * W + l), on, d, y + i * W + l);
+      hn::BlendedStore(hn::LoadU(d, dy1 + i * W + l), on, d, dy + i * W + l);
     }
   }
 }
@@ -1146,7 +1146,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
     Sys::kAffineIndex;
     p.param_per_affine_lanes(yy, o);
   });
-  HWY_ALIGN double per_affine_lanes[kOwnAffine ? W : 1];  // PS::param_per_affine_lanes of y
+  alignas(64) double per_affine_lanes[kOwnAffine ? W : 1];  // PS::param_per_affine_lanes of y
   // The row of the affine parameter in a state (y or y1), or null without one of its own.
   auto affine_row = [](double* soa) -> double* {
     if constexpr (kOwnAffine) return soa + Sys::kAffineIndex * W;
@@ -1160,10 +1160,12 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   const double lambda_res = kOwnAffine && std::isfinite(cfg.lambda_max) ? 1e-12 * cfg.lambda_max : 0.0;
   constexpr double kBoundaryRes = 1.0 / 1024;
 
-  HWY_ALIGN double y[N * W] = {}, dy[N * W] = {}, y1[N * W] = {}, dy1[N * W] = {}, hv[W] = {};
-  HWY_ALIGN double f1[Tab::kFsal ? N * W : 1];  // f(y1) of the lanes whose last stage is not it
+  // alignas(64), not HWY_ALIGN: this part is compiled once, where HWY_ALIGN is the last target's
+  // (16 bytes), and the per-target functions may load a whole AVX-512 vector from these rows.
+  alignas(64) double y[N * W] = {}, dy[N * W] = {}, y1[N * W] = {}, dy1[N * W] = {}, hv[W] = {};
+  alignas(64) double f1[Tab::kFsal ? N * W : 1];  // f(y1) of the lanes whose last stage is not it
   // ErrorScale::inv of every lane (SoA) for systems with their own tolerance scales.
-  HWY_ALIGN double inv_tol[kScaledTol ? N * W : 1] = {};
+  alignas(64) double inv_tol[kScaledTol ? N * W : 1] = {};
   const LaneTolerance tol{cfg.eps_abs, cfg.eps_rel, kScaledTol ? inv_tol : nullptr};
   AttemptError attempt_err;
   // Each lane's run of integrate_with: its step state (s), its step controller (ExplicitRK::
@@ -1202,7 +1204,7 @@ void integrate_lanes(PS& ps, const SolverConfig& cfg, const PacketRays& rays) {
   // every use (the step's start and its derivative) was a ninth of kerrAccretionDisk.scm's tracing
   // instructions when its steps were handed on so (callgrind, issue 13). The batched steps
   // (take_steps) read neither and do not keep the rows.
-  HWY_ALIGN double y_row[W][N], dy_row[W][N];
+  alignas(64) double y_row[W][N], dy_row[W][N];
   // integrate_with's set_tolerance: the lane's 1/D_i at the start of its step, for the lanes in
   // need_tol at once before the next attempt (PS::tolerance_inv, all lanes: a lane whose state
   // did not change gets the same values again).
@@ -1589,7 +1591,7 @@ struct CoordinateJacobiPacket : CoordinateStateTests<CoordinateJacobiPacket> {
   /// Each lane's start state as rays.next gave it (the driver's start sees x and k only).
   double start_state[kPacketLanes][kJacobiDim] = {};
   /// The Jacobi system's terms of the stage being evaluated (coordinate_jacobi_rhs).
-  HWY_ALIGN double terms[kJacobiTermRows * kPacketLanes] = {};
+  alignas(64) double terms[kJacobiTermRows * kPacketLanes] = {};
 
   const JacobiSystem& system(int) const { return sys; }
   /// PacketRays::next of the driver: the next ray's whole start state kept for start().
